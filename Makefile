@@ -1,0 +1,115 @@
+# rayo - build, test, install.
+#
+#   make                 build/rayo and build/librayo.a
+#   make check           every test, run by prove (TAP)
+#   make run             render the assignment's sphere to esfera.pbm and esfera.png
+#   make bench           benchmarks (bench/)
+#   make install PREFIX=/usr/local
+#   make CC=clang        any C11 compiler; warnings are errors
+#   make BUILD=dir       build somewhere else (parallel work trees, sanitizers)
+#
+# Sources are found by wildcard: a new file under src/ joins the library,
+# cli/ the command, tests/unit/t_*.c a unit test, tests/cli/*.t a command test.
+
+CC ?= cc
+BUILD ?= build
+PREFIX ?= /usr/local
+PKG_CONFIG ?= pkg-config
+AR ?= ar
+
+PNG_CFLAGS := $(shell $(PKG_CONFIG) --cflags libpng)
+PNG_LIBS := $(shell $(PKG_CONFIG) --libs libpng)
+
+OPT ?= -O2 -g
+WARNINGS := -Wall -Wextra -Werror -pedantic -Wshadow -Wstrict-prototypes \
+            -Wmissing-prototypes -Wformat=2
+CFLAGS ?=
+ALL_CFLAGS := -std=c11 $(OPT) $(WARNINGS) -Iinclude $(PNG_CFLAGS) $(CFLAGS) \
+              -MMD -MP
+LDLIBS := $(PNG_LIBS) -lpthread -lm
+
+LIB_SRC := $(sort $(shell find src -name '*.c'))
+CLI_SRC := $(sort $(wildcard cli/*.c))
+UNIT_SRC := $(sort $(wildcard tests/unit/t_*.c))
+UNIT_SUPPORT := $(filter-out $(UNIT_SRC),$(wildcard tests/unit/*.c))
+BENCH_SRC := $(sort $(wildcard bench/*.c))
+
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
+CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
+UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
+UNIT_SUPPORT_OBJ := $(UNIT_SUPPORT:%.c=$(BUILD)/obj/%.o)
+
+LIB := $(BUILD)/librayo.a
+RAYO := $(BUILD)/rayo
+
+.PHONY: all check run install uninstall clean bench check-sanitize \
+        check-valgrind unit cli-tests
+.DEFAULT_GOAL := all
+
+all: $(RAYO) $(LIB)
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(LIB): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+$(RAYO): $(CLI_OBJ) $(LIB)
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
+
+$(BUILD)/tests/%: tests/unit/%.c $(UNIT_SUPPORT_OBJ) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) -Itests/unit $(LDFLAGS) -o $@ $< \
+	    $(UNIT_SUPPORT_OBJ) $(LIB) $(LDLIBS)
+
+unit: $(UNIT_BIN)
+
+# Every test, as TAP, through prove.  Command tests find the build through
+# the environment, so `make check BUILD=build-asan` tests that build.
+check: all $(UNIT_BIN)
+	RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
+	RAYO_CC="$(CC)" RAYO_SOURCE=$(CURDIR) \
+	    prove -f --exec '' $(UNIT_BIN) $(sort $(wildcard tests/cli/*.t))
+
+run: $(RAYO)
+	$(RAYO) -o esfera.pbm
+	$(RAYO) -o esfera.png
+	@echo "wrote esfera.pbm and esfera.png"
+
+# The whole suite with AddressSanitizer and UndefinedBehaviorSanitizer.
+check-sanitize:
+	$(MAKE) check CC=clang BUILD=$(BUILD)-sanitize \
+	    OPT="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
+	    LDFLAGS="-fsanitize=address,undefined"
+
+# The command tests with every rayo run under valgrind memcheck.
+check-valgrind: all $(UNIT_BIN)
+	RAYO_VALGRIND=1 RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
+	RAYO_CC="$(CC)" RAYO_SOURCE=$(CURDIR) \
+	    prove -f --exec '' $(sort $(wildcard tests/cli/*.t))
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig \
+	    $(DESTDIR)$(PREFIX)/include/rayo $(DESTDIR)$(PREFIX)/share/man/man1
+	install -m 755 $(RAYO) $(DESTDIR)$(PREFIX)/bin/rayo
+	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/librayo.a
+	install -m 644 include/rayo.h $(DESTDIR)$(PREFIX)/include/rayo.h
+	install -m 644 include/rayo/*.h $(DESTDIR)$(PREFIX)/include/rayo/
+	install -m 644 man/rayo.1 $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(shell sed -n 's/^#define RAYO_VERSION "\(.*\)"/\1/p' include/rayo.h)|g' \
+	    rayo.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc
+
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/bin/rayo $(DESTDIR)$(PREFIX)/lib/librayo.a \
+	    $(DESTDIR)$(PREFIX)/include/rayo.h \
+	    $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1 \
+	    $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc
+	rm -rf $(DESTDIR)$(PREFIX)/include/rayo
+
+clean:
+	rm -rf $(BUILD) $(BUILD)-sanitize esfera.pbm esfera.png
+
+-include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

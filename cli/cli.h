@@ -1,0 +1,58 @@
+/*
+ * cli.h - what the subcommands of the `rayo` command share: exit
+ * statuses, the subcommand entry points, and the parsing of option values
+ * into numbers with one-line messages naming the option, the value and
+ * what is accepted.
+ *
+ * Only the command prints; everything here writes to stderr in the form
+ * "rayo: --option: 'value' ...; expected ...".
+ */
+#ifndef RAYO_CLI_H
+#define RAYO_CLI_H
+
+#include <stdio.h>
+
+#include "rayo.h"
+
+enum {
+    CLI_EXIT_OK = 0,
+    CLI_EXIT_FAILURE = 1, /* I/O failures; compare: inconsistent */
+    CLI_EXIT_USAGE = 2    /* bad options or bad input files */
+};
+
+/* Subcommands: each takes its own argv (argv[0] is the subcommand name). */
+int cli_render(int argc, char **argv);
+
+/* Prints "rayo: MESSAGE" on stderr; returns CLI_EXIT_USAGE. */
+int cli_usage_error(const char *format, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+/*
+ * Reports a failed library call: nothing for a closed pipe (the process
+ * then dies of SIGPIPE, quietly, as cat would), "rayo: MESSAGE" for the
+ * rest.  Returns the exit status that fits the status: 2 for bad input,
+ * 1 for I/O and memory.
+ */
+int cli_report(const rayo_error *err);
+
+/* The message getopt_long's result calls for; returns CLI_EXIT_USAGE. */
+int cli_bad_option(int option, char **argv, int index);
+
+/*
+ * Parse option values.  On failure they print one line naming option,
+ * text and what is accepted, and return 0; on success they return 1.
+ */
+int cli_parse_uint(const char *option, const char *text, unsigned long min,
+                   unsigned long max, unsigned long *value);
+int cli_parse_double(const char *option, const char *text, double *value);
+/* Exactly count comma-separated finite numbers; `shape` names them. */
+int cli_parse_numbers(const char *option, const char *text, size_t count,
+                      const char *shape, double *values);
+
+/* 1 when standard output is a terminal (so binary output is refused). */
+int cli_stdout_is_terminal(void);
+
+#endif

@@ -1,0 +1,332 @@
+/*
+ * cmd_render.c - `rayo render`: options to camera and scene, the renderer
+ * to a writer, the writer to an output file that appears whole or not at
+ * all.
+ *
+ * With no options it is the assignment: the seed's sphere, 640x480, a
+ * 90 degree field of view, plain PBM on standard output.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <getopt.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+#define MAX_SPHERES_ON_COMMAND_LINE 4096
+
+typedef struct render_request {
+    unsigned long width, height;
+    double fov;
+    rayo_vec3 origin;
+    double spheres[MAX_SPHERES_ON_COMMAND_LINE][4];
+    size_t sphere_count;
+    const char *output;  /* "-" for standard output */
+    const char *format;  /* NULL: from the output's extension */
+    int raw;
+    unsigned long threads;
+} render_request;
+
+/* Set by SIGINT/SIGTERM; the render stops at the next band. */
+static volatile sig_atomic_t interrupted_by;
+
+static void on_interrupt(int signal_number)
+{
+    interrupted_by = signal_number;
+}
+
+static int stop_requested(void *context, uint32_t done, uint32_t total)
+{
+    (void)context;
+    (void)done;
+    (void)total;
+    return interrupted_by != 0;
+}
+
+static void print_help(void)
+{
+    printf(
+        "usage: rayo [render] [OPTIONS]\n\n"
+        "Traces one ray per pixel from the camera and writes black where a "
+        "ray hits a\nsphere.  With no options: the assignment's sphere "
+        "(centre 0.5,0.75,1.9, radius\n0.8), 640x480, field of view 90, "
+        "plain PBM (P1) on standard output.\n\n"
+        "options:\n"
+        "  -W, --width N          image width in pixels (1-65536; default "
+        "640)\n"
+        "  -H, --height N         image height in pixels (1-65536; default "
+        "480)\n"
+        "                         at most 2^30 pixels in all\n"
+        "      --fov DEG          horizontal field of view, degrees, "
+        "0 < DEG < 180 (default 90)\n"
+        "      --origin X,Y,Z     camera position (default 0,0,0); it looks "
+        "down +z, +y up\n"
+        "      --sphere CX,CY,CZ,R\n"
+        "                         a sphere (repeatable; R > 0); the first "
+        "replaces the\n"
+        "                         assignment's sphere\n"
+        "  -o, --output FILE      write to FILE ('-' = standard output, "
+        "the default);\n"
+        "                         a file appears whole or not at all\n"
+        "      --format FMT       pbm or png (default: from FILE's "
+        "extension, else pbm)\n"
+        "      --raw              raw PBM (P4) instead of plain (P1)\n"
+        "  -j, --threads N        rendering threads (default: one per "
+        "CPU)\n"
+        "  -h, --help             this help\n"
+        "  -V, --version          the version\n\n"
+        "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
+        "(rows from the\ntop); its ray has direction (x, -y, w/(2 "
+        "tan(fov/2))), normalised.\n\n"
+        "exit status: 0 success, 1 input/output failure, 2 bad options.\n");
+}
+
+static int parse_request(int argc, char **argv, render_request *req)
+{
+    static const struct option options[] = {
+        {"width", required_argument, NULL, 'W'},
+        {"height", required_argument, NULL, 'H'},
+        {"fov", required_argument, NULL, 'f'},
+        {"origin", required_argument, NULL, 'O'},
+        {"sphere", required_argument, NULL, 's'},
+        {"output", required_argument, NULL, 'o'},
+        {"format", required_argument, NULL, 'F'},
+        {"raw", no_argument, NULL, 'r'},
+        {"threads", required_argument, NULL, 'j'},
+        {"help", no_argument, NULL, 'h'},
+        {"version", no_argument, NULL, 'V'},
+        {NULL, 0, NULL, 0}};
+    int c;
+    opterr = 0;
+    optind = 0;
+    while ((c = getopt_long(argc, argv, ":W:H:o:j:hV", options, NULL)) != -1) {
+        double v[4];
+        switch (c) {
+        case 'W':
+            if (!cli_parse_uint("--width", optarg, 1, RAYO_MAX_DIMENSION,
+                                &req->width))
+                return CLI_EXIT_USAGE;
+            break;
+        case 'H':
+            if (!cli_parse_uint("--height", optarg, 1, RAYO_MAX_DIMENSION,
+                                &req->height))
+                return CLI_EXIT_USAGE;
+            break;
+        case 'f':
+            if (!cli_parse_double("--fov", optarg, &req->fov))
+                return CLI_EXIT_USAGE;
+            if (!(req->fov > 0 && req->fov < 180))
+                return cli_usage_error("--fov: '%s' is out of range; "
+                                       "expected degrees strictly between 0 "
+                                       "and 180",
+                                       optarg);
+            break;
+        case 'O':
+            if (!cli_parse_numbers("--origin", optarg, 3, "X,Y,Z", v))
+                return CLI_EXIT_USAGE;
+            req->origin = rayo_vec3_make(v[0], v[1], v[2]);
+            break;
+        case 's':
+            if (!cli_parse_numbers("--sphere", optarg, 4, "CX,CY,CZ,R", v))
+                return CLI_EXIT_USAGE;
+            if (!(v[3] > 0))
+                return cli_usage_error("--sphere: radius in '%s' must be "
+                                       "greater than 0",
+                                       optarg);
+            if (req->sphere_count == MAX_SPHERES_ON_COMMAND_LINE)
+                return cli_usage_error("--sphere: more than %d spheres; use "
+                                       "a scene file",
+                                       MAX_SPHERES_ON_COMMAND_LINE);
+            memcpy(req->spheres[req->sphere_count++], v, sizeof v);
+            break;
+        case 'o':
+            req->output = optarg;
+            break;
+        case 'F':
+            req->format = optarg;
+            break;
+        case 'r':
+            req->raw = 1;
+            break;
+        case 'j':
+            if (!cli_parse_uint("--threads", optarg, 1, RAYO_MAX_THREADS,
+                                &req->threads))
+                return CLI_EXIT_USAGE;
+            break;
+        case 'h':
+            print_help();
+            return -1;
+        case 'V':
+            printf("rayo %s\n", RAYO_VERSION);
+            return -1;
+        default:
+            return cli_bad_option(c, argv, optind);
+        }
+    }
+    if (optind < argc)
+        return cli_usage_error("render: unexpected argument '%s'; see 'rayo "
+                               "--help'",
+                               argv[optind]);
+    if ((unsigned long long)req->width * req->height > RAYO_MAX_PIXELS)
+        return cli_usage_error("--width %lu --height %lu: %llu pixels; "
+                               "expected at most %lu (2^30)",
+                               req->width, req->height,
+                               (unsigned long long)req->width * req->height,
+                               RAYO_MAX_PIXELS);
+    return CLI_EXIT_OK;
+}
+
+static int choose_format(const render_request *req, rayo_format *format)
+{
+    rayo_error err;
+    if (req->format != NULL) {
+        if (rayo_format_parse(req->format, format, &err) != RAYO_OK ||
+            (*format != RAYO_FORMAT_PBM && *format != RAYO_FORMAT_PNG))
+            return cli_usage_error("--format: '%s' is not accepted; expected "
+                                   "pbm or png",
+                                   req->format);
+    } else if (strcmp(req->output, "-") == 0) {
+        *format = RAYO_FORMAT_PBM;
+    } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK ||
+               (*format != RAYO_FORMAT_PBM && *format != RAYO_FORMAT_PNG)) {
+        return cli_usage_error("--output: cannot tell the format of '%s' "
+                               "from its extension; expected .pbm or .png, "
+                               "or give --format",
+                               req->output);
+    }
+    if (req->raw && *format != RAYO_FORMAT_PBM)
+        return cli_usage_error("--raw: applies only to PBM output, not %s",
+                               rayo_format_name(*format));
+    if (strcmp(req->output, "-") == 0 && cli_stdout_is_terminal() &&
+        (*format == RAYO_FORMAT_PNG || req->raw))
+        return cli_usage_error("refusing to write binary %s to a terminal; "
+                               "use -o FILE or a pipe",
+                               req->raw ? "PBM" : "PNG");
+    return CLI_EXIT_OK;
+}
+
+static rayo_status write_rows(void *context, const unsigned char *rows,
+                              size_t stride, uint32_t first_row,
+                              uint32_t count, rayo_error *err)
+{
+    (void)first_row;
+    return rayo_writer_write_rows(context, rows, stride, count, err);
+}
+
+static int build_scene(const render_request *req, rayo_scene **scene,
+                       rayo_error *err)
+{
+    size_t i;
+    if (rayo_scene_create(scene, err) != RAYO_OK)
+        return 0;
+    if (req->sphere_count == 0)
+        return rayo_scene_add_sphere(
+                   *scene,
+                   rayo_vec3_make(RAYO_SEED_CENTER_X, RAYO_SEED_CENTER_Y,
+                                  RAYO_SEED_CENTER_Z),
+                   RAYO_SEED_RADIUS, err) == RAYO_OK;
+    for (i = 0; i < req->sphere_count; i++) {
+        const double *s = req->spheres[i];
+        if (rayo_scene_add_sphere(*scene, rayo_vec3_make(s[0], s[1], s[2]),
+                                  s[3], err) != RAYO_OK)
+            return 0;
+    }
+    return 1;
+}
+
+/* Renders into an opened output; leaves committing to the caller. */
+static rayo_status render_to(rayo_output *out, const rayo_camera *camera,
+                             const rayo_scene *scene,
+                             const rayo_render_options *options,
+                             const rayo_write_options *write_options,
+                             rayo_error *err)
+{
+    rayo_image_info info = rayo_render_image_info(camera, options);
+    rayo_writer *writer;
+    rayo_status status =
+        rayo_writer_open(&writer, out, &info, write_options, err);
+    if (status != RAYO_OK)
+        return status;
+    status = rayo_render(camera, scene, options, write_rows, writer, err);
+    if (status != RAYO_OK) {
+        rayo_writer_discard(writer);
+        return status;
+    }
+    return rayo_writer_finish(writer, err);
+}
+
+static void catch_interrupts(void)
+{
+    struct sigaction action;
+    memset(&action, 0, sizeof action);
+    action.sa_handler = on_interrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, NULL);
+    sigaction(SIGTERM, &action, NULL);
+}
+
+/* After a cancelled render: die of the signal that asked for it. */
+static int exit_for_interrupt(void)
+{
+    int number = interrupted_by;
+    signal(number, SIG_DFL);
+    raise(number);
+    return 128 + number;
+}
+
+int cli_render(int argc, char **argv)
+{
+    render_request *req = calloc(1, sizeof *req);
+    rayo_camera camera;
+    rayo_scene *scene = NULL;
+    rayo_render_options options;
+    rayo_write_options write_options;
+    rayo_output *out = NULL;
+    rayo_error err;
+    int exit_status;
+
+    if (req == NULL)
+        return cli_usage_error("out of memory");
+    req->width = RAYO_SEED_WIDTH;
+    req->height = RAYO_SEED_HEIGHT;
+    req->fov = RAYO_SEED_FOV;
+    req->origin = rayo_vec3_make(0, 0, 0);
+    req->output = "-";
+    exit_status = parse_request(argc, argv, req);
+    if (exit_status == CLI_EXIT_OK)
+        exit_status = choose_format(req, &write_options.format);
+    if (exit_status != CLI_EXIT_OK) {
+        free(req);
+        return exit_status < 0 ? CLI_EXIT_OK : exit_status;
+    }
+    write_options.plain = !req->raw;
+
+    rayo_error_clear(&err);
+    if (rayo_camera_init(&camera, (uint32_t)req->width,
+                         (uint32_t)req->height, req->fov, req->origin,
+                         &err) != RAYO_OK ||
+        !build_scene(req, &scene, &err)) {
+        free(req);
+        rayo_scene_free(scene);
+        return cli_report(&err);
+    }
+    rayo_render_options_init(&options);
+    options.threads = (unsigned)req->threads;
+    options.progress = stop_requested;
+    catch_interrupts();
+
+    if (rayo_output_open(&out, req->output, &err) == RAYO_OK) {
+        if (render_to(out, &camera, scene, &options, &write_options,
+                      &err) == RAYO_OK)
+            rayo_output_commit(out, &err);
+        else
+            rayo_output_abort(out);
+    }
+    rayo_scene_free(scene);
+    free(req);
+    if (interrupted_by != 0)
+        return exit_for_interrupt();
+    return cli_report(&err);
+}

@@ -1,0 +1,60 @@
+/*
+ * main.c - the `rayo` command: picks the subcommand and hands over.
+ *
+ * `rayo` alone, or `rayo` followed by options, is `rayo render`: with no
+ * arguments it does exactly what the assignment asks, the seed's sphere as
+ * plain PBM on standard output.  Every subcommand lives in a file of its
+ * own (cmd_*.c) and parses its own options.
+ */
+#include <signal.h>
+#include <string.h>
+
+#include "cli.h"
+
+typedef struct subcommand {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} subcommand;
+
+static const subcommand subcommands[] = {
+    {"render", cli_render, "trace rays through a scene into an image (default)"},
+};
+#define SUBCOMMAND_COUNT (sizeof subcommands / sizeof subcommands[0])
+
+static void print_overview(void)
+{
+    size_t i;
+    printf("usage: rayo [render] [OPTIONS]\n"
+           "       rayo COMMAND [OPTIONS] [ARGS]\n\n"
+           "rayo is a small, exact ray tracer.  With no arguments it renders "
+           "the sphere of\nthe course's first assignment as plain PBM on "
+           "standard output.\n\ncommands:\n");
+    for (i = 0; i < SUBCOMMAND_COUNT; i++)
+        printf("  %-9s %s\n", subcommands[i].name, subcommands[i].summary);
+    printf("\n'rayo COMMAND --help' describes a command; 'man rayo' has it "
+           "all.\n\n");
+}
+
+int main(int argc, char **argv)
+{
+    size_t i;
+    /* Write errors come back as EPIPE; cli_report decides what to do. */
+    signal(SIGPIPE, SIG_IGN);
+    if (argc > 1) {
+        for (i = 0; i < SUBCOMMAND_COUNT; i++)
+            if (strcmp(argv[1], subcommands[i].name) == 0)
+                return subcommands[i].run(argc - 1, argv + 1);
+        if (strcmp(argv[1], "help") == 0) {
+            print_overview();
+            return cli_render(2, (char *[]){"render", "--help", NULL});
+        }
+        if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)
+            print_overview();
+        if (argv[1][0] != '-')
+            return cli_usage_error("unknown command '%s'; see 'rayo --help'",
+                                   argv[1]);
+    }
+    argv[0] = "render";
+    return cli_render(argc, argv);
+}

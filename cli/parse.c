@@ -1,0 +1,161 @@
+/*
+ * parse.c - turning option values into numbers, strictly.
+ *
+ * strtoul/strtod accept leading spaces, partial numbers ("12abc"),
+ * "nan" and "inf"; the command does not.  A value must be a whole number
+ * (or a finite decimal) and nothing else, and every refusal names the
+ * option, the value and what is accepted.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <ctype.h>
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+
+int cli_usage_error(const char *format, ...)
+{
+    va_list args;
+    fputs("rayo: ", stderr);
+    va_start(args, format);
+    vfprintf(stderr, format, args);
+    va_end(args);
+    fputc('\n', stderr);
+    return CLI_EXIT_USAGE;
+}
+
+int cli_report(const rayo_error *err)
+{
+    switch (err->status) {
+    case RAYO_OK:
+        return CLI_EXIT_OK;
+    case RAYO_ERR_PIPE:
+        /* Die of SIGPIPE, quietly, like every filter whose reader left. */
+        fflush(stdout);
+        signal(SIGPIPE, SIG_DFL);
+        raise(SIGPIPE);
+        return CLI_EXIT_FAILURE;
+    case RAYO_ERR_INVALID:
+    case RAYO_ERR_FORMAT:
+    case RAYO_ERR_LIMIT:
+        fprintf(stderr, "rayo: %s\n", err->message);
+        return CLI_EXIT_USAGE;
+    case RAYO_ERR_NOMEM:
+    case RAYO_ERR_IO:
+    case RAYO_ERR_CANCELLED:
+        break;
+    }
+    fprintf(stderr, "rayo: %s\n", err->message);
+    return CLI_EXIT_FAILURE;
+}
+
+int cli_bad_option(int option, char **argv, int index)
+{
+    const char *word = argv[index - 1];
+    if (option == ':')
+        return cli_usage_error("%s: '%s' needs a value; see 'rayo --help'",
+                               argv[0], word);
+    return cli_usage_error("%s: unknown option '%s'; see 'rayo --help'",
+                           argv[0], word);
+}
+
+static int looks_numeric_start(const char *text)
+{
+    return *text != '\0' && !isspace((unsigned char)*text);
+}
+
+int cli_parse_uint(const char *option, const char *text, unsigned long min,
+                   unsigned long max, unsigned long *value)
+{
+    char *end;
+    unsigned long v;
+    const char *p = text;
+    if (*p == '+')
+        p++;
+    if (!isdigit((unsigned char)*p)) {
+        cli_usage_error("%s: '%s' is not a whole number; expected %lu to %lu",
+                        option, text, min, max);
+        return 0;
+    }
+    errno = 0;
+    v = strtoul(p, &end, 10);
+    if (*end != '\0') {
+        cli_usage_error("%s: '%s' is not a whole number; expected %lu to %lu",
+                        option, text, min, max);
+        return 0;
+    }
+    if (errno == ERANGE || v < min || v > max) {
+        cli_usage_error("%s: '%s' is out of range; expected %lu to %lu",
+                        option, text, min, max);
+        return 0;
+    }
+    *value = v;
+    return 1;
+}
+
+/* Parses one finite number from [text, text+length); 1 on success. */
+static int parse_finite(const char *text, size_t length, double *value)
+{
+    char buffer[64];
+    char *end;
+    if (length == 0 || length >= sizeof buffer)
+        return 0;
+    memcpy(buffer, text, length);
+    buffer[length] = '\0';
+    if (!looks_numeric_start(buffer))
+        return 0;
+    errno = 0;
+    *value = strtod(buffer, &end);
+    return *end == '\0' && isfinite(*value) && errno != ERANGE;
+}
+
+int cli_parse_double(const char *option, const char *text, double *value)
+{
+    if (parse_finite(text, strlen(text), value))
+        return 1;
+    cli_usage_error("%s: '%s' is not a finite number", option, text);
+    return 0;
+}
+
+int cli_parse_numbers(const char *option, const char *text, size_t count,
+                      const char *shape, double *values)
+{
+    const char *p = text;
+    size_t n = 0;
+    for (;;) {
+        const char *comma = strchr(p, ',');
+        size_t length = comma ? (size_t)(comma - p) : strlen(p);
+        double v;
+        if (!parse_finite(p, length, &v)) {
+            cli_usage_error("%s: '%.*s' in '%s' is not a finite number; "
+                            "expected %s",
+                            option, (int)length, p, text, shape);
+            return 0;
+        }
+        if (n < count)
+            values[n] = v;
+        n++;
+        if (comma == NULL)
+            break;
+        p = comma + 1;
+    }
+    if (n != count) {
+        cli_usage_error("%s: '%s' has %lu number%s; expected %lu: %s", option,
+                        text, (unsigned long)n, n == 1 ? "" : "s",
+                        (unsigned long)count, shape);
+        return 0;
+    }
+    return 1;
+}
+
+int cli_stdout_is_terminal(void)
+{
+    return isatty(STDOUT_FILENO);
+}

@@ -1,0 +1,30 @@
+/*
+ * rayo.h - the whole rayo library in one include, grouped by layer in the
+ * order data flows: math, camera, scene, render, images and formats.
+ *
+ * The assignment's own API (producto_interno, norma, intersecta_esfera
+ * and its #defines) is not included here: include <rayo/ejercicio1.h>
+ * for it, so its short macro names (R, CX, ...) never leak into programs
+ * that did not ask for them.
+ */
+#ifndef RAYO_H
+#define RAYO_H
+
+#define RAYO_VERSION "0.1.0"
+
+#include "rayo/status.h"
+#include "rayo/limits.h"
+#include "rayo/seed.h"
+
+#include "rayo/vec3.h"
+#include "rayo/ray.h"
+#include "rayo/sphere.h"
+#include "rayo/camera.h"
+#include "rayo/scene.h"
+#include "rayo/render.h"
+
+#include "rayo/image.h"
+#include "rayo/output.h"
+#include "rayo/writer.h"
+
+#endif

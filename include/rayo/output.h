@@ -1,0 +1,61 @@
+/*
+ * output.h - an output file that appears whole or not at all.
+ *
+ * A regular file is written to a temporary file beside it (same directory,
+ * so the same file system) and renamed over the final name only on
+ * rayo_output_commit, after everything was written and synced; a failure
+ * or rayo_output_abort removes the temporary file and leaves any earlier
+ * file of that name untouched.  Standard output ("-"), devices, pipes and
+ * sockets are written directly: nothing is ever renamed over /dev/null.
+ *
+ * Writes are buffered; errors carry the file name and the system's reason.
+ * A reader that went away (EPIPE) is reported as RAYO_ERR_PIPE so the
+ * command can end quietly.  The caller should ignore SIGPIPE.
+ */
+#ifndef RAYO_OUTPUT_H
+#define RAYO_OUTPUT_H
+
+#include <stddef.h>
+
+#include "rayo/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct rayo_output rayo_output;
+
+/* Opens path for writing; "-" is standard output. */
+rayo_status rayo_output_open(rayo_output **out, const char *path,
+                             rayo_error *err);
+
+/* Wraps an open descriptor (not closed by rayo); name is for messages. */
+rayo_status rayo_output_open_fd(rayo_output **out, int fd, const char *name,
+                                rayo_error *err);
+
+rayo_status rayo_output_write(rayo_output *out, const void *data,
+                              size_t size, rayo_error *err);
+
+/*
+ * Flushes, syncs and (for a regular file) renames into place, then frees
+ * out.  On failure the temporary file is removed and out is freed too.
+ */
+rayo_status rayo_output_commit(rayo_output *out, rayo_error *err);
+
+/* Discards what was written (removes the temporary file) and frees out. */
+void rayo_output_abort(rayo_output *out);
+
+/* The name used in messages: the path, or "standard output". */
+const char *rayo_output_name(const rayo_output *out);
+
+/*
+ * The temporary file being written, or NULL when writing directly.  Lets a
+ * signal handler unlink(2) it before the process dies.
+ */
+const char *rayo_output_temp_path(const rayo_output *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

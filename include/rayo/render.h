@@ -1,0 +1,87 @@
+/*
+ * render.h - turning a camera and a scene into rows of pixels.
+ *
+ * The renderer asks the camera for each pixel's ray, the scene what the
+ * ray hits, and the shading mode what colour that makes; it hands finished
+ * rows, in order from the top, to a sink (usually a rayo_writer).  Bands
+ * of rows are rendered by several threads at once and delivered in order,
+ * so the output is the same bytes whatever the thread count, and memory
+ * holds a few bands, never the whole frame.
+ */
+#ifndef RAYO_RENDER_H
+#define RAYO_RENDER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/camera.h"
+#include "rayo/image.h"
+#include "rayo/scene.h"
+#include "rayo/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum rayo_shade_mode {
+    RAYO_SHADE_HIT /* bilevel: black (1) where the ray hits anything */
+} rayo_shade_mode;
+
+/*
+ * Called on the rendering thread after each delivered band; return
+ * nonzero to stop the render (rayo_render then fails with
+ * RAYO_ERR_CANCELLED).
+ */
+typedef int (*rayo_progress_fn)(void *context, uint32_t rows_done,
+                                uint32_t rows_total);
+
+typedef struct rayo_render_options {
+    rayo_shade_mode shade;
+    unsigned threads; /* 0: one per online CPU */
+    rayo_progress_fn progress; /* may be NULL */
+    void *progress_context;
+} rayo_render_options;
+
+/* Hit shading, one thread per CPU, no progress callback. */
+void rayo_render_options_init(rayo_render_options *options);
+
+/* The layout of the rows this camera and shading mode produce. */
+rayo_image_info rayo_render_image_info(const rayo_camera *camera,
+                                       const rayo_render_options *options);
+
+/*
+ * Receives count finished rows starting at first_row, stride bytes apart.
+ * A status other than RAYO_OK stops the render and is returned by it.
+ */
+typedef rayo_status (*rayo_row_sink)(void *context,
+                                     const unsigned char *rows,
+                                     size_t stride, uint32_t first_row,
+                                     uint32_t count, rayo_error *err);
+
+rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
+                        const rayo_render_options *options,
+                        rayo_row_sink sink, void *sink_context,
+                        rayo_error *err);
+
+/*
+ * Renders one row into out (rayo_image_info_row_bytes() bytes), on the
+ * calling thread.
+ */
+void rayo_render_row(const rayo_camera *camera, const rayo_scene *scene,
+                     const rayo_render_options *options, uint32_t row,
+                     unsigned char *out);
+
+/* Renders a whole frame into a new image (free it with rayo_image_free). */
+rayo_status rayo_render_image(const rayo_camera *camera,
+                              const rayo_scene *scene,
+                              const rayo_render_options *options,
+                              rayo_image *image, rayo_error *err);
+
+/* The number of online CPUs, at least 1. */
+unsigned rayo_cpu_count(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,99 @@
+/*
+ * writer.h - streaming image writers: Netpbm (PBM, PGM, PPM; plain and
+ * raw) and PNG.
+ *
+ * A writer is opened with the image's header, fed rows from top to bottom
+ * (as many at a time as the caller likes) and finished; it never needs the
+ * whole frame, so a 16384-pixel-wide render streams in the memory of a few
+ * rows.  Writers are strict about what they emit: plain Netpbm lines are
+ * at most 70 characters, as the format pages ask.
+ *
+ * What each format takes:
+ *   PBM  RAYO_SAMPLE_BIT rows;
+ *   PGM  one channel, U8 or U16 (the maxval is kept);
+ *   PPM  three channels, U8 or U16 (the maxval is kept);
+ *   PNG  BIT (written as 1-bit gray, black where the bit is 1), or one or
+ *        three channels of U8 (8-bit) or U16 (16-bit), samples scaled to
+ *        the full range when maxval is not 255 or 65535.
+ * Converting between layouts (say colour to bilevel) is not a writer's
+ * job.
+ */
+#ifndef RAYO_WRITER_H
+#define RAYO_WRITER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/image.h"
+#include "rayo/output.h"
+#include "rayo/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum rayo_format {
+    RAYO_FORMAT_PBM,
+    RAYO_FORMAT_PGM,
+    RAYO_FORMAT_PPM,
+    RAYO_FORMAT_PNG
+} rayo_format;
+
+/* "pbm", "pgm", "ppm", "png"; RAYO_ERR_INVALID for anything else. */
+rayo_status rayo_format_parse(const char *name, rayo_format *format,
+                              rayo_error *err);
+
+/*
+ * The format named by a path's extension (".pbm", ".PNG", ...), matched
+ * without regard to case.  RAYO_ERR_INVALID when there is none we know.
+ */
+rayo_status rayo_format_from_path(const char *path, rayo_format *format,
+                                  rayo_error *err);
+
+/* "pbm", "pgm", "ppm" or "png". */
+const char *rayo_format_name(rayo_format format);
+
+/* The format that holds this layout without loss (PBM, PGM or PPM). */
+rayo_format rayo_format_netpbm_for(const rayo_image_info *info);
+
+typedef struct rayo_write_options {
+    rayo_format format;
+    int plain; /* Netpbm: 1 = plain (P1-P3, ASCII), 0 = raw (P4-P6) */
+} rayo_write_options;
+
+typedef struct rayo_writer rayo_writer;
+
+/*
+ * Starts an image on out (which stays the caller's: commit or abort it
+ * after the writer is finished).  RAYO_ERR_INVALID when the format cannot
+ * hold this layout.
+ */
+rayo_status rayo_writer_open(rayo_writer **writer, rayo_output *out,
+                             const rayo_image_info *info,
+                             const rayo_write_options *options,
+                             rayo_error *err);
+
+/* Writes count rows, each rayo_image_info_row_bytes() long, stride apart. */
+rayo_status rayo_writer_write_rows(rayo_writer *writer,
+                                   const unsigned char *rows, size_t stride,
+                                   uint32_t count, rayo_error *err);
+
+/*
+ * Ends the image (fails if rows are missing) and frees the writer, which
+ * is freed whatever the outcome.
+ */
+rayo_status rayo_writer_finish(rayo_writer *writer, rayo_error *err);
+
+/* Frees a writer without ending its image (after an error). */
+void rayo_writer_discard(rayo_writer *writer);
+
+/* Writes a whole image: open, all rows, finish. */
+rayo_status rayo_image_write(const rayo_image *image, rayo_output *out,
+                             const rayo_write_options *options,
+                             rayo_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

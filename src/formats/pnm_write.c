@@ -1,0 +1,255 @@
+/*
+ * pnm_write.c - writing PBM, PGM and PPM, plain (P1-P3) and raw (P4-P6),
+ * exactly as the Netpbm format pages describe them.
+ *
+ * The header is "Pn\nWIDTH HEIGHT\n" followed, for PGM and PPM, by
+ * "MAXVAL\n".  Plain rasters put each row on lines of at most 70
+ * characters (PBM digits unseparated, as Netpbm's own tools write them;
+ * PGM and PPM samples separated by spaces).  Raw PBM rows are packed bits
+ * with the padding bits of the last byte zero; raw samples are bytes, or
+ * two bytes big-endian when maxval > 255.  Each row is formatted into a
+ * scratch buffer and handed to the output in one call.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "writer_impl.h"
+
+#define PLAIN_LINE_MAX 70
+
+typedef struct pnm_state {
+    unsigned char *scratch;
+    size_t scratch_size;
+    char bits_table[256 * 8]; /* eight ASCII digits for each byte */
+} pnm_state;
+
+static int magic_number(const rayo_writer *writer)
+{
+    int base = writer->options.format == RAYO_FORMAT_PBM   ? 1
+               : writer->options.format == RAYO_FORMAT_PGM ? 2
+                                                           : 3;
+    return writer->options.plain ? base : base + 3;
+}
+
+static rayo_status check_layout(const rayo_writer *writer, rayo_error *err)
+{
+    const rayo_image_info *info = &writer->info;
+    const char *name = rayo_format_name(writer->options.format);
+    switch (writer->options.format) {
+    case RAYO_FORMAT_PBM:
+        if (info->sample == RAYO_SAMPLE_BIT)
+            return RAYO_OK;
+        break;
+    case RAYO_FORMAT_PGM:
+        if (info->sample != RAYO_SAMPLE_BIT && info->channels == 1)
+            return RAYO_OK;
+        break;
+    case RAYO_FORMAT_PPM:
+        if (info->sample != RAYO_SAMPLE_BIT && info->channels == 3)
+            return RAYO_OK;
+        break;
+    case RAYO_FORMAT_PNG:
+        break;
+    }
+    return rayo_error_set(err, RAYO_ERR_INVALID,
+                          "%s: a %s file cannot hold a %s image",
+                          rayo_output_name(writer->out), name,
+                          info->sample == RAYO_SAMPLE_BIT ? "bilevel"
+                          : info->channels == 1           ? "gray"
+                                                          : "colour");
+}
+
+/* Largest formatted row, including line breaks. */
+static size_t scratch_bytes(const rayo_writer *writer)
+{
+    const rayo_image_info *info = &writer->info;
+    size_t samples = (size_t)info->width * info->channels;
+    if (!writer->options.plain)
+        return rayo_image_info_row_bytes(info);
+    if (info->sample == RAYO_SAMPLE_BIT)
+        return samples + samples / PLAIN_LINE_MAX + 2;
+    /* "65535 " per sample, and a newline at worst every 11 samples. */
+    return samples * 6 + samples / 11 + 2;
+}
+
+static void fill_bits_table(char *table)
+{
+    int byte, bit;
+    for (byte = 0; byte < 256; byte++)
+        for (bit = 0; bit < 8; bit++)
+            table[byte * 8 + bit] = (char)('0' + ((byte >> (7 - bit)) & 1));
+}
+
+static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
+{
+    char header[64];
+    int length;
+    pnm_state *state;
+    rayo_status status = check_layout(writer, err);
+    if (status != RAYO_OK)
+        return status;
+    state = malloc(sizeof *state);
+    if (state == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    state->scratch_size = scratch_bytes(writer);
+    state->scratch = malloc(state->scratch_size);
+    if (state->scratch == NULL) {
+        free(state);
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    }
+    fill_bits_table(state->bits_table);
+    writer->state = state;
+    if (writer->options.format == RAYO_FORMAT_PBM)
+        length = snprintf(header, sizeof header, "P%d\n%lu %lu\n",
+                          magic_number(writer),
+                          (unsigned long)writer->info.width,
+                          (unsigned long)writer->info.height);
+    else
+        length = snprintf(header, sizeof header, "P%d\n%lu %lu\n%u\n",
+                          magic_number(writer),
+                          (unsigned long)writer->info.width,
+                          (unsigned long)writer->info.height,
+                          writer->info.maxval);
+    status = rayo_output_write(writer->out, header, (size_t)length, err);
+    if (status != RAYO_OK) {
+        free(state->scratch);
+        free(state);
+    }
+    return status;
+}
+
+static size_t format_plain_bits(const rayo_writer *writer,
+                                const unsigned char *row, unsigned char *out)
+{
+    const char *table = ((const pnm_state *)writer->state)->bits_table;
+    uint32_t width = writer->info.width;
+    uint32_t x = 0;
+    size_t n = 0;
+    while (x < width) {
+        uint32_t line_end = width - x > PLAIN_LINE_MAX ? x + PLAIN_LINE_MAX
+                                                       : width;
+        while (x < line_end) {
+            if ((x & 7) == 0 && line_end - x >= 8) {
+                memcpy(out + n, table + row[x >> 3] * 8, 8);
+                n += 8;
+                x += 8;
+            } else {
+                out[n++] = (unsigned char)('0' + rayo_bit_get(row, x));
+                x++;
+            }
+        }
+        out[n++] = '\n';
+    }
+    return n;
+}
+
+static unsigned sample_at(const rayo_image_info *info,
+                          const unsigned char *row, size_t i)
+{
+    if (info->sample == RAYO_SAMPLE_U8)
+        return row[i];
+    {
+        uint16_t v;
+        memcpy(&v, row + 2 * i, 2);
+        return v;
+    }
+}
+
+static size_t format_plain_samples(const rayo_writer *writer,
+                                   const unsigned char *row,
+                                   unsigned char *out)
+{
+    size_t samples = (size_t)writer->info.width * writer->info.channels;
+    size_t n = 0, line = 0, i;
+    for (i = 0; i < samples; i++) {
+        char digits[8];
+        int length = snprintf(digits, sizeof digits, "%u",
+                              sample_at(&writer->info, row, i));
+        if (line > 0 && line + 1 + (size_t)length > PLAIN_LINE_MAX) {
+            out[n++] = '\n';
+            line = 0;
+        } else if (line > 0) {
+            out[n++] = ' ';
+            line++;
+        }
+        memcpy(out + n, digits, (size_t)length);
+        n += (size_t)length;
+        line += (size_t)length;
+    }
+    out[n++] = '\n';
+    return n;
+}
+
+static size_t format_raw(const rayo_writer *writer, const unsigned char *row,
+                         unsigned char *out)
+{
+    const rayo_image_info *info = &writer->info;
+    size_t bytes = rayo_image_info_row_bytes(info);
+    if (info->sample == RAYO_SAMPLE_BIT) {
+        memcpy(out, row, bytes);
+        if (info->width % 8 != 0)
+            out[bytes - 1] = (unsigned char)(out[bytes - 1] &
+                                             (0xFF00u >> (info->width % 8)));
+    } else if (info->sample == RAYO_SAMPLE_U8 || info->maxval > 255) {
+        size_t i, samples = (size_t)info->width * info->channels;
+        if (info->sample == RAYO_SAMPLE_U8) {
+            memcpy(out, row, bytes);
+        } else {
+            for (i = 0; i < samples; i++) {
+                unsigned v = sample_at(info, row, i);
+                out[2 * i] = (unsigned char)(v >> 8);
+                out[2 * i + 1] = (unsigned char)(v & 0xFF);
+            }
+        }
+    } else {
+        /* U16 samples with maxval <= 255 are one byte each in the file. */
+        size_t i, samples = (size_t)info->width * info->channels;
+        for (i = 0; i < samples; i++)
+            out[i] = (unsigned char)sample_at(info, row, i);
+        bytes = samples;
+    }
+    return bytes;
+}
+
+static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
+                            size_t stride, uint32_t count, rayo_error *err)
+{
+    pnm_state *state = writer->state;
+    uint32_t r;
+    for (r = 0; r < count; r++) {
+        const unsigned char *row = rows + (size_t)r * stride;
+        size_t n;
+        rayo_status status;
+        if (!writer->options.plain)
+            n = format_raw(writer, row, state->scratch);
+        else if (writer->info.sample == RAYO_SAMPLE_BIT)
+            n = format_plain_bits(writer, row, state->scratch);
+        else
+            n = format_plain_samples(writer, row, state->scratch);
+        status = rayo_output_write(writer->out, state->scratch, n, err);
+        if (status != RAYO_OK)
+            return status;
+    }
+    return RAYO_OK;
+}
+
+static void pnm_discard(rayo_writer *writer)
+{
+    pnm_state *state = writer->state;
+    if (state != NULL) {
+        free(state->scratch);
+        free(state);
+        writer->state = NULL;
+    }
+}
+
+static rayo_status pnm_finish(rayo_writer *writer, rayo_error *err)
+{
+    (void)err;
+    pnm_discard(writer);
+    return RAYO_OK;
+}
+
+const rayo_writer_ops rayo_pnm_writer_ops = {pnm_open, pnm_rows, pnm_finish,
+                                             pnm_discard};

@@ -1,0 +1,155 @@
+/*
+ * writer.c - the format-independent half of rayo_writer: format names,
+ * extensions, row bookkeeping and dispatch to the format's table.
+ */
+#include "writer_impl.h"
+
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const format_names[] = {"pbm", "pgm", "ppm", "png"};
+#define FORMAT_COUNT (sizeof format_names / sizeof format_names[0])
+
+static int equal_ignoring_case(const char *a, const char *b)
+{
+    while (*a && *b) {
+        if (tolower((unsigned char)*a) != tolower((unsigned char)*b))
+            return 0;
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+static int lookup(const char *name, rayo_format *format)
+{
+    size_t i;
+    for (i = 0; i < FORMAT_COUNT; i++) {
+        if (equal_ignoring_case(name, format_names[i])) {
+            *format = (rayo_format)i;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+rayo_status rayo_format_parse(const char *name, rayo_format *format,
+                              rayo_error *err)
+{
+    if (lookup(name, format))
+        return RAYO_OK;
+    return rayo_error_set(err, RAYO_ERR_INVALID,
+                          "unknown format '%s'; expected pbm, pgm, ppm or png",
+                          name);
+}
+
+rayo_status rayo_format_from_path(const char *path, rayo_format *format,
+                                  rayo_error *err)
+{
+    const char *slash = strrchr(path, '/');
+    const char *dot = strrchr(slash ? slash : path, '.');
+    if (dot != NULL && lookup(dot + 1, format))
+        return RAYO_OK;
+    return rayo_error_set(err, RAYO_ERR_INVALID,
+                          "cannot tell the format of '%s' from its extension; "
+                          "expected .pbm, .pgm, .ppm or .png (or give "
+                          "--format)",
+                          path);
+}
+
+const char *rayo_format_name(rayo_format format)
+{
+    return (unsigned)format < FORMAT_COUNT ? format_names[format] : "?";
+}
+
+rayo_format rayo_format_netpbm_for(const rayo_image_info *info)
+{
+    if (info->sample == RAYO_SAMPLE_BIT)
+        return RAYO_FORMAT_PBM;
+    return info->channels == 1 ? RAYO_FORMAT_PGM : RAYO_FORMAT_PPM;
+}
+
+rayo_status rayo_writer_open(rayo_writer **result, rayo_output *out,
+                             const rayo_image_info *info,
+                             const rayo_write_options *options,
+                             rayo_error *err)
+{
+    rayo_writer *writer;
+    rayo_status status;
+    *result = NULL;
+    status = rayo_image_info_check(info, err);
+    if (status != RAYO_OK)
+        return status;
+    writer = calloc(1, sizeof *writer);
+    if (writer == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    writer->ops = options->format == RAYO_FORMAT_PNG ? &rayo_png_writer_ops
+                                                     : &rayo_pnm_writer_ops;
+    writer->out = out;
+    writer->info = *info;
+    writer->options = *options;
+    status = writer->ops->open(writer, err);
+    if (status != RAYO_OK) {
+        free(writer);
+        return status;
+    }
+    *result = writer;
+    return RAYO_OK;
+}
+
+rayo_status rayo_writer_write_rows(rayo_writer *writer,
+                                   const unsigned char *rows, size_t stride,
+                                   uint32_t count, rayo_error *err)
+{
+    if (count > writer->info.height - writer->rows_written)
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "%s: more rows than the image's height %lu",
+                              rayo_output_name(writer->out),
+                              (unsigned long)writer->info.height);
+    writer->rows_written += count;
+    return writer->ops->rows(writer, rows, stride, count, err);
+}
+
+rayo_status rayo_writer_finish(rayo_writer *writer, rayo_error *err)
+{
+    rayo_status status;
+    if (writer->rows_written != writer->info.height) {
+        status = rayo_error_set(err, RAYO_ERR_INVALID,
+                                "%s: %lu rows written of %lu",
+                                rayo_output_name(writer->out),
+                                (unsigned long)writer->rows_written,
+                                (unsigned long)writer->info.height);
+        rayo_writer_discard(writer);
+        return status;
+    }
+    status = writer->ops->finish(writer, err);
+    free(writer);
+    return status;
+}
+
+void rayo_writer_discard(rayo_writer *writer)
+{
+    if (writer == NULL)
+        return;
+    writer->ops->discard(writer);
+    free(writer);
+}
+
+rayo_status rayo_image_write(const rayo_image *image, rayo_output *out,
+                             const rayo_write_options *options,
+                             rayo_error *err)
+{
+    rayo_writer *writer;
+    rayo_status status =
+        rayo_writer_open(&writer, out, &image->info, options, err);
+    if (status != RAYO_OK)
+        return status;
+    status = rayo_writer_write_rows(writer, image->pixels, image->stride,
+                                    image->info.height, err);
+    if (status != RAYO_OK) {
+        rayo_writer_discard(writer);
+        return status;
+    }
+    return rayo_writer_finish(writer, err);
+}

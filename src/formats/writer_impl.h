@@ -1,0 +1,34 @@
+/*
+ * writer_impl.h - what a format must provide to stand behind rayo_writer.
+ *
+ * writer.c owns the public functions (argument checks, row counting);
+ * pnm_write.c and png_write.c each fill in one of these tables.  Not a
+ * public header.
+ */
+#ifndef RAYO_WRITER_IMPL_H
+#define RAYO_WRITER_IMPL_H
+
+#include "rayo/writer.h"
+
+typedef struct rayo_writer_ops {
+    /* Checks the layout, allocates state, writes the header. */
+    rayo_status (*open)(rayo_writer *writer, rayo_error *err);
+    rayo_status (*rows)(rayo_writer *writer, const unsigned char *rows,
+                        size_t stride, uint32_t count, rayo_error *err);
+    rayo_status (*finish)(rayo_writer *writer, rayo_error *err);
+    void (*discard)(rayo_writer *writer);
+} rayo_writer_ops;
+
+struct rayo_writer {
+    const rayo_writer_ops *ops;
+    rayo_output *out;
+    rayo_image_info info;
+    rayo_write_options options;
+    uint32_t rows_written;
+    void *state; /* the format's own */
+};
+
+extern const rayo_writer_ops rayo_pnm_writer_ops;
+extern const rayo_writer_ops rayo_png_writer_ops;
+
+#endif

@@ -1,0 +1,266 @@
+/*
+ * output.c - buffered, atomic output files (see output.h for the contract).
+ *
+ * The temporary file is ".NAME.XXXXXX" in the target's directory, created
+ * by mkstemp, given the mode a new file would get (0666 less the umask, or
+ * the existing file's mode), filled, fsync'ed, closed and renamed.  A
+ * symbolic link to a regular file is followed, so the link survives and
+ * its target is replaced.
+ */
+#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE
+
+#include "rayo/output.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#define OUTPUT_BUFFER_SIZE (256u * 1024u)
+
+struct rayo_output {
+    int fd;
+    int owns_fd;
+    char *path;      /* final name (resolved), NULL for standard output */
+    char *temp;      /* temporary file, NULL when writing directly */
+    char *display;   /* name for messages */
+    size_t used;
+    unsigned char buffer[OUTPUT_BUFFER_SIZE];
+};
+
+static rayo_status system_error(const rayo_output *out, int code,
+                                rayo_error *err)
+{
+    if (code == EPIPE)
+        return rayo_error_set(err, RAYO_ERR_PIPE, "%s: %s", out->display,
+                              strerror(code));
+    return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", out->display,
+                          strerror(code));
+}
+
+static void output_free(rayo_output *out)
+{
+    if (out->owns_fd && out->fd >= 0)
+        close(out->fd);
+    free(out->path);
+    free(out->temp);
+    free(out->display);
+    free(out);
+}
+
+static rayo_output *output_new(const char *display)
+{
+    rayo_output *out = malloc(sizeof *out);
+    if (out == NULL)
+        return NULL;
+    out->fd = -1;
+    out->owns_fd = 0;
+    out->path = NULL;
+    out->temp = NULL;
+    out->used = 0;
+    out->display = strdup(display);
+    if (out->display == NULL) {
+        free(out);
+        return NULL;
+    }
+    return out;
+}
+
+rayo_status rayo_output_open_fd(rayo_output **result, int fd,
+                                const char *name, rayo_error *err)
+{
+    rayo_output *out = output_new(name);
+    *result = NULL;
+    if (out == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory", name);
+    out->fd = fd;
+    *result = out;
+    return RAYO_OK;
+}
+
+/* The mode a newly created file would get: 0666 less the umask. */
+static mode_t new_file_mode(void)
+{
+    mode_t mask = umask(022);
+    umask(mask);
+    return (mode_t)(0666 & ~mask);
+}
+
+/* Creates the temporary file beside out->path; sets out->temp and fd. */
+static rayo_status open_temporary(rayo_output *out, mode_t mode,
+                                  rayo_error *err)
+{
+    const char *slash = strrchr(out->path, '/');
+    size_t dir_len = slash ? (size_t)(slash - out->path) + 1 : 0;
+    const char *base = out->path + dir_len;
+    size_t size = dir_len + 1 + strlen(base) + sizeof ".XXXXXX";
+    out->temp = malloc(size);
+    if (out->temp == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
+                              out->display);
+    memcpy(out->temp, out->path, dir_len);
+    out->temp[dir_len] = '.';
+    strcpy(out->temp + dir_len + 1, base);
+    strcat(out->temp, ".XXXXXX");
+    out->fd = mkstemp(out->temp);
+    if (out->fd < 0) {
+        int code = errno;
+        free(out->temp);
+        out->temp = NULL;
+        return system_error(out, code, err);
+    }
+    out->owns_fd = 1;
+    if (fchmod(out->fd, mode) != 0) {
+        rayo_status status = system_error(out, errno, err);
+        unlink(out->temp);
+        free(out->temp);
+        out->temp = NULL;
+        return status;
+    }
+    return RAYO_OK;
+}
+
+rayo_status rayo_output_open(rayo_output **result, const char *path,
+                             rayo_error *err)
+{
+    rayo_output *out;
+    struct stat st;
+    rayo_status status;
+    *result = NULL;
+    if (strcmp(path, "-") == 0)
+        return rayo_output_open_fd(result, STDOUT_FILENO, "standard output",
+                                   err);
+    out = output_new(path);
+    if (out == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory", path);
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode)) {
+            output_free(out);
+            return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
+                                  strerror(EISDIR));
+        }
+        /* A device, pipe or socket: write straight into it. */
+        out->fd = open(path, O_WRONLY | O_TRUNC | O_CLOEXEC);
+        if (out->fd < 0) {
+            status = system_error(out, errno, err);
+            output_free(out);
+            return status;
+        }
+        out->owns_fd = 1;
+        *result = out;
+        return RAYO_OK;
+    }
+    {
+        /* Replace the target of a symbolic link, not the link itself. */
+        char *resolved = realpath(path, NULL);
+        out->path = resolved ? resolved : strdup(path);
+        if (out->path == NULL) {
+            output_free(out);
+            return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
+                                  path);
+        }
+    }
+    status = open_temporary(out, stat(out->path, &st) == 0
+                                     ? (mode_t)(st.st_mode & 07777)
+                                     : new_file_mode(),
+                            err);
+    if (status != RAYO_OK) {
+        output_free(out);
+        return status;
+    }
+    *result = out;
+    return RAYO_OK;
+}
+
+static rayo_status write_all(rayo_output *out, const unsigned char *data,
+                             size_t size, rayo_error *err)
+{
+    while (size > 0) {
+        ssize_t n = write(out->fd, data, size);
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            return system_error(out, errno, err);
+        }
+        data += n;
+        size -= (size_t)n;
+    }
+    return RAYO_OK;
+}
+
+static rayo_status flush(rayo_output *out, rayo_error *err)
+{
+    rayo_status status = write_all(out, out->buffer, out->used, err);
+    out->used = 0;
+    return status;
+}
+
+rayo_status rayo_output_write(rayo_output *out, const void *data,
+                              size_t size, rayo_error *err)
+{
+    const unsigned char *bytes = data;
+    if (size <= sizeof out->buffer - out->used) {
+        memcpy(out->buffer + out->used, bytes, size);
+        out->used += size;
+        return RAYO_OK;
+    }
+    {
+        rayo_status status = flush(out, err);
+        if (status != RAYO_OK)
+            return status;
+    }
+    if (size >= sizeof out->buffer)
+        return write_all(out, bytes, size, err);
+    memcpy(out->buffer, bytes, size);
+    out->used = size;
+    return RAYO_OK;
+}
+
+rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
+{
+    rayo_status status = flush(out, err);
+    if (status == RAYO_OK && out->temp != NULL) {
+        if (fsync(out->fd) != 0 || close(out->fd) != 0) {
+            out->fd = -1;
+            status = system_error(out, errno, err);
+        } else {
+            out->fd = -1;
+            if (rename(out->temp, out->path) != 0)
+                status = system_error(out, errno, err);
+            else {
+                free(out->temp);
+                out->temp = NULL;
+            }
+        }
+    }
+    if (status != RAYO_OK) {
+        rayo_output_abort(out);
+        return status;
+    }
+    output_free(out);
+    return RAYO_OK;
+}
+
+void rayo_output_abort(rayo_output *out)
+{
+    if (out == NULL)
+        return;
+    if (out->temp != NULL)
+        unlink(out->temp);
+    output_free(out);
+}
+
+const char *rayo_output_name(const rayo_output *out)
+{
+    return out->display;
+}
+
+const char *rayo_output_temp_path(const rayo_output *out)
+{
+    return out->temp;
+}

@@ -1,0 +1,42 @@
+/*
+ * row.c - one row of pixels: the per-pixel loop of every shading mode.
+ *
+ * This is the only place that knows what a shading mode does with a hit;
+ * render.c only schedules rows.
+ */
+#include <string.h>
+
+#include "rayo/render.h"
+
+static void render_row_hit(const rayo_camera *camera, const rayo_scene *scene,
+                           uint32_t row, unsigned char *out)
+{
+    uint32_t i;
+    memset(out, 0, ((size_t)camera->width + 7) / 8);
+    for (i = 0; i < camera->width; i++) {
+        rayo_ray ray = rayo_camera_ray(camera, (double)i, (double)row);
+        if (rayo_scene_hit_any(scene, &ray, 0.0))
+            out[i >> 3] = (unsigned char)(out[i >> 3] | (0x80u >> (i & 7)));
+    }
+}
+
+void rayo_render_row(const rayo_camera *camera, const rayo_scene *scene,
+                     const rayo_render_options *options, uint32_t row,
+                     unsigned char *out)
+{
+    switch (options->shade) {
+    case RAYO_SHADE_HIT:
+        render_row_hit(camera, scene, row, out);
+        break;
+    }
+}
+
+rayo_image_info rayo_render_image_info(const rayo_camera *camera,
+                                       const rayo_render_options *options)
+{
+    switch (options->shade) {
+    case RAYO_SHADE_HIT:
+        break;
+    }
+    return rayo_image_info_bit(camera->width, camera->height);
+}
