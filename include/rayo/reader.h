@@ -1,0 +1,83 @@
+/*
+ * reader.h - reading Netpbm (PBM, PGM, PPM; plain and raw) and PNG files
+ * into a rayo_image.
+ *
+ * The format comes from the content's first bytes (P1-P6 or the PNG
+ * signature), never from the file's name.  What each format becomes:
+ *
+ *   P1, P4               RAYO_SAMPLE_BIT (1 = black)
+ *   P2, P5               1 channel, U8 when maxval <= 255, else U16
+ *   P3, P6               3 channels, U8 when maxval <= 255, else U16
+ *   PNG gray, 1 bit      RAYO_SAMPLE_BIT (so PBM -> PNG -> PBM round-trips)
+ *   PNG gray, 2/4/8 bit  1 channel U8, maxval 2^depth - 1 (3, 15, 255)
+ *   PNG gray, 16 bit     1 channel U16, maxval 65535
+ *   PNG palette          3 channels U8, maxval 255
+ *   PNG RGB              3 channels, U8 or U16
+ *   alpha (PNG gray+alpha, RGBA, tRNS)
+ *                        composited over white and dropped:
+ *                        v' = round((v a + M (M - a)) / M), M = maxval;
+ *                        low-depth gray with tRNS becomes 8-bit first
+ *
+ * Netpbm is read as its format pages say and as tolerantly as Netpbm's
+ * own tools: comments ('#' to the end of the line) anywhere in the
+ * header and, in plain rasters, between samples; any whitespace; maxval 1
+ * to 65535; 16-bit samples big-endian.  It is strict about the raster: a
+ * sample over maxval, a character other than a digit, whitespace or a
+ * comment in a plain raster, or a raster cut short is an error.  Bytes
+ * after the first image (a second image, a trailing newline, garbage) are
+ * accepted and counted in the report.
+ *
+ * PNG is read by libpng: every colour type and bit depth, interlaced or
+ * not; a CRC error in any chunk, a missing IEND or a truncated stream is
+ * an error.  Gamma and colour-space chunks are ignored (samples are taken
+ * as they are stored).
+ *
+ * Limits (limits.h) are checked before any pixel memory is requested:
+ * width and height, total pixels, and, for a regular file or memory, that
+ * there are enough bytes left for the raster the header promises.
+ *
+ * Errors: RAYO_ERR_FORMAT (malformed, truncated or lying input),
+ * RAYO_ERR_LIMIT (over a limit), RAYO_ERR_IO (the system refused a read),
+ * RAYO_ERR_NOMEM.  The message is one line: "FILE: byte N: found X;
+ * expected Y" (plain text positions also give the line).
+ */
+#ifndef RAYO_READER_H
+#define RAYO_READER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/image.h"
+#include "rayo/status.h"
+#include "rayo/writer.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct rayo_read_report {
+    rayo_format format;      /* RAYO_FORMAT_PBM/PGM/PPM/PNG, from the
+                                content's magic, not the name */
+    int plain;               /* Netpbm P1-P3 */
+    uint64_t trailing_bytes; /* bytes after the raster (accepted) */
+} rayo_read_report;
+
+/*
+ * Reads the image in path ("-" = standard input) into image, which the
+ * caller frees with rayo_image_free.  report may be NULL.  On failure
+ * image is left zeroed.
+ */
+rayo_status rayo_image_read_file(const char *path, rayo_image *image,
+                                 rayo_read_report *report, rayo_error *err);
+
+/* The same from size bytes at data; name is used in messages. */
+rayo_status rayo_image_read_memory(const void *data, size_t size,
+                                   const char *name, rayo_image *image,
+                                   rayo_read_report *report,
+                                   rayo_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,27 @@
+/*
+ * reader_impl.h - what the format readers share behind reader.h:
+ * reader.c recognises the format from the first bytes and hands the
+ * source to pnm_read.c or png_read.c.  Not a public header.
+ */
+#ifndef RAYO_READER_IMPL_H
+#define RAYO_READER_IMPL_H
+
+#include "rayo/reader.h"
+#include "read_source.h"
+
+/*
+ * Reads a Netpbm image whose magic "P<digit>" (digit '1'..'6') has been
+ * consumed; fills report->format, ->plain and leaves the cursor after
+ * the raster (and, for plain formats, after the whitespace that follows).
+ */
+rayo_status rayo_pnm_read(rayo_source *src, int digit, rayo_image *image,
+                          rayo_read_report *report, rayo_error *err);
+
+/*
+ * Reads a PNG image whose 8-byte signature has been consumed and checked;
+ * leaves the cursor after IEND.
+ */
+rayo_status rayo_png_read(rayo_source *src, rayo_image *image,
+                          rayo_error *err);
+
+#endif
