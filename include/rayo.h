@@ -26,5 +26,7 @@
 #include "rayo/image.h"
 #include "rayo/output.h"
 #include "rayo/writer.h"
+#include "rayo/reader.h"
+#include "rayo/image_convert.h"
 
 #endif
