@@ -22,6 +22,7 @@ enum {
 
 /* Subcommands: each takes its own argv (argv[0] is the subcommand name). */
 int cli_render(int argc, char **argv);
+int cli_convert(int argc, char **argv);
 
 /* Prints "rayo: MESSAGE" on stderr; returns CLI_EXIT_USAGE. */
 int cli_usage_error(const char *format, ...)

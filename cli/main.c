@@ -19,6 +19,7 @@ typedef struct subcommand {
 
 static const subcommand subcommands[] = {
     {"render", cli_render, "trace rays through a scene into an image (default)"},
+    {"convert", cli_convert, "convert an image between PBM, PGM, PPM and PNG"},
 };
 #define SUBCOMMAND_COUNT (sizeof subcommands / sizeof subcommands[0])
 

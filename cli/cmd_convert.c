@@ -1,0 +1,254 @@
+/*
+ * cmd_convert.c - `rayo convert IN OUT`: read any image rayo reads, write
+ * it in the format OUT's extension (or --format) names.
+ *
+ * The reading, the layout conversions and the writing are the library's
+ * (reader.h, image_convert.h, writer.h); this file picks the format,
+ * converts the layout when the target cannot hold it (colour or gray to
+ * PBM is thresholded at half the maximum, colour to PGM is luminance,
+ * bilevel or gray to PPM is repeated), and reports.  The output file is
+ * written only after the input was read whole, and appears whole or not
+ * at all.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <getopt.h>
+#include <string.h>
+
+#include "cli.h"
+
+typedef struct convert_request {
+    const char *input;
+    const char *output;
+    const char *format; /* NULL: from the output's name */
+    int plain;
+    int verbose;
+} convert_request;
+
+static void print_help(void)
+{
+    printf(
+        "usage: rayo convert [OPTIONS] IN OUT\n\n"
+        "Reads IN (PBM, PGM, PPM plain or raw, or PNG; the format is "
+        "recognised from\nthe content) and writes it to OUT in the format "
+        "of OUT's extension (.pbm,\n.pgm, .ppm, .png) or of --format.  "
+        "'-' is standard input or output.\n\n"
+        "When the target cannot hold the image as it is, it is converted:\n"
+        "  to PBM  black where the pixel is darker than half the maximum\n"
+        "          (colour: 2(299r+587g+114b) < 1000 maxval)\n"
+        "  to PGM  colour becomes its luminance (299r+587g+114b)/1000, "
+        "rounded;\n"
+        "          bilevel becomes 0 (black) and 255 (white)\n"
+        "  to PPM  gray is repeated in the three channels; bilevel as above\n"
+        "  to PNG  kept as it is (bilevel as 1-bit gray)\n"
+        "Transparent PNG pixels are composited over white.\n\n"
+        "options:\n"
+        "      --format FMT   pbm, pgm, ppm or png; needed for a '-' OUT "
+        "unless the\n"
+        "                     Netpbm format that holds the image as it is "
+        "will do\n"
+        "                     (PBM bilevel, PGM gray, PPM colour)\n"
+        "      --plain        plain Netpbm (P1-P3, ASCII) instead of raw "
+        "(P4-P6)\n"
+        "  -v, --verbose      on stderr: what was read (format, size, "
+        "maxval, bytes\n"
+        "                     after the image) and what was written\n"
+        "  -h, --help         this help\n\n"
+        "exit status: 0 success, 1 input/output failure, 2 bad options or "
+        "an\nunreadable, malformed or too large input (one line on stderr "
+        "names the file\nand where).  OUT is never left half-written.\n");
+}
+
+static int parse_request(int argc, char **argv, convert_request *req)
+{
+    static const struct option options[] = {
+        {"format", required_argument, NULL, 'F'},
+        {"plain", no_argument, NULL, 'p'},
+        {"verbose", no_argument, NULL, 'v'},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0}};
+    int c;
+    opterr = 0;
+    optind = 0;
+    while ((c = getopt_long(argc, argv, ":vh", options, NULL)) != -1) {
+        switch (c) {
+        case 'F':
+            req->format = optarg;
+            break;
+        case 'p':
+            req->plain = 1;
+            break;
+        case 'v':
+            req->verbose = 1;
+            break;
+        case 'h':
+            print_help();
+            return -1;
+        default:
+            return cli_bad_option(c, argv, optind);
+        }
+    }
+    if (argc - optind != 2)
+        return cli_usage_error("convert: expected IN and OUT, found %d "
+                               "argument%s; see 'rayo convert --help'",
+                               argc - optind, argc - optind == 1 ? "" : "s");
+    req->input = argv[optind];
+    req->output = argv[optind + 1];
+    return CLI_EXIT_OK;
+}
+
+/* info is NULL unless OUT is '-' without --format. */
+static int choose_format(const convert_request *req,
+                         const rayo_image_info *info, rayo_format *format)
+{
+    rayo_error err;
+    if (req->format != NULL) {
+        if (rayo_format_parse(req->format, format, &err) != RAYO_OK)
+            return cli_usage_error("--format: '%s' is not a format; expected "
+                                   "pbm, pgm, ppm or png",
+                                   req->format);
+    } else if (info != NULL) {
+        *format = rayo_format_netpbm_for(info);
+    } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
+        return cli_usage_error("convert: %s", err.message);
+    }
+    if (req->plain && *format == RAYO_FORMAT_PNG)
+        return cli_usage_error("--plain: applies only to PBM, PGM and PPM, "
+                               "not png");
+    if (strcmp(req->output, "-") == 0 && cli_stdout_is_terminal() &&
+        !req->plain)
+        return cli_usage_error("refusing to write binary %s to a terminal; "
+                               "give OUT, a pipe, or --plain",
+                               rayo_format_name(*format));
+    return CLI_EXIT_OK;
+}
+
+/* The image in a layout the format holds: converted into *converted, or
+   image itself when it already fits. */
+static rayo_status fit_layout(const rayo_image *image, rayo_format format,
+                              rayo_image *converted, const rayo_image **fit,
+                              rayo_error *err)
+{
+    const rayo_image_info *info = &image->info;
+    rayo_status status = RAYO_OK;
+    *fit = image;
+    switch (format) {
+    case RAYO_FORMAT_PBM:
+        if (info->sample != RAYO_SAMPLE_BIT)
+            status = rayo_image_to_bit(image, converted, err);
+        break;
+    case RAYO_FORMAT_PGM:
+        if (info->sample == RAYO_SAMPLE_BIT || info->channels != 1)
+            status = rayo_image_to_gray(image, converted, err);
+        break;
+    case RAYO_FORMAT_PPM:
+        if (info->channels != 3)
+            status = rayo_image_to_rgb(image, converted, err);
+        break;
+    case RAYO_FORMAT_PNG:
+        return RAYO_OK;
+    }
+    if (status == RAYO_OK && converted->pixels != NULL)
+        *fit = converted;
+    return status;
+}
+
+static const char *layout_name(const rayo_image_info *info)
+{
+    if (info->sample == RAYO_SAMPLE_BIT)
+        return "bilevel";
+    return info->channels == 1 ? "gray" : "RGB";
+}
+
+static void report_read(const convert_request *req, const rayo_image *image,
+                        const rayo_read_report *report)
+{
+    const rayo_image_info *info = &image->info;
+    fprintf(stderr, "rayo: %s: %s%s, %lux%lu, %s, maxval %u",
+            strcmp(req->input, "-") == 0 ? "standard input" : req->input,
+            report->format == RAYO_FORMAT_PNG ? "" : (report->plain ? "plain "
+                                                                     : "raw "),
+            rayo_format_name(report->format), (unsigned long)info->width,
+            (unsigned long)info->height, layout_name(info), info->maxval);
+    fprintf(stderr, "; %llu byte%s after the image%s\n",
+            (unsigned long long)report->trailing_bytes,
+            report->trailing_bytes == 1 ? "" : "s",
+            report->trailing_bytes ? " (ignored)" : "");
+}
+
+static void report_written(const convert_request *req, const rayo_image *fit,
+                           const rayo_write_options *options)
+{
+    fprintf(stderr, "rayo: %s: wrote %s%s, %s, maxval %u\n",
+            strcmp(req->output, "-") == 0 ? "standard output" : req->output,
+            options->format == RAYO_FORMAT_PNG
+                ? ""
+                : (options->plain ? "plain " : "raw "),
+            rayo_format_name(options->format), layout_name(&fit->info),
+            fit->info.maxval);
+}
+
+static rayo_status write_image(const convert_request *req,
+                               const rayo_image *fit,
+                               const rayo_write_options *options,
+                               rayo_error *err)
+{
+    rayo_output *out;
+    rayo_status status = rayo_output_open(&out, req->output, err);
+    if (status != RAYO_OK)
+        return status;
+    status = rayo_image_write(fit, out, options, err);
+    if (status != RAYO_OK) {
+        rayo_output_abort(out);
+        return status;
+    }
+    return rayo_output_commit(out, err);
+}
+
+/* Everything after the options: read, fit, write. */
+static int convert(const convert_request *req)
+{
+    rayo_image image, converted;
+    const rayo_image *fit;
+    rayo_read_report report;
+    rayo_write_options options;
+    rayo_error err;
+    int exit_status;
+    /* Only a '-' OUT without --format waits for the image to decide. */
+    int decided = req->format != NULL || strcmp(req->output, "-") != 0;
+    memset(&converted, 0, sizeof converted);
+    rayo_error_clear(&err);
+    options.plain = req->plain;
+    if (decided) {
+        exit_status = choose_format(req, NULL, &options.format);
+        if (exit_status != CLI_EXIT_OK)
+            return exit_status;
+    }
+    if (rayo_image_read_file(req->input, &image, &report, &err) != RAYO_OK)
+        return cli_report(&err);
+    if (req->verbose)
+        report_read(req, &image, &report);
+    exit_status = decided ? CLI_EXIT_OK
+                          : choose_format(req, &image.info, &options.format);
+    if (exit_status == CLI_EXIT_OK &&
+        (fit_layout(&image, options.format, &converted, &fit, &err) !=
+             RAYO_OK ||
+         write_image(req, fit, &options, &err) != RAYO_OK))
+        exit_status = cli_report(&err);
+    else if (exit_status == CLI_EXIT_OK && req->verbose)
+        report_written(req, fit, &options);
+    rayo_image_free(&converted);
+    rayo_image_free(&image);
+    return exit_status;
+}
+
+int cli_convert(int argc, char **argv)
+{
+    convert_request req;
+    int exit_status;
+    memset(&req, 0, sizeof req);
+    exit_status = parse_request(argc, argv, &req);
+    if (exit_status != CLI_EXIT_OK)
+        return exit_status < 0 ? CLI_EXIT_OK : exit_status;
+    return convert(&req);
+}
