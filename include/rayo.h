@@ -19,8 +19,11 @@
 #include "rayo/vec3.h"
 #include "rayo/ray.h"
 #include "rayo/sphere.h"
+#include "rayo/plane.h"
+#include "rayo/triangle.h"
 #include "rayo/camera.h"
 #include "rayo/scene.h"
+#include "rayo/scene_random.h"
 #include "rayo/render.h"
 
 #include "rayo/image.h"

@@ -17,6 +17,10 @@
 /* Largest number of objects in one scene. */
 #define RAYO_MAX_OBJECTS (1ul << 24)
 
+/* Largest number of materials and of lights in one scene. */
+#define RAYO_MAX_MATERIALS (1ul << 20)
+#define RAYO_MAX_LIGHTS 4096ul
+
 /* Largest number of rendering threads. */
 #define RAYO_MAX_THREADS 256u
 

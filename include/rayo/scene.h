@@ -1,18 +1,40 @@
 /*
- * scene.h - what the rays can hit.
+ * scene.h - what the rays can hit, what it is made of, and what lights it.
  *
- * A scene owns its objects.  It answers one question for the renderer:
- * does this ray meet anything, and where first.  It knows nothing of
- * pixels or cameras.
+ * A scene owns its objects (spheres, planes, triangles), its materials and
+ * its lights, plus an ambient light and a background colour.  It answers
+ * the renderer's two questions: what does this ray meet first (with the
+ * point, normal, object and material), and is anything in the way (shadow
+ * rays).  It knows nothing of pixels, cameras or shading formulas.
+ *
+ * Life cycle: create, add everything, rayo_scene_prepare (builds the
+ * bounding volume hierarchy), then query from any number of threads.
+ * Queries never modify the scene.  A scene that was never prepared, or
+ * that had an add after its last prepare (an add drops the hierarchy),
+ * answers every query by testing every object in turn: correct, slow on
+ * big scenes.  Benchmarks compare the two this way.
+ *
+ * Conventions (b2 and the shading code rely on these):
+ *   - object indices count every object in insertion order, whatever its
+ *     kind: the first sphere, plane or triangle added is object 0;
+ *   - material 0 exists in every scene: white, ka = kd = 1, ks = 0,
+ *     shininess 0, reflectivity 0; rayo_scene_add_sphere uses it;
+ *   - a hit's normal is unit length: for a sphere the outward normal
+ *     (P - C) / R, even when the ray starts inside; for a plane or a
+ *     triangle the side facing the ray (normal . direction <= 0);
+ *   - t ranges are open: t_min < t < t_max; pass INFINITY for no bound.
  */
 #ifndef RAYO_SCENE_H
 #define RAYO_SCENE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
+#include "rayo/plane.h"
 #include "rayo/ray.h"
 #include "rayo/sphere.h"
 #include "rayo/status.h"
+#include "rayo/triangle.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -20,24 +42,166 @@ extern "C" {
 
 typedef struct rayo_scene rayo_scene;
 
+typedef struct rayo_material {
+    rayo_vec3 color;     /* M, RGB, each in [0, 1] */
+    double ka, kd, ks;   /* ambient, diffuse, specular; finite, >= 0 */
+    double shininess;    /* Phong exponent; finite, >= 0 */
+    double reflectivity; /* mirror reflection, in [0, 1] */
+} rayo_material;
+
+typedef enum rayo_light_kind {
+    RAYO_LIGHT_DIRECTIONAL,
+    RAYO_LIGHT_POINT
+} rayo_light_kind;
+
+typedef struct rayo_light {
+    rayo_light_kind kind;
+    /* directional: direction TOWARDS the light (stored normalised);
+     * point: the light's position */
+    rayo_vec3 vector;
+    rayo_vec3 color; /* intensity per channel; finite, >= 0 (may be > 1) */
+} rayo_light;
+
+typedef enum rayo_object_kind {
+    RAYO_OBJECT_SPHERE,
+    RAYO_OBJECT_PLANE,
+    RAYO_OBJECT_TRIANGLE
+} rayo_object_kind;
+
+typedef struct rayo_hit {
+    double t;
+    rayo_vec3 point;  /* ray origin + t * direction */
+    rayo_vec3 normal; /* unit; see the conventions above */
+    size_t object;    /* index over all objects, in insertion order */
+    unsigned material;
+} rayo_hit;
+
+/* Counters a query adds to (rayo_scene_intersect_counted). */
+typedef struct rayo_scene_stats {
+    uint64_t rays;       /* queries answered */
+    uint64_t node_tests; /* ray-box tests against hierarchy nodes */
+    uint64_t prim_tests; /* ray-object intersection tests */
+} rayo_scene_stats;
+
+/* Passed as `skip` when no object is to be ignored. */
+#define RAYO_NO_OBJECT ((size_t)-1)
+
 rayo_status rayo_scene_create(rayo_scene **scene, rayo_error *err);
 
 /* Frees the scene and everything in it; NULL is allowed. */
 void rayo_scene_free(rayo_scene *scene);
 
 /*
- * Adds a sphere.  RAYO_ERR_INVALID when the centre is not finite or the
- * radius is not a finite number > 0; RAYO_ERR_LIMIT past RAYO_MAX_OBJECTS.
+ * Adds a material; *id receives its number (the first added is 1).
+ * RAYO_ERR_INVALID names the first field out of range; RAYO_ERR_LIMIT
+ * past RAYO_MAX_MATERIALS.
+ */
+rayo_status rayo_scene_add_material(rayo_scene *scene,
+                                    const rayo_material *material,
+                                    unsigned *id, rayo_error *err);
+
+/*
+ * Adds a sphere with material 0.  RAYO_ERR_INVALID when the centre is not
+ * finite or the radius is not a finite number > 0; RAYO_ERR_LIMIT past
+ * RAYO_MAX_OBJECTS.
  */
 rayo_status rayo_scene_add_sphere(rayo_scene *scene, rayo_vec3 center,
                                   double radius, rayo_error *err);
 
-size_t rayo_scene_sphere_count(const rayo_scene *scene);
+/* The same with a material; RAYO_ERR_INVALID for an unknown material. */
+rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,
+                                           rayo_vec3 center, double radius,
+                                           unsigned material,
+                                           rayo_error *err);
 
-/* The i-th sphere added, i < rayo_scene_sphere_count(). */
+/*
+ * Adds the plane through point with the given normal (any non-zero
+ * finite length; stored normalised).
+ */
+rayo_status rayo_scene_add_plane(rayo_scene *scene, rayo_vec3 point,
+                                 rayo_vec3 normal, unsigned material,
+                                 rayo_error *err);
+
+/* Adds a triangle; RAYO_ERR_INVALID when its corners are collinear. */
+rayo_status rayo_scene_add_triangle(rayo_scene *scene, rayo_vec3 a,
+                                    rayo_vec3 b, rayo_vec3 c,
+                                    unsigned material, rayo_error *err);
+
+/*
+ * Adds a light.  RAYO_ERR_INVALID for an unknown kind, a non-finite
+ * vector, a zero direction, or a negative or non-finite colour;
+ * RAYO_ERR_LIMIT past RAYO_MAX_LIGHTS.
+ */
+rayo_status rayo_scene_add_light(rayo_scene *scene, const rayo_light *light,
+                                 rayo_error *err);
+
+/* Ambient light (default 0, 0, 0) and background colour (default black);
+ * the caller validates the values. */
+void rayo_scene_set_ambient(rayo_scene *scene, rayo_vec3 ambient);
+rayo_vec3 rayo_scene_ambient(const rayo_scene *scene);
+void rayo_scene_set_background(rayo_scene *scene, rayo_vec3 colour);
+rayo_vec3 rayo_scene_background(const rayo_scene *scene);
+
+size_t rayo_scene_object_count(const rayo_scene *scene);
+rayo_object_kind rayo_scene_object_kind(const rayo_scene *scene, size_t i);
+size_t rayo_scene_sphere_count(const rayo_scene *scene);
+/* The i-th sphere added (counting spheres only), i < sphere count. */
 const rayo_sphere *rayo_scene_sphere(const rayo_scene *scene, size_t i);
 
-/* 1 when the ray (unit direction) meets some object at t > t_min. */
+size_t rayo_scene_light_count(const rayo_scene *scene);
+const rayo_light *rayo_scene_light(const rayo_scene *scene, size_t i);
+/* Number of materials, material 0 included (so at least 1). */
+size_t rayo_scene_material_count(const rayo_scene *scene);
+/* Material id; NULL when id >= rayo_scene_material_count(). */
+const rayo_material *rayo_scene_material(const rayo_scene *scene,
+                                         unsigned id);
+
+/*
+ * Builds the bounding volume hierarchy over the spheres and triangles
+ * (planes stay outside it).  Call after the last add and before
+ * rendering; calling it again rebuilds.  RAYO_ERR_NOMEM on failure, and
+ * the scene then keeps answering by brute force.
+ */
+rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err);
+
+/* 1 when rayo_scene_prepare built a hierarchy that is still current. */
+int rayo_scene_is_prepared(const rayo_scene *scene);
+
+/*
+ * The nearest hit with t_min < t < t_max, written to *hit; returns 1 if
+ * there is one, else 0 (and *hit is left alone).  Ties in t go to the
+ * lowest object index.  Sphere hits use rayo_sphere_intersect.
+ */
+int rayo_scene_intersect(const rayo_scene *scene, const rayo_ray *ray,
+                         double t_min, double t_max, rayo_hit *hit);
+
+/* The same, adding to *stats (never NULL) what the query cost. */
+int rayo_scene_intersect_counted(const rayo_scene *scene,
+                                 const rayo_ray *ray, double t_min,
+                                 double t_max, rayo_hit *hit,
+                                 rayo_scene_stats *stats);
+
+/*
+ * 1 when some object other than `skip` (RAYO_NO_OBJECT for none) is met
+ * with t_min < t < t_max: the shadow-ray test ("no OTHER sphere lies on
+ * the ray from P towards L": skip the object P lies on, t_max = INFINITY
+ * for a directional light, the distance to a point light otherwise).
+ * Stops at the first object found.
+ */
+int rayo_scene_occluded(const rayo_scene *scene, const rayo_ray *ray,
+                        double t_min, double t_max, size_t skip);
+
+/* The same, adding to *stats (never NULL). */
+int rayo_scene_occluded_counted(const rayo_scene *scene,
+                                const rayo_ray *ray, double t_min,
+                                double t_max, size_t skip,
+                                rayo_scene_stats *stats);
+
+/*
+ * 1 when the ray (unit direction) meets some object at t > t_min: the
+ * assignment's hit test, rayo_scene_occluded(scene, ray, t_min,
+ * INFINITY, RAYO_NO_OBJECT).
+ */
 int rayo_scene_hit_any(const rayo_scene *scene, const rayo_ray *ray,
                        double t_min);
 

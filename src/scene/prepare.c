@@ -1,0 +1,78 @@
+/*
+ * prepare.c - building the scene's bounding volume hierarchy.
+ *
+ * Spheres and triangles get padded boxes and their object indices as
+ * primitive numbers; planes, being unbounded, stay outside the tree and
+ * are tested one by one.  Building replaces any earlier tree; a failure
+ * leaves the scene unprepared (queries then fall back to testing every
+ * object), never half-built.
+ */
+#include "scene_impl.h"
+
+#include <stdlib.h>
+
+static rayo_box sphere_box(const rayo_sphere *s)
+{
+    rayo_box box;
+    box.lo[0] = s->center.x - s->radius;
+    box.lo[1] = s->center.y - s->radius;
+    box.lo[2] = s->center.z - s->radius;
+    box.hi[0] = s->center.x + s->radius;
+    box.hi[1] = s->center.y + s->radius;
+    box.hi[2] = s->center.z + s->radius;
+    rayo_box_pad(&box);
+    return box;
+}
+
+static rayo_box triangle_box(const rayo_triangle *t)
+{
+    rayo_box box;
+    box.lo[0] = fmin(t->a.x, fmin(t->b.x, t->c.x));
+    box.lo[1] = fmin(t->a.y, fmin(t->b.y, t->c.y));
+    box.lo[2] = fmin(t->a.z, fmin(t->b.z, t->c.z));
+    box.hi[0] = fmax(t->a.x, fmax(t->b.x, t->c.x));
+    box.hi[1] = fmax(t->a.y, fmax(t->b.y, t->c.y));
+    box.hi[2] = fmax(t->a.z, fmax(t->b.z, t->c.z));
+    rayo_box_pad(&box);
+    return box;
+}
+
+rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err)
+{
+    size_t n = scene->sphere_count + scene->triangle_count, k = 0, i;
+    rayo_box *boxes;
+    uint32_t *ids;
+    rayo_bvh *bvh;
+    rayo_status status;
+    rayo_bvh_free(scene->bvh);
+    scene->bvh = NULL;
+    if (n > SIZE_MAX / sizeof *boxes)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    boxes = malloc(n ? n * sizeof *boxes : 1);
+    ids = malloc(n ? n * sizeof *ids : 1);
+    if (boxes == NULL || ids == NULL) {
+        free(boxes);
+        free(ids);
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    }
+    for (i = 0; i < scene->sphere_count; i++, k++) {
+        boxes[k] = sphere_box(&scene->spheres[i].shape);
+        ids[k] = scene->spheres[i].object;
+    }
+    for (i = 0; i < scene->triangle_count; i++, k++) {
+        boxes[k] = triangle_box(&scene->triangles[i].shape);
+        ids[k] = scene->triangles[i].object;
+    }
+    status = rayo_bvh_build(&bvh, boxes, ids, n, err);
+    free(boxes);
+    free(ids);
+    if (status != RAYO_OK)
+        return status;
+    scene->bvh = bvh;
+    return RAYO_OK;
+}
+
+int rayo_scene_is_prepared(const rayo_scene *scene)
+{
+    return scene->bvh != NULL;
+}

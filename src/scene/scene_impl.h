@@ -1,0 +1,65 @@
+/*
+ * scene_impl.h - the inside of a rayo_scene, shared by the files of
+ * src/scene/ only (storage in scene.c, queries in query.c, the
+ * hierarchy's construction in prepare.c).
+ *
+ * Each kind of object has its own array; `objects` maps an object index
+ * (insertion order over all kinds) to its kind and its place in that
+ * array, and each entry of a kind's array records its object index and
+ * material back.
+ */
+#ifndef RAYO_SCENE_IMPL_H
+#define RAYO_SCENE_IMPL_H
+
+#include "rayo/scene.h"
+
+#include "../accel/bvh.h"
+
+typedef struct scene_sphere {
+    rayo_sphere shape;
+    uint32_t object;
+    uint32_t material;
+} scene_sphere;
+
+typedef struct scene_plane {
+    rayo_plane shape;
+    uint32_t object;
+    uint32_t material;
+} scene_plane;
+
+typedef struct scene_triangle {
+    rayo_triangle shape;
+    uint32_t object;
+    uint32_t material;
+} scene_triangle;
+
+typedef struct scene_object {
+    uint32_t kind; /* rayo_object_kind */
+    uint32_t index; /* in the kind's array */
+} scene_object;
+
+struct rayo_scene {
+    scene_object *objects;
+    size_t object_count, object_capacity;
+    scene_sphere *spheres;
+    size_t sphere_count, sphere_capacity;
+    scene_plane *planes;
+    size_t plane_count, plane_capacity;
+    scene_triangle *triangles;
+    size_t triangle_count, triangle_capacity;
+    rayo_material *materials;
+    size_t material_count, material_capacity;
+    rayo_light *lights;
+    size_t light_count, light_capacity;
+    rayo_vec3 ambient, background;
+    rayo_bvh *bvh; /* NULL unless prepared since the last add */
+};
+
+/*
+ * Tests object `object` against the ray; its t with t_min < t < t_max,
+ * or INFINITY.
+ */
+double rayo_scene_object_t(const rayo_scene *scene, uint32_t object,
+                           const rayo_ray *ray, double t_min, double t_max);
+
+#endif
