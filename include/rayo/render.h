@@ -23,9 +23,28 @@
 extern "C" {
 #endif
 
+/* The shading models; docs/shading.md gives each formula. */
 typedef enum rayo_shade_mode {
-    RAYO_SHADE_HIT /* bilevel: black (1) where the ray hits anything */
+    RAYO_SHADE_HIT,          /* bilevel: black (1) where the ray hits */
+    RAYO_SHADE_COURSE_GRAY,  /* gray: the course's scene 2 model, exactly */
+    RAYO_SHADE_COURSE_COLOR, /* RGB: the course's scene 3 model, exactly */
+    RAYO_SHADE_PHONG         /* RGB: ambient, diffuse, specular, shadows,
+                                mirror reflections */
 } rayo_shade_mode;
+
+/*
+ * "hit", "course-gray", "course-color" or "phong" into *mode;
+ * RAYO_ERR_INVALID (naming the accepted names) for anything else.
+ */
+rayo_status rayo_shade_mode_parse(const char *name, rayo_shade_mode *mode,
+                                  rayo_error *err);
+
+/* The name rayo_shade_mode_parse accepts for mode. */
+const char *rayo_shade_mode_name(rayo_shade_mode mode);
+
+/* Largest --samples N (N x N rays per pixel) and reflection depth. */
+#define RAYO_MAX_SAMPLES 16u
+#define RAYO_MAX_DEPTH 64u
 
 /*
  * Called on the rendering thread after each delivered band; return
@@ -37,12 +56,15 @@ typedef int (*rayo_progress_fn)(void *context, uint32_t rows_done,
 
 typedef struct rayo_render_options {
     rayo_shade_mode shade;
+    unsigned samples; /* N: N x N stratified rays per pixel; default 1 */
+    unsigned depth;   /* phong: mirror bounces followed; default 5 */
     unsigned threads; /* 0: one per online CPU */
     rayo_progress_fn progress; /* may be NULL */
     void *progress_context;
 } rayo_render_options;
 
-/* Hit shading, one thread per CPU, no progress callback. */
+/* Hit shading, 1 sample, depth 5, one thread per CPU, no progress
+ * callback. */
 void rayo_render_options_init(rayo_render_options *options);
 
 /* The layout of the rows this camera and shading mode produce. */

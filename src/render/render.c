@@ -56,6 +56,8 @@ unsigned rayo_cpu_count(void)
 void rayo_render_options_init(rayo_render_options *options)
 {
     options->shade = RAYO_SHADE_HIT;
+    options->samples = 1;
+    options->depth = 5;
     options->threads = 0;
     options->progress = NULL;
     options->progress_context = NULL;

@@ -8,6 +8,8 @@
 
 #include "rayo/render.h"
 
+#include "shade.h"
+
 static void render_row_hit(const rayo_camera *camera, const rayo_scene *scene,
                            uint32_t row, unsigned char *out)
 {
@@ -26,7 +28,15 @@ void rayo_render_row(const rayo_camera *camera, const rayo_scene *scene,
 {
     switch (options->shade) {
     case RAYO_SHADE_HIT:
-        render_row_hit(camera, scene, row, out);
+        if (options->samples > 1)
+            rayo_render_row_shaded(camera, scene, options, row, out);
+        else
+            render_row_hit(camera, scene, row, out);
+        break;
+    case RAYO_SHADE_COURSE_GRAY:
+    case RAYO_SHADE_COURSE_COLOR:
+    case RAYO_SHADE_PHONG:
+        rayo_render_row_shaded(camera, scene, options, row, out);
         break;
     }
 }
@@ -37,6 +47,11 @@ rayo_image_info rayo_render_image_info(const rayo_camera *camera,
     switch (options->shade) {
     case RAYO_SHADE_HIT:
         break;
+    case RAYO_SHADE_COURSE_GRAY:
+        return rayo_image_info_gray8(camera->width, camera->height);
+    case RAYO_SHADE_COURSE_COLOR:
+    case RAYO_SHADE_PHONG:
+        return rayo_image_info_rgb8(camera->width, camera->height);
     }
     return rayo_image_info_bit(camera->width, camera->height);
 }

@@ -1,0 +1,45 @@
+/*
+ * shade.h - the shading models behind rayo_shade_mode, as functions from
+ * a ray to the light it brings back, and the sampled row loop that uses
+ * them.  Private to the library.
+ *
+ * Each model lives in a file of its own (shade_course_gray.c,
+ * shade_course_color.c, shade_phong.c) and knows nothing of pixels or
+ * bytes; row_shaded.c turns their values into samples of a row.
+ * docs/shading.md gives the formulas.
+ */
+#ifndef RAYO_SHADE_H
+#define RAYO_SHADE_H
+
+#include <stdint.h>
+
+#include "rayo/render.h"
+
+/*
+ * The course's scene 2 model: a gray level in 0..255 (already clamped
+ * to 255, not yet truncated), the same in all three components.
+ */
+rayo_vec3 rayo_shade_course_gray(const rayo_scene *scene,
+                                 const rayo_ray *ray);
+
+/* The course's scene 3 model: RGB, each channel clamped to 1. */
+rayo_vec3 rayo_shade_course_color(const rayo_scene *scene,
+                                  const rayo_ray *ray);
+
+/*
+ * The general model: RGB, not clamped, following mirror reflections for
+ * at most depth bounces.
+ */
+rayo_vec3 rayo_shade_phong(const rayo_scene *scene, const rayo_ray *ray,
+                           unsigned depth);
+
+/*
+ * One row of any mode with options->samples x options->samples rays per
+ * pixel (hit mode: black where at least half of them hit).
+ */
+void rayo_render_row_shaded(const rayo_camera *camera,
+                            const rayo_scene *scene,
+                            const rayo_render_options *options,
+                            uint32_t row, unsigned char *out);
+
+#endif

@@ -1,0 +1,782 @@
+/*
+ * scene_file.c - the grammar of scene files (docs/scene-format.md): one
+ * statement per line, a keyword and its values, turned into calls on the
+ * scene (scene.h) and a camera description (camera_spec.h).
+ *
+ * Each statement has a small function; they share helpers that read one
+ * number, a vector or a colour and say precisely what they found and what
+ * they expected.  Errors from the scene itself (too many objects,
+ * collinear triangle corners) are re-issued with the file, line and
+ * column of the statement.  Splitting text into words is scene_lexer.c's
+ * job; reading the file from disk is scene_file_load.c's.
+ */
+#include "rayo/scene_file.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "rayo/limits.h"
+#include "scene_lexer.h"
+
+typedef struct material_name {
+    char text[RAYO_SCENE_MAX_NAME + 1];
+    unsigned id;
+    unsigned long line;
+} material_name;
+
+typedef struct parser {
+    scene_lexer lx;
+    rayo_scene_file *file;
+    material_name *names;
+    size_t name_count, name_capacity, last_found;
+    unsigned long camera_line, shade_line, samples_line, depth_line;
+    unsigned long ambient_line, background_line;
+} parser;
+
+#define WORD_SHOW 48
+
+/* The word in quotes, printable, for messages. */
+static const char *quoted(const scene_word *word, char *buffer, size_t size)
+{
+    char shown[WORD_SHOW];
+    snprintf(buffer, size, "'%s'",
+             scene_word_show(word, shown, sizeof shown));
+    return buffer;
+}
+
+/* "found 'word'" or "found the end of the line" into buffer. */
+static const char *found(const scene_word *word, int have, char *buffer,
+                         size_t size)
+{
+    char q[WORD_SHOW + 4];
+    if (!have)
+        snprintf(buffer, size, "found the end of the line");
+    else
+        snprintf(buffer, size, "found %s", quoted(word, q, sizeof q));
+    return buffer;
+}
+
+/* Reads a word that must be there; what names the value expected. */
+static rayo_status need_word(parser *p, scene_word *word, const char *what)
+{
+    char text[WORD_SHOW + 32];
+    size_t column = scene_lexer_column(&p->lx);
+    if (scene_lexer_word(&p->lx, word))
+        return RAYO_OK;
+    return scene_lexer_fail(&p->lx, column, RAYO_ERR_FORMAT, "%s; expected %s",
+                            found(word, 0, text, sizeof text), what);
+}
+
+static int word_to_double(const scene_word *word, double *value)
+{
+    char buffer[64];
+    char *end;
+    if (word->length == 0 || word->length >= sizeof buffer)
+        return 0;
+    memcpy(buffer, word->text, word->length);
+    buffer[word->length] = '\0';
+    errno = 0;
+    *value = strtod(buffer, &end);
+    return *end == '\0' && end != buffer && isfinite(*value);
+}
+
+/* One number; what names it ("the sphere's radius"). */
+static rayo_status need_number(parser *p, const char *what, double *value,
+                               size_t *column)
+{
+    scene_word word;
+    char text[WORD_SHOW + 32];
+    rayo_status status = need_word(p, &word, what);
+    if (status != RAYO_OK)
+        return status;
+    if (column != NULL)
+        *column = word.column;
+    if (!word_to_double(&word, value))
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                "%s; expected %s (a finite number)",
+                                found(&word, 1, text, sizeof text), what);
+    if (fabs(*value) > RAYO_SCENE_MAX_NUMBER)
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_LIMIT,
+                                "%s is out of range; expected %s between "
+                                "-1e12 and 1e12",
+                                quoted(&word, text, sizeof text), what);
+    return RAYO_OK;
+}
+
+/* Three numbers: the x, y and z of what ("the sphere's centre"). */
+static rayo_status need_vector(parser *p, const char *what, rayo_vec3 *v,
+                               size_t *column)
+{
+    static const char axes[3] = {'x', 'y', 'z'};
+    double c[3];
+    int i;
+    for (i = 0; i < 3; i++) {
+        char label[128];
+        rayo_status status;
+        snprintf(label, sizeof label, "the %c of %s", axes[i], what);
+        status = need_number(p, label, &c[i], i == 0 ? column : NULL);
+        if (status != RAYO_OK)
+            return status;
+    }
+    *v = rayo_vec3_make(c[0], c[1], c[2]);
+    return RAYO_OK;
+}
+
+/* A vector that must not be zero (a direction or a normal). */
+static rayo_status need_direction(parser *p, const char *what, rayo_vec3 *v)
+{
+    size_t column = 0;
+    rayo_status status = need_vector(p, what, v, &column);
+    if (status != RAYO_OK)
+        return status;
+    if (v->x == 0.0 && v->y == 0.0 && v->z == 0.0)
+        return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
+                                "%s 0 0 0 has zero length; expected a "
+                                "non-zero vector",
+                                what);
+    return RAYO_OK;
+}
+
+/* A number in [min, max]. */
+static rayo_status need_ranged(parser *p, const char *what, double min,
+                               double max, double *value)
+{
+    size_t column = 0;
+    rayo_status status = need_number(p, what, value, &column);
+    if (status != RAYO_OK)
+        return status;
+    if (*value < min || *value > max) {
+        if (max >= RAYO_SCENE_MAX_NUMBER)
+            return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
+                                    "%s %g is not accepted; expected a "
+                                    "number >= %g",
+                                    what, *value, min);
+        return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
+                                "%s %g is not accepted; expected a number "
+                                "from %g to %g",
+                                what, *value, min, max);
+    }
+    return RAYO_OK;
+}
+
+/* A whole number in [min, max]. */
+static rayo_status need_count(parser *p, const char *what, unsigned long min,
+                              unsigned long max, unsigned long *value)
+{
+    size_t column = 0;
+    double v;
+    rayo_status status = need_number(p, what, &v, &column);
+    if (status != RAYO_OK)
+        return status;
+    if (v != floor(v))
+        return scene_lexer_fail(&p->lx, column, RAYO_ERR_FORMAT,
+                                "%s %g is not a whole number; expected %lu "
+                                "to %lu",
+                                what, v, min, max);
+    if (v < (double)min || v > (double)max)
+        return scene_lexer_fail(&p->lx, column, RAYO_ERR_LIMIT,
+                                "%s %g is out of range; expected %lu to %lu",
+                                what, v, min, max);
+    *value = (unsigned long)v;
+    return RAYO_OK;
+}
+
+/*
+ * A colour: one number (a gray, copied to all three channels) or three.
+ * Each channel must lie in [0, max].
+ */
+static rayo_status need_color(parser *p, const char *what, double max,
+                              rayo_vec3 *color)
+{
+    double c[3];
+    int i;
+    rayo_status status = need_ranged(p, what, 0.0, max, &c[0]);
+    if (status != RAYO_OK)
+        return status;
+    {
+        scene_word next;
+        scene_lexer save = p->lx;
+        double probe;
+        if (!scene_lexer_word(&p->lx, &next) ||
+            !word_to_double(&next, &probe)) {
+            p->lx = save;
+            *color = rayo_vec3_make(c[0], c[0], c[0]);
+            return RAYO_OK;
+        }
+        p->lx = save;
+    }
+    for (i = 1; i < 3; i++) {
+        status = need_ranged(p, what, 0.0, max, &c[i]);
+        if (status != RAYO_OK)
+            return status;
+    }
+    *color = rayo_vec3_make(c[0], c[1], c[2]);
+    return RAYO_OK;
+}
+
+static rayo_status need_end(parser *p, const char *statement,
+                            const char *options)
+{
+    scene_word word;
+    char text[WORD_SHOW + 32];
+    if (!scene_lexer_word(&p->lx, &word))
+        return RAYO_OK;
+    return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                            "%s; expected %s%sthe end of the '%s' line",
+                            found(&word, 1, text, sizeof text),
+                            options ? options : "", options ? " or " : "",
+                            statement);
+}
+
+/* A statement that may appear once: fails on the second. */
+static rayo_status once(parser *p, unsigned long *line, const char *keyword)
+{
+    if (*line != 0)
+        return scene_lexer_fail(&p->lx, 1, RAYO_ERR_INVALID,
+                                "a second '%s' line; expected one (the "
+                                "first is on line %lu)",
+                                keyword, *line);
+    *line = p->lx.line;
+    return RAYO_OK;
+}
+
+/* Re-issues a scene error at the statement's first column. */
+static rayo_status scene_failed(parser *p, const rayo_error *inner)
+{
+    char copy[RAYO_ERROR_MESSAGE_SIZE];
+    memcpy(copy, inner->message, sizeof copy);
+    return scene_lexer_fail(&p->lx, 1, inner->status, "%s", copy);
+}
+
+/* ---- camera ---------------------------------------------------------- */
+
+static rayo_status camera_size(parser *p, rayo_camera_spec *spec,
+                               const scene_word *key)
+{
+    unsigned long v;
+    rayo_status status;
+    if (scene_word_is(key, "size") || scene_word_is(key, "width")) {
+        status = need_count(p, "the image width", 1, RAYO_MAX_DIMENSION, &v);
+        if (status != RAYO_OK)
+            return status;
+        spec->width = (uint32_t)v;
+    }
+    if (scene_word_is(key, "size") || scene_word_is(key, "height")) {
+        status =
+            need_count(p, "the image height", 1, RAYO_MAX_DIMENSION, &v);
+        if (status != RAYO_OK)
+            return status;
+        spec->height = (uint32_t)v;
+    }
+    return RAYO_OK;
+}
+
+static rayo_status camera_field(parser *p, rayo_camera_spec *spec,
+                                const scene_word *key)
+{
+    if (scene_word_is(key, "size") || scene_word_is(key, "width") ||
+        scene_word_is(key, "height"))
+        return camera_size(p, spec, key);
+    if (scene_word_is(key, "fov")) {
+        size_t column = 0;
+        rayo_status status = need_number(p, "the field of view in degrees",
+                                         &spec->fov_degrees, &column);
+        if (status == RAYO_OK &&
+            !(spec->fov_degrees > 0.0 && spec->fov_degrees < 180.0))
+            return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
+                                    "field of view %g is not accepted; "
+                                    "expected degrees strictly between 0 "
+                                    "and 180",
+                                    spec->fov_degrees);
+        return status;
+    }
+    if (scene_word_is(key, "origin"))
+        return need_vector(p, "the camera origin", &spec->origin, NULL);
+    if (scene_word_is(key, "look-at")) {
+        spec->aimed = 1;
+        return need_vector(p, "the look-at point", &spec->look_at, NULL);
+    }
+    if (scene_word_is(key, "up")) {
+        spec->aimed = 1;
+        return need_direction(p, "the up vector", &spec->up);
+    }
+    {
+        char text[WORD_SHOW + 32];
+        return scene_lexer_fail(&p->lx, key->column, RAYO_ERR_FORMAT,
+                                "%s; expected size, width, height, fov, "
+                                "origin, look-at, up or the end of the "
+                                "'camera' line",
+                                found(key, 1, text, sizeof text));
+    }
+}
+
+static rayo_status parse_camera(parser *p)
+{
+    rayo_camera_spec *spec = &p->file->camera;
+    rayo_camera camera;
+    rayo_error inner;
+    scene_word key;
+    rayo_status status = once(p, &p->camera_line, "camera");
+    if (status != RAYO_OK)
+        return status;
+    while (scene_lexer_word(&p->lx, &key)) {
+        status = camera_field(p, spec, &key);
+        if (status != RAYO_OK)
+            return status;
+    }
+    p->file->camera_given = 1;
+    if ((uint64_t)spec->width * spec->height > RAYO_MAX_PIXELS)
+        return scene_lexer_fail(&p->lx, 1, RAYO_ERR_LIMIT,
+                                "%lux%lu is too many pixels; expected at "
+                                "most 2^30",
+                                (unsigned long)spec->width,
+                                (unsigned long)spec->height);
+    if (rayo_camera_spec_build(spec, &camera, &inner) != RAYO_OK)
+        return scene_failed(p, &inner);
+    return RAYO_OK;
+}
+
+/* ---- render settings ------------------------------------------------- */
+
+static rayo_status parse_shade(parser *p)
+{
+    scene_word word;
+    char name[32], text[WORD_SHOW + 32];
+    rayo_status status = once(p, &p->shade_line, "shade");
+    if (status == RAYO_OK)
+        status = need_word(p, &word, "a shading mode (hit, course-gray, "
+                                     "course-color or phong)");
+    if (status != RAYO_OK)
+        return status;
+    if (word.length < sizeof name) {
+        memcpy(name, word.text, word.length);
+        name[word.length] = '\0';
+    } else {
+        name[0] = '\0';
+    }
+    if (rayo_shade_mode_parse(name, &p->file->shade, NULL) != RAYO_OK)
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                "%s; expected a shading mode: hit, "
+                                "course-gray, course-color or phong",
+                                found(&word, 1, text, sizeof text));
+    p->file->shade_given = 1;
+    return need_end(p, "shade", NULL);
+}
+
+static rayo_status parse_samples(parser *p)
+{
+    unsigned long v = 0;
+    rayo_status status = once(p, &p->samples_line, "samples");
+    if (status == RAYO_OK)
+        status = need_count(p, "the samples per pixel side", 1,
+                            RAYO_MAX_SAMPLES, &v);
+    if (status != RAYO_OK)
+        return status;
+    p->file->samples = (unsigned)v;
+    return need_end(p, "samples", NULL);
+}
+
+static rayo_status parse_depth(parser *p)
+{
+    unsigned long v = 0;
+    rayo_status status = once(p, &p->depth_line, "depth");
+    if (status == RAYO_OK)
+        status = need_count(p, "the reflection depth", 0, RAYO_MAX_DEPTH, &v);
+    if (status != RAYO_OK)
+        return status;
+    p->file->depth = (unsigned)v;
+    return need_end(p, "depth", NULL);
+}
+
+static rayo_status parse_background(parser *p)
+{
+    rayo_vec3 c;
+    rayo_status status = once(p, &p->background_line, "background");
+    if (status == RAYO_OK)
+        status = need_color(p, "the background colour", RAYO_SCENE_MAX_NUMBER,
+                            &c);
+    if (status != RAYO_OK)
+        return status;
+    rayo_scene_set_background(p->file->scene, c);
+    return need_end(p, "background", NULL);
+}
+
+static rayo_status parse_ambient(parser *p)
+{
+    rayo_vec3 c;
+    rayo_status status = once(p, &p->ambient_line, "ambient");
+    if (status == RAYO_OK)
+        status = need_color(p, "the ambient light", RAYO_SCENE_MAX_NUMBER, &c);
+    if (status != RAYO_OK)
+        return status;
+    rayo_scene_set_ambient(p->file->scene, c);
+    return need_end(p, "ambient", NULL);
+}
+
+/* ---- lights ---------------------------------------------------------- */
+
+static rayo_status parse_light(parser *p)
+{
+    rayo_light light;
+    scene_word word;
+    rayo_error inner;
+    char text[WORD_SHOW + 32];
+    rayo_status status =
+        need_word(p, &word, "the kind of light (directional or point)");
+    if (status != RAYO_OK)
+        return status;
+    if (scene_word_is(&word, "directional")) {
+        light.kind = RAYO_LIGHT_DIRECTIONAL;
+        status = need_direction(p, "the direction towards the light",
+                                &light.vector);
+    } else if (scene_word_is(&word, "point")) {
+        light.kind = RAYO_LIGHT_POINT;
+        status = need_vector(p, "the light's position", &light.vector, NULL);
+    } else {
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                "%s; expected the kind of light "
+                                "(directional or point)",
+                                found(&word, 1, text, sizeof text));
+    }
+    if (status != RAYO_OK)
+        return status;
+    light.color = rayo_vec3_make(1, 1, 1);
+    if (scene_lexer_word(&p->lx, &word)) {
+        if (!scene_word_is(&word, "color"))
+            return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                    "%s; expected 'color' or the end of the "
+                                    "'light' line",
+                                    found(&word, 1, text, sizeof text));
+        status = need_color(p, "the light's colour", RAYO_SCENE_MAX_NUMBER,
+                            &light.color);
+        if (status != RAYO_OK)
+            return status;
+    }
+    status = need_end(p, "light", NULL);
+    if (status != RAYO_OK)
+        return status;
+    if (rayo_scene_add_light(p->file->scene, &light, &inner) != RAYO_OK)
+        return scene_failed(p, &inner);
+    return RAYO_OK;
+}
+
+/* ---- materials ------------------------------------------------------- */
+
+static int valid_name(const scene_word *word)
+{
+    size_t i;
+    unsigned char c0 = (unsigned char)word->text[0];
+    if (word->length > RAYO_SCENE_MAX_NAME ||
+        !((c0 >= 'a' && c0 <= 'z') || (c0 >= 'A' && c0 <= 'Z') || c0 == '_'))
+        return 0;
+    for (i = 1; i < word->length; i++) {
+        unsigned char c = (unsigned char)word->text[i];
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+              (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.'))
+            return 0;
+    }
+    return 1;
+}
+
+static material_name *find_name(parser *p, const scene_word *word)
+{
+    size_t i;
+    if (p->last_found < p->name_count) {
+        material_name *m = &p->names[p->last_found];
+        if (strlen(m->text) == word->length &&
+            memcmp(m->text, word->text, word->length) == 0)
+            return m;
+    }
+    for (i = 0; i < p->name_count; i++) {
+        material_name *m = &p->names[i];
+        if (strlen(m->text) == word->length &&
+            memcmp(m->text, word->text, word->length) == 0) {
+            p->last_found = i;
+            return m;
+        }
+    }
+    return NULL;
+}
+
+static rayo_status remember_name(parser *p, const scene_word *word,
+                                 unsigned id)
+{
+    material_name *m;
+    if (p->name_count == p->name_capacity) {
+        size_t capacity = p->name_capacity ? 2 * p->name_capacity : 16;
+        material_name *grown;
+        if (capacity > (size_t)-1 / sizeof *grown)
+            return scene_lexer_fail(&p->lx, 1, RAYO_ERR_NOMEM,
+                                    "out of memory for material names");
+        grown = realloc(p->names, capacity * sizeof *grown);
+        if (grown == NULL)
+            return scene_lexer_fail(&p->lx, 1, RAYO_ERR_NOMEM,
+                                    "out of memory for material names");
+        p->names = grown;
+        p->name_capacity = capacity;
+    }
+    m = &p->names[p->name_count++];
+    memcpy(m->text, word->text, word->length);
+    m->text[word->length] = '\0';
+    m->id = id;
+    m->line = p->lx.line;
+    return RAYO_OK;
+}
+
+static rayo_status material_field(parser *p, rayo_material *m,
+                                  const scene_word *key)
+{
+    char text[WORD_SHOW + 32];
+    if (scene_word_is(key, "color"))
+        return need_color(p, "the material's colour", 1.0, &m->color);
+    if (scene_word_is(key, "ka"))
+        return need_ranged(p, "ka", 0.0, RAYO_SCENE_MAX_NUMBER, &m->ka);
+    if (scene_word_is(key, "kd"))
+        return need_ranged(p, "kd", 0.0, RAYO_SCENE_MAX_NUMBER, &m->kd);
+    if (scene_word_is(key, "ks"))
+        return need_ranged(p, "ks", 0.0, RAYO_SCENE_MAX_NUMBER, &m->ks);
+    if (scene_word_is(key, "shininess"))
+        return need_ranged(p, "the shininess", 0.0, RAYO_SCENE_MAX_NUMBER,
+                           &m->shininess);
+    if (scene_word_is(key, "reflect"))
+        return need_ranged(p, "the reflectivity", 0.0, 1.0,
+                           &m->reflectivity);
+    return scene_lexer_fail(&p->lx, key->column, RAYO_ERR_FORMAT,
+                            "%s; expected color, ka, kd, ks, shininess, "
+                            "reflect or the end of the 'material' line",
+                            found(key, 1, text, sizeof text));
+}
+
+static rayo_status parse_material(parser *p)
+{
+    rayo_material m;
+    scene_word name, key;
+    rayo_error inner;
+    material_name *known;
+    unsigned id;
+    char text[WORD_SHOW + 32];
+    rayo_status status = need_word(p, &name, "a material name");
+    if (status != RAYO_OK)
+        return status;
+    if (!valid_name(&name))
+        return scene_lexer_fail(&p->lx, name.column, RAYO_ERR_FORMAT,
+                                "%s; expected a material name (a letter or "
+                                "'_', then letters, digits, '_', '-' or "
+                                "'.'; at most %u bytes)",
+                                found(&name, 1, text, sizeof text),
+                                RAYO_SCENE_MAX_NAME);
+    known = find_name(p, &name);
+    if (known != NULL)
+        return scene_lexer_fail(&p->lx, name.column, RAYO_ERR_INVALID,
+                                "material '%s' is defined again; expected a "
+                                "new name (the first is on line %lu)",
+                                known->text, known->line);
+    m.color = rayo_vec3_make(1, 1, 1);
+    m.ka = 1.0;
+    m.kd = 1.0;
+    m.ks = 0.0;
+    m.shininess = 32.0;
+    m.reflectivity = 0.0;
+    while (scene_lexer_word(&p->lx, &key)) {
+        status = material_field(p, &m, &key);
+        if (status != RAYO_OK)
+            return status;
+    }
+    if (rayo_scene_add_material(p->file->scene, &m, &id, &inner) != RAYO_OK)
+        return scene_failed(p, &inner);
+    return remember_name(p, &name, id);
+}
+
+/* ---- objects --------------------------------------------------------- */
+
+/* The optional "material NAME" at the end of an object's line. */
+static rayo_status object_material(parser *p, const char *statement,
+                                   unsigned *id)
+{
+    scene_word word;
+    material_name *m;
+    char text[WORD_SHOW + 32];
+    rayo_status status;
+    *id = 0;
+    if (!scene_lexer_word(&p->lx, &word))
+        return RAYO_OK;
+    if (!scene_word_is(&word, "material"))
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                "%s; expected 'material' or the end of the "
+                                "'%s' line",
+                                found(&word, 1, text, sizeof text),
+                                statement);
+    status = need_word(p, &word, "a material name");
+    if (status != RAYO_OK)
+        return status;
+    m = find_name(p, &word);
+    if (m == NULL)
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_INVALID,
+                                "unknown material %s; expected a name "
+                                "defined on an earlier 'material' line",
+                                quoted(&word, text, sizeof text));
+    *id = m->id;
+    return need_end(p, statement, NULL);
+}
+
+static rayo_status parse_sphere(parser *p)
+{
+    rayo_vec3 center;
+    double radius;
+    size_t column = 0;
+    unsigned material;
+    rayo_error inner;
+    rayo_status status = need_vector(p, "the sphere's centre", &center, NULL);
+    if (status == RAYO_OK)
+        status = need_number(p, "the sphere's radius", &radius, &column);
+    if (status != RAYO_OK)
+        return status;
+    if (!(radius > 0.0))
+        return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
+                                "radius %g is not accepted; expected a "
+                                "number > 0",
+                                radius);
+    status = object_material(p, "sphere", &material);
+    if (status != RAYO_OK)
+        return status;
+    if (rayo_scene_add_sphere_material(p->file->scene, center, radius,
+                                       material, &inner) != RAYO_OK)
+        return scene_failed(p, &inner);
+    return RAYO_OK;
+}
+
+static rayo_status parse_plane(parser *p)
+{
+    rayo_vec3 point, normal;
+    unsigned material;
+    rayo_error inner;
+    rayo_status status = need_vector(p, "a point of the plane", &point, NULL);
+    if (status == RAYO_OK)
+        status = need_direction(p, "the plane's normal", &normal);
+    if (status == RAYO_OK)
+        status = object_material(p, "plane", &material);
+    if (status != RAYO_OK)
+        return status;
+    if (rayo_scene_add_plane(p->file->scene, point, normal, material,
+                             &inner) != RAYO_OK)
+        return scene_failed(p, &inner);
+    return RAYO_OK;
+}
+
+static rayo_status parse_triangle(parser *p)
+{
+    rayo_vec3 a, b, c;
+    unsigned material;
+    rayo_error inner;
+    rayo_triangle t;
+    rayo_status status = need_vector(p, "the first corner", &a, NULL);
+    if (status == RAYO_OK)
+        status = need_vector(p, "the second corner", &b, NULL);
+    if (status == RAYO_OK)
+        status = need_vector(p, "the third corner", &c, NULL);
+    if (status != RAYO_OK)
+        return status;
+    t.a = a;
+    t.b = b;
+    t.c = c;
+    if (!rayo_triangle_is_valid(&t))
+        return scene_lexer_fail(&p->lx, 1, RAYO_ERR_INVALID,
+                                "the triangle's corners are collinear; "
+                                "expected three corners spanning a "
+                                "triangle");
+    status = object_material(p, "triangle", &material);
+    if (status != RAYO_OK)
+        return status;
+    if (rayo_scene_add_triangle(p->file->scene, a, b, c, material, &inner) !=
+        RAYO_OK)
+        return scene_failed(p, &inner);
+    return RAYO_OK;
+}
+
+/* ---- statements ------------------------------------------------------ */
+
+typedef struct statement {
+    const char *keyword;
+    rayo_status (*parse)(parser *p);
+} statement;
+
+static const statement statements[] = {
+    {"camera", parse_camera},     {"shade", parse_shade},
+    {"samples", parse_samples},   {"depth", parse_depth},
+    {"background", parse_background}, {"ambient", parse_ambient},
+    {"light", parse_light},       {"material", parse_material},
+    {"sphere", parse_sphere},     {"plane", parse_plane},
+    {"triangle", parse_triangle},
+};
+#define STATEMENT_COUNT (sizeof statements / sizeof statements[0])
+
+static rayo_status parse_statement(parser *p)
+{
+    scene_word word;
+    char text[WORD_SHOW + 32];
+    size_t i;
+    scene_lexer_word(&p->lx, &word);
+    for (i = 0; i < STATEMENT_COUNT; i++)
+        if (scene_word_is(&word, statements[i].keyword))
+            return statements[i].parse(p);
+    return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                            "unknown keyword %s; expected camera, shade, "
+                            "samples, depth, background, ambient, light, "
+                            "material, sphere, plane or triangle",
+                            quoted(&word, text, sizeof text));
+}
+
+static void file_defaults(rayo_scene_file *file)
+{
+    file->scene = NULL;
+    rayo_camera_spec_init(&file->camera);
+    file->camera_given = 0;
+    file->shade = RAYO_SHADE_PHONG;
+    file->shade_given = 0;
+    file->samples = 1;
+    file->depth = 5;
+}
+
+static rayo_status parse_all(parser *p)
+{
+    for (;;) {
+        int more = 0;
+        rayo_status status = scene_lexer_next_line(&p->lx, &more);
+        if (status != RAYO_OK || !more)
+            return status;
+        status = parse_statement(p);
+        if (status != RAYO_OK)
+            return status;
+    }
+}
+
+rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
+                                  const char *text, size_t length,
+                                  rayo_error *err)
+{
+    parser p;
+    rayo_status status;
+    file_defaults(file);
+    memset(&p, 0, sizeof p);
+    p.file = file;
+    scene_lexer_init(&p.lx, name, text, length, err);
+    status = rayo_scene_create(&file->scene, err);
+    if (status == RAYO_OK)
+        status = parse_all(&p);
+    if (status == RAYO_OK)
+        status = rayo_scene_prepare(file->scene, err);
+    free(p.names);
+    if (status != RAYO_OK)
+        rayo_scene_file_free(file);
+    return status;
+}
+
+void rayo_scene_file_free(rayo_scene_file *file)
+{
+    if (file == NULL)
+        return;
+    rayo_scene_free(file->scene);
+    file->scene = NULL;
+}

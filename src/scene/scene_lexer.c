@@ -1,0 +1,143 @@
+/*
+ * scene_lexer.c - splitting a scene file into lines and words, and
+ * pointing at them in messages (scene_lexer.h).
+ *
+ * It knows blanks, newlines and comments, nothing of keywords or numbers:
+ * that is scene_file.c's job.
+ */
+#include "scene_lexer.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "rayo/scene_file.h"
+
+void scene_lexer_init(scene_lexer *lx, const char *name, const char *text,
+                      size_t length, rayo_error *err)
+{
+    lx->name = name;
+    lx->text = text;
+    lx->length = length;
+    lx->line_start = lx->line_end = lx->pos = 0;
+    lx->next_line = 0;
+    lx->line = 0;
+    lx->err = err;
+}
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+
+/* Finds the end of the line starting at lx->next_line; checks its bytes. */
+static rayo_status take_line(scene_lexer *lx)
+{
+    size_t start = lx->next_line, end = start;
+    while (end < lx->length && lx->text[end] != '\n') {
+        if (lx->text[end] == '\0')
+            break;
+        end++;
+    }
+    lx->line++;
+    lx->line_start = start;
+    lx->line_end = end;
+    lx->pos = start;
+    if (end - start > RAYO_SCENE_MAX_LINE)
+        return scene_lexer_fail(lx, RAYO_SCENE_MAX_LINE + 1, RAYO_ERR_LIMIT,
+                                "line is longer than %u bytes; expected "
+                                "shorter lines",
+                                RAYO_SCENE_MAX_LINE);
+    if (end < lx->length && lx->text[end] == '\0')
+        return scene_lexer_fail(lx, end - start + 1, RAYO_ERR_FORMAT,
+                                "found a NUL byte; expected text");
+    lx->next_line = end < lx->length ? end + 1 : end;
+    return RAYO_OK;
+}
+
+rayo_status scene_lexer_next_line(scene_lexer *lx, int *more)
+{
+    *more = 0;
+    while (lx->next_line < lx->length) {
+        rayo_status status = take_line(lx);
+        if (status != RAYO_OK)
+            return status;
+        if (scene_lexer_more(lx)) {
+            *more = 1;
+            return RAYO_OK;
+        }
+    }
+    return RAYO_OK;
+}
+
+static void skip_blanks(scene_lexer *lx)
+{
+    while (lx->pos < lx->line_end && is_blank(lx->text[lx->pos]))
+        lx->pos++;
+}
+
+int scene_lexer_more(scene_lexer *lx)
+{
+    skip_blanks(lx);
+    return lx->pos < lx->line_end && lx->text[lx->pos] != '#';
+}
+
+size_t scene_lexer_column(scene_lexer *lx)
+{
+    skip_blanks(lx);
+    return lx->pos - lx->line_start + 1;
+}
+
+int scene_lexer_word(scene_lexer *lx, scene_word *word)
+{
+    size_t start;
+    if (!scene_lexer_more(lx))
+        return 0;
+    start = lx->pos;
+    while (lx->pos < lx->line_end && !is_blank(lx->text[lx->pos]) &&
+           lx->text[lx->pos] != '#')
+        lx->pos++;
+    word->text = lx->text + start;
+    word->length = lx->pos - start;
+    word->column = start - lx->line_start + 1;
+    return 1;
+}
+
+int scene_word_is(const scene_word *word, const char *keyword)
+{
+    size_t n = strlen(keyword);
+    return word->length == n && memcmp(word->text, keyword, n) == 0;
+}
+
+const char *scene_word_show(const scene_word *word, char *buffer,
+                            size_t size)
+{
+    size_t n = word->length < 40 ? word->length : 40, i;
+    if (size < 48) {
+        if (size > 0)
+            buffer[0] = '\0';
+        return buffer;
+    }
+    for (i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)word->text[i];
+        buffer[i] = (c >= 0x20 && c < 0x7f) ? (char)c : '?';
+    }
+    if (n < word->length) {
+        memcpy(buffer + n, "...", 3);
+        n += 3;
+    }
+    buffer[n] = '\0';
+    return buffer;
+}
+
+rayo_status scene_lexer_fail(const scene_lexer *lx, size_t column,
+                             rayo_status status, const char *format, ...)
+{
+    char message[RAYO_ERROR_MESSAGE_SIZE];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+    return rayo_error_set(lx->err, status, "%s:%lu:%lu: %s", lx->name,
+                          lx->line, (unsigned long)column, message);
+}
