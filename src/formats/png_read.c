@@ -151,11 +151,15 @@ static rayo_status allocate(png_reader *r, const rayo_image_info *info,
 {
     size_t rows = passes > 1 ? info->height : 1;
     size_t sample_bytes = info->sample == RAYO_SAMPLE_U16 ? 2 : 1;
-    rayo_error check;
-    rayo_status status = rayo_image_info_check(info, &check);
+    rayo_status status = rayo_image_info_check(info, NULL);
     if (status != RAYO_OK)
-        return rayo_error_set(&r->error, status, "%s: byte 16: PNG IHDR: %s",
-                              r->src->name, check.message);
+        return rayo_error_set(&r->error, status,
+                              "%s: byte 16: found a %lux%lu image in the PNG "
+                              "IHDR; expected at most %u pixels each way and "
+                              "%lu (2^30) in all",
+                              r->src->name, (unsigned long)info->width,
+                              (unsigned long)info->height,
+                              RAYO_MAX_DIMENSION, RAYO_MAX_PIXELS);
     if (r->in_row_bytes != (info->sample == RAYO_SAMPLE_BIT
                                 ? ((size_t)info->width + 7) / 8
                                 : (size_t)info->width * r->in_channels *

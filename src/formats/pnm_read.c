@@ -25,6 +25,7 @@ typedef struct pnm_reader {
     rayo_source *src;
     int digit;       /* '1'..'6' */
     uint64_t line;   /* 1-based line of the cursor (plain and header) */
+    uint64_t value_offset, value_line; /* where the last header value began */
     uint32_t width, height;
     unsigned maxval; /* 1 for PBM */
     unsigned channels;
@@ -91,6 +92,8 @@ static rayo_status read_header_number(pnm_reader *r, const char *what,
     snprintf(expected, sizeof expected, "the %s (a decimal number)", what);
     if (c < '0' || c > '9')
         return found_error(r, RAYO_ERR_FORMAT, c, expected, err);
+    r->value_offset = rayo_source_offset(r->src) - 1;
+    r->value_line = r->line;
     *value = 0;
     while (c >= '0' && c <= '9') {
         if (*value <= UINT32_MAX)
@@ -105,27 +108,34 @@ static rayo_status read_header_number(pnm_reader *r, const char *what,
     return RAYO_OK;
 }
 
+/* "FILE: byte N (line L): found WHAT VALUE; expected ..." for the last
+   header value read; values past 2^32 are shown as "over 4294967295". */
+static rayo_status value_error(const pnm_reader *r, rayo_status status,
+                               const char *what, uint64_t value,
+                               const char *expected, rayo_error *err)
+{
+    char shown[32];
+    if (value > UINT32_MAX)
+        snprintf(shown, sizeof shown, "over 4294967295");
+    else
+        snprintf(shown, sizeof shown, "%llu", (unsigned long long)value);
+    return rayo_error_set(err, status,
+                          "%s: byte %llu (line %llu): found %s %s in the %s "
+                          "header; expected %s",
+                          r->src->name, (unsigned long long)r->value_offset,
+                          (unsigned long long)r->value_line, what, shown,
+                          magic_name(r->digit), expected);
+}
+
 static rayo_status check_size(const pnm_reader *r, const char *what,
                               uint64_t value, rayo_error *err)
 {
     if (value == 0)
-        return rayo_error_set(err, RAYO_ERR_FORMAT,
-                              "%s: %s header: found %s 0; expected 1 to %u",
-                              r->src->name, magic_name(r->digit), what,
-                              RAYO_MAX_DIMENSION);
-    if (value > RAYO_MAX_DIMENSION) {
-        if (value > UINT32_MAX)
-            return rayo_error_set(err, RAYO_ERR_LIMIT,
-                                  "%s: %s header: found %s over 4294967295; "
-                                  "expected at most %u",
-                                  r->src->name, magic_name(r->digit), what,
-                                  RAYO_MAX_DIMENSION);
-        return rayo_error_set(err, RAYO_ERR_LIMIT,
-                              "%s: %s header: found %s %llu; expected at "
-                              "most %u",
-                              r->src->name, magic_name(r->digit), what,
-                              (unsigned long long)value, RAYO_MAX_DIMENSION);
-    }
+        return value_error(r, RAYO_ERR_FORMAT, what, value,
+                           "1 to 65536 pixels", err);
+    if (value > RAYO_MAX_DIMENSION)
+        return value_error(r, RAYO_ERR_LIMIT, what, value,
+                           "at most 65536 pixels", err);
     return RAYO_OK;
 }
 
@@ -143,25 +153,23 @@ static rayo_status read_header(pnm_reader *r, rayo_error *err)
         return status;
     if (width * height > RAYO_MAX_PIXELS)
         return rayo_error_set(err, RAYO_ERR_LIMIT,
-                              "%s: %s header: found %llux%llu = %llu pixels; "
-                              "expected at most %lu",
-                              r->src->name, magic_name(r->digit),
+                              "%s: byte %llu (line %llu): found %llux%llu = "
+                              "%llu pixels in the %s header; expected at "
+                              "most %lu (2^30)",
+                              r->src->name,
+                              (unsigned long long)r->value_offset,
+                              (unsigned long long)r->value_line,
                               (unsigned long long)width,
                               (unsigned long long)height,
                               (unsigned long long)(width * height),
-                              RAYO_MAX_PIXELS);
+                              magic_name(r->digit), RAYO_MAX_PIXELS);
     if (r->digit != '1' && r->digit != '4') {
         status = read_header_number(r, "maxval", &maxval, err);
         if (status != RAYO_OK)
             return status;
         if (maxval < 1 || maxval > 65535)
-            return rayo_error_set(
-                err, RAYO_ERR_FORMAT,
-                "%s: %s header: found maxval %s%llu; expected 1 to 65535",
-                r->src->name, magic_name(r->digit),
-                maxval > UINT32_MAX ? "over " : "",
-                (unsigned long long)(maxval > UINT32_MAX ? UINT32_MAX
-                                                          : maxval));
+            return value_error(r, RAYO_ERR_FORMAT, "maxval", maxval,
+                               "1 to 65535", err);
     }
     r->width = (uint32_t)width;
     r->height = (uint32_t)height;

@@ -58,8 +58,9 @@ static rayo_status read_image(rayo_source *src, rayo_image *image,
             report->plain = 0;
             return rayo_png_read(src, image, err);
         }
-        if (src->read_errno != 0)
-            return rayo_source_end_error(src, "a PNG signature", err);
+        if (got < 6)
+            return rayo_source_end_error(src, "the rest of a PNG signature",
+                                         err);
         return rayo_error_set(err, RAYO_ERR_FORMAT,
                               "%s: byte 0: found a damaged PNG signature; "
                               "expected 89 50 4e 47 0d 0a 1a 0a",
