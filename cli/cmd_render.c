@@ -27,6 +27,13 @@ typedef struct render_request {
     const char *format;  /* NULL: from the output's extension */
     int raw;
     unsigned long threads;
+    const char *scene_path; /* SCENE argument, or NULL */
+    rayo_scene_file file;   /* what it holds, once loaded */
+    int width_given, height_given, fov_given, origin_given;
+    int shade_given, depth_given;
+    rayo_shade_mode shade;
+    unsigned long samples; /* 0: the scene's or the default */
+    unsigned long depth;
 } render_request;
 
 /* Set by SIGINT/SIGTERM; the render stops at the next band. */
@@ -48,11 +55,15 @@ static int stop_requested(void *context, uint32_t done, uint32_t total)
 static void print_help(void)
 {
     printf(
-        "usage: rayo [render] [OPTIONS]\n\n"
-        "Traces one ray per pixel from the camera and writes black where a "
-        "ray hits a\nsphere.  With no options: the assignment's sphere "
-        "(centre 0.5,0.75,1.9, radius\n0.8), 640x480, field of view 90, "
-        "plain PBM (P1) on standard output.\n\n"
+        "usage: rayo [render] [OPTIONS]\n"
+        "       rayo render SCENE [OPTIONS]\n\n"
+        "Traces rays from the camera through each pixel.  With no options: "
+        "the\nassignment's sphere (centre 0.5,0.75,1.9, radius 0.8), "
+        "640x480, field of view 90,\nblack where a ray hits it, as plain "
+        "PBM (P1) on standard output.  SCENE is a\nscene file "
+        "(docs/scene-format.md): camera, lights, materials, spheres, "
+        "planes,\ntriangles; the options below override its camera and "
+        "settings.\n\n"
         "options:\n"
         "  -W, --width N          image width in pixels (1-65536; default "
         "640)\n"
@@ -63,6 +74,16 @@ static void print_help(void)
         "0 < DEG < 180 (default 90)\n"
         "      --origin X,Y,Z     camera position (default 0,0,0); it looks "
         "down +z, +y up\n"
+        "                         (or at the scene's look-at point)\n"
+        "      --shade MODE       hit (black/white, PBM), course-gray (PGM), "
+        "course-color\n"
+        "                         (PPM) or phong (PPM); default: the "
+        "scene's 'shade',\n"
+        "                         else phong for a scene, hit without one\n"
+        "      --samples N        N x N rays per pixel, stratified (1-16; "
+        "default 1)\n"
+        "      --depth N          phong: mirror bounces followed (0-64; "
+        "default 5)\n"
         "      --sphere CX,CY,CZ,R\n"
         "                         a sphere (repeatable; R > 0); the first "
         "replaces the\n"
@@ -70,9 +91,12 @@ static void print_help(void)
         "  -o, --output FILE      write to FILE ('-' = standard output, "
         "the default);\n"
         "                         a file appears whole or not at all\n"
-        "      --format FMT       pbm or png (default: from FILE's "
-        "extension, else pbm)\n"
-        "      --raw              raw PBM (P4) instead of plain (P1)\n"
+        "      --format FMT       the mode's Netpbm format (pbm, pgm, ppm) "
+        "or png (default:\n"
+        "                         from FILE's extension, else the mode's "
+        "Netpbm format)\n"
+        "      --raw              raw Netpbm (P4-P6) instead of plain "
+        "(P1-P3)\n"
         "  -j, --threads N        rendering threads (default: one per "
         "CPU)\n"
         "  -h, --help             this help\n"
@@ -80,7 +104,8 @@ static void print_help(void)
         "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
         "(rows from the\ntop); its ray has direction (x, -y, w/(2 "
         "tan(fov/2))), normalised.\n\n"
-        "exit status: 0 success, 1 input/output failure, 2 bad options.\n");
+        "exit status: 0 success, 1 input/output failure, 2 bad options or "
+        "scene file.\n");
 }
 
 static int parse_request(int argc, char **argv, render_request *req)
@@ -95,6 +120,9 @@ static int parse_request(int argc, char **argv, render_request *req)
         {"format", required_argument, NULL, 'F'},
         {"raw", no_argument, NULL, 'r'},
         {"threads", required_argument, NULL, 'j'},
+        {"shade", required_argument, NULL, 'S'},
+        {"samples", required_argument, NULL, 'N'},
+        {"depth", required_argument, NULL, 'D'},
         {"help", no_argument, NULL, 'h'},
         {"version", no_argument, NULL, 'V'},
         {NULL, 0, NULL, 0}};
@@ -108,11 +136,13 @@ static int parse_request(int argc, char **argv, render_request *req)
             if (!cli_parse_uint("--width", optarg, 1, RAYO_MAX_DIMENSION,
                                 &req->width))
                 return CLI_EXIT_USAGE;
+            req->width_given = 1;
             break;
         case 'H':
             if (!cli_parse_uint("--height", optarg, 1, RAYO_MAX_DIMENSION,
                                 &req->height))
                 return CLI_EXIT_USAGE;
+            req->height_given = 1;
             break;
         case 'f':
             if (!cli_parse_double("--fov", optarg, &req->fov))
@@ -122,11 +152,13 @@ static int parse_request(int argc, char **argv, render_request *req)
                                        "expected degrees strictly between 0 "
                                        "and 180",
                                        optarg);
+            req->fov_given = 1;
             break;
         case 'O':
             if (!cli_parse_numbers("--origin", optarg, 3, "X,Y,Z", v))
                 return CLI_EXIT_USAGE;
             req->origin = rayo_vec3_make(v[0], v[1], v[2]);
+            req->origin_given = 1;
             break;
         case 's':
             if (!cli_parse_numbers("--sphere", optarg, 4, "CX,CY,CZ,R", v))
@@ -155,6 +187,25 @@ static int parse_request(int argc, char **argv, render_request *req)
                                 &req->threads))
                 return CLI_EXIT_USAGE;
             break;
+        case 'S':
+            if (rayo_shade_mode_parse(optarg, &req->shade, NULL) != RAYO_OK)
+                return cli_usage_error("--shade: '%s' is not accepted; "
+                                       "expected hit, course-gray, "
+                                       "course-color or phong",
+                                       optarg);
+            req->shade_given = 1;
+            break;
+        case 'N':
+            if (!cli_parse_uint("--samples", optarg, 1, RAYO_MAX_SAMPLES,
+                                &req->samples))
+                return CLI_EXIT_USAGE;
+            break;
+        case 'D':
+            if (!cli_parse_uint("--depth", optarg, 0, RAYO_MAX_DEPTH,
+                                &req->depth))
+                return CLI_EXIT_USAGE;
+            req->depth_given = 1;
+            break;
         case 'h':
             print_help();
             return -1;
@@ -166,9 +217,15 @@ static int parse_request(int argc, char **argv, render_request *req)
         }
     }
     if (optind < argc)
+        req->scene_path = argv[optind++];
+    if (optind < argc)
         return cli_usage_error("render: unexpected argument '%s'; see 'rayo "
                                "--help'",
                                argv[optind]);
+    if (req->scene_path != NULL && req->sphere_count > 0)
+        return cli_usage_error("--sphere: cannot be combined with the scene "
+                               "file '%s'; put the sphere in the file",
+                               req->scene_path);
     if ((unsigned long long)req->width * req->height > RAYO_MAX_PIXELS)
         return cli_usage_error("--width %lu --height %lu: %llu pixels; "
                                "expected at most %lu (2^30)",
@@ -178,32 +235,69 @@ static int parse_request(int argc, char **argv, render_request *req)
     return CLI_EXIT_OK;
 }
 
+/* The shading mode asked for: --shade, else the scene's, else hit. */
+static rayo_shade_mode effective_shade(const render_request *req)
+{
+    if (req->shade_given)
+        return req->shade;
+    return req->scene_path != NULL ? req->file.shade : RAYO_SHADE_HIT;
+}
+
+/* The Netpbm format that holds a mode's pixels: PBM, PGM or PPM. */
+static rayo_format netpbm_for_shade(rayo_shade_mode mode)
+{
+    switch (mode) {
+    case RAYO_SHADE_HIT:
+        break;
+    case RAYO_SHADE_COURSE_GRAY:
+        return RAYO_FORMAT_PGM;
+    case RAYO_SHADE_COURSE_COLOR:
+    case RAYO_SHADE_PHONG:
+        return RAYO_FORMAT_PPM;
+    }
+    return RAYO_FORMAT_PBM;
+}
+
+static const char *upper_name(rayo_format format)
+{
+    static const char *const names[] = {"PBM", "PGM", "PPM", "PNG"};
+    return names[format];
+}
+
 static int choose_format(const render_request *req, rayo_format *format)
 {
     rayo_error err;
+    rayo_shade_mode mode = effective_shade(req);
+    rayo_format netpbm = netpbm_for_shade(mode);
+    const char *ext = rayo_format_name(netpbm);
     if (req->format != NULL) {
         if (rayo_format_parse(req->format, format, &err) != RAYO_OK ||
-            (*format != RAYO_FORMAT_PBM && *format != RAYO_FORMAT_PNG))
+            (*format != netpbm && *format != RAYO_FORMAT_PNG))
             return cli_usage_error("--format: '%s' is not accepted; expected "
-                                   "pbm or png",
-                                   req->format);
+                                   "%s or png for a %s render",
+                                   req->format, ext,
+                                   rayo_shade_mode_name(mode));
     } else if (strcmp(req->output, "-") == 0) {
-        *format = RAYO_FORMAT_PBM;
-    } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK ||
-               (*format != RAYO_FORMAT_PBM && *format != RAYO_FORMAT_PNG)) {
+        *format = netpbm;
+    } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
         return cli_usage_error("--output: cannot tell the format of '%s' "
-                               "from its extension; expected .pbm or .png, "
+                               "from its extension; expected .%s or .png, "
                                "or give --format",
-                               req->output);
+                               req->output, ext);
+    } else if (*format != netpbm && *format != RAYO_FORMAT_PNG) {
+        return cli_usage_error("--output: '%s' is %s, which cannot hold a %s "
+                               "render; expected .%s or .png",
+                               req->output, upper_name(*format),
+                               rayo_shade_mode_name(mode), ext);
     }
-    if (req->raw && *format != RAYO_FORMAT_PBM)
-        return cli_usage_error("--raw: applies only to PBM output, not %s",
-                               rayo_format_name(*format));
+    if (req->raw && *format != netpbm)
+        return cli_usage_error("--raw: applies only to %s output, not %s",
+                               upper_name(netpbm), rayo_format_name(*format));
     if (strcmp(req->output, "-") == 0 && cli_stdout_is_terminal() &&
         (*format == RAYO_FORMAT_PNG || req->raw))
         return cli_usage_error("refusing to write binary %s to a terminal; "
                                "use -o FILE or a pipe",
-                               req->raw ? "PBM" : "PNG");
+                               upper_name(*format));
     return CLI_EXIT_OK;
 }
 
@@ -215,10 +309,51 @@ static rayo_status write_rows(void *context, const unsigned char *rows,
     return rayo_writer_write_rows(context, rows, stride, count, err);
 }
 
-static int build_scene(const render_request *req, rayo_scene **scene,
+/* The scene file's camera (or the assignment's), with -W -H --fov
+ * --origin laid over it. */
+static int build_camera(const render_request *req, rayo_camera *camera,
+                        rayo_error *err)
+{
+    rayo_camera_spec spec;
+    if (req->scene_path != NULL)
+        spec = req->file.camera;
+    else
+        rayo_camera_spec_init(&spec);
+    if (req->scene_path == NULL || req->width_given)
+        spec.width = (uint32_t)req->width;
+    if (req->scene_path == NULL || req->height_given)
+        spec.height = (uint32_t)req->height;
+    if (req->scene_path == NULL || req->fov_given)
+        spec.fov_degrees = req->fov;
+    if (req->scene_path == NULL || req->origin_given)
+        spec.origin = req->origin;
+    return rayo_camera_spec_build(&spec, camera, err) == RAYO_OK;
+}
+
+/* Shading mode, samples and depth: the options', else the scene's. */
+static void render_settings(const render_request *req,
+                            rayo_render_options *options)
+{
+    options->shade = effective_shade(req);
+    if (req->scene_path != NULL) {
+        options->samples = req->file.samples;
+        options->depth = req->file.depth;
+    }
+    if (req->samples != 0)
+        options->samples = (unsigned)req->samples;
+    if (req->depth_given)
+        options->depth = (unsigned)req->depth;
+}
+
+static int build_scene(render_request *req, rayo_scene **scene,
                        rayo_error *err)
 {
     size_t i;
+    if (req->scene_path != NULL) {
+        *scene = req->file.scene;
+        req->file.scene = NULL;
+        return 1;
+    }
     if (rayo_scene_create(scene, err) != RAYO_OK)
         return 0;
     if (req->sphere_count == 0)
@@ -294,25 +429,28 @@ int cli_render(int argc, char **argv)
     req->fov = RAYO_SEED_FOV;
     req->origin = rayo_vec3_make(0, 0, 0);
     req->output = "-";
+    rayo_error_clear(&err);
     exit_status = parse_request(argc, argv, req);
+    if (exit_status == CLI_EXIT_OK && req->scene_path != NULL &&
+        rayo_scene_file_load(&req->file, req->scene_path, &err) != RAYO_OK)
+        exit_status = cli_report(&err);
     if (exit_status == CLI_EXIT_OK)
         exit_status = choose_format(req, &write_options.format);
     if (exit_status != CLI_EXIT_OK) {
+        rayo_scene_file_free(&req->file);
         free(req);
         return exit_status < 0 ? CLI_EXIT_OK : exit_status;
     }
     write_options.plain = !req->raw;
 
-    rayo_error_clear(&err);
-    if (rayo_camera_init(&camera, (uint32_t)req->width,
-                         (uint32_t)req->height, req->fov, req->origin,
-                         &err) != RAYO_OK ||
-        !build_scene(req, &scene, &err)) {
+    if (!build_camera(req, &camera, &err) || !build_scene(req, &scene, &err)) {
+        rayo_scene_file_free(&req->file);
         free(req);
         rayo_scene_free(scene);
         return cli_report(&err);
     }
     rayo_render_options_init(&options);
+    render_settings(req, &options);
     options.threads = (unsigned)req->threads;
     options.progress = stop_requested;
     catch_interrupts();

@@ -22,8 +22,10 @@
 #include "rayo/plane.h"
 #include "rayo/triangle.h"
 #include "rayo/camera.h"
+#include "rayo/camera_spec.h"
 #include "rayo/scene.h"
 #include "rayo/scene_random.h"
+#include "rayo/scene_file.h"
 #include "rayo/render.h"
 
 #include "rayo/image.h"
