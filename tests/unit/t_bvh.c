@@ -1,0 +1,328 @@
+/*
+ * t_bvh.c - the bounding volume hierarchy against brute force.
+ *
+ * Two copies of the same seeded random scene are made: one prepared (its
+ * queries walk the hierarchy), one not (its queries test every object in
+ * turn).  Thousands of random rays must get the same answers from both:
+ * hit or miss, the same t to the last bit, the same object, normal and
+ * material, and the same shadow-ray verdict with and without a skipped
+ * object.  Degenerate scenes (every sphere at one point, one object, no
+ * object, only planes) and the tree's shape and cost are checked too.
+ */
+#include <math.h>
+#include <stdint.h>
+
+#include "rayo.h"
+#include "tap.h"
+
+#include "../../src/accel/bvh.h"
+#include "../../src/scene/scene_impl.h"
+
+static double uniform(rayo_lcg *g, double lo, double hi)
+{
+    return lo + (hi - lo) * rayo_lcg_next(g);
+}
+
+static rayo_vec3 random_point(rayo_lcg *g, double half)
+{
+    double x = uniform(g, -half, half), y = uniform(g, -half, half);
+    return rayo_vec3_make(x, y, uniform(g, -half, half));
+}
+
+static rayo_vec3 random_direction(rayo_lcg *g)
+{
+    for (;;) {
+        rayo_vec3 v = random_point(g, 1.0);
+        double l = rayo_vec3_length(v);
+        if (l > 0.1 && l <= 1.0)
+            return rayo_vec3_scale(v, 1.0 / l);
+    }
+}
+
+/* Spheres (every 25th a copy of an earlier one), triangles and planes,
+ * interleaved so object indices mix the kinds. */
+static void fill_random(rayo_scene *s, uint64_t seed, size_t spheres,
+                        size_t triangles, size_t planes)
+{
+    rayo_lcg g;
+    rayo_error err;
+    rayo_material m = {{0.5, 0.5, 0.5}, 0.1, 0.8, 0.2, 10, 0};
+    unsigned mat;
+    size_t i;
+    rayo_lcg_seed(&g, seed);
+    rayo_scene_add_material(s, &m, &mat, &err);
+    for (i = 0; i < planes; i++)
+        rayo_scene_add_plane(s, random_point(&g, 30), random_direction(&g),
+                             mat, &err);
+    for (i = 0; i < spheres || i < triangles; i++) {
+        if (i < spheres) {
+            if (i % 25 == 24) {
+                const rayo_sphere *old = rayo_scene_sphere(s, i / 2);
+                rayo_scene_add_sphere(s, old->center, old->radius, &err);
+            } else {
+                rayo_scene_add_sphere_material(s, random_point(&g, 10),
+                                               uniform(&g, 0.05, 1.0),
+                                               i % 2 ? mat : 0, &err);
+            }
+        }
+        if (i < triangles) {
+            rayo_vec3 c = random_point(&g, 10);
+            rayo_scene_add_triangle(
+                s, rayo_vec3_add(c, random_point(&g, 1.5)),
+                rayo_vec3_add(c, random_point(&g, 1.5)),
+                rayo_vec3_add(c, random_point(&g, 1.5)), mat, &err);
+        }
+    }
+}
+
+typedef struct tally {
+    size_t rays, hits, nearest_bad, occluded_bad, occluded_true;
+} tally;
+
+static int same_hit(int h1, const rayo_hit *a, int h2, const rayo_hit *b)
+{
+    if (h1 != h2)
+        return 0;
+    if (!h1)
+        return 1;
+    return a->t == b->t && a->object == b->object &&
+           a->material == b->material && a->normal.x == b->normal.x &&
+           a->normal.y == b->normal.y && a->normal.z == b->normal.z &&
+           a->point.x == b->point.x && a->point.z == b->point.z;
+}
+
+static void compare_ray(const rayo_scene *brute, const rayo_scene *tree,
+                        const rayo_ray *r, double t_min, rayo_lcg *g,
+                        tally *t)
+{
+    rayo_hit a, b;
+    int h1 = rayo_scene_intersect(brute, r, t_min, INFINITY, &a);
+    int h2 = rayo_scene_intersect(tree, r, t_min, INFINITY, &b);
+    double t_max = h1 ? a.t * uniform(g, 0.5, 1.5) : INFINITY;
+    size_t skip = h1 ? a.object : RAYO_NO_OBJECT;
+    t->rays++;
+    t->hits += (size_t)h1;
+    if (!same_hit(h1, &a, h2, &b))
+        t->nearest_bad++;
+    if (rayo_scene_occluded(brute, r, t_min, t_max, skip) !=
+        rayo_scene_occluded(tree, r, t_min, t_max, skip))
+        t->occluded_bad++;
+    if (rayo_scene_occluded(brute, r, t_min, INFINITY, skip) !=
+        rayo_scene_occluded(tree, r, t_min, INFINITY, skip))
+        t->occluded_bad++;
+    if (rayo_scene_occluded(brute, r, t_min, INFINITY, RAYO_NO_OBJECT) !=
+        rayo_scene_hit_any(tree, r, t_min))
+        t->occluded_bad++;
+    t->occluded_true += (size_t)rayo_scene_occluded(tree, r, t_min, t_max,
+                                                     skip);
+}
+
+/* A point near object k of the spheres-then-triangles list. */
+static rayo_vec3 near_object(const rayo_scene *s, size_t k, rayo_lcg *g)
+{
+    if (k < s->sphere_count) {
+        const rayo_sphere *sp = &s->spheres[k].shape;
+        return rayo_vec3_add(sp->center,
+                             rayo_vec3_scale(random_point(g, 1), sp->radius));
+    } else {
+        const rayo_triangle *tr = &s->triangles[k - s->sphere_count].shape;
+        double u = rayo_lcg_next(g), v = rayo_lcg_next(g) * (1.1 - u);
+        return rayo_vec3_add(
+            tr->a, rayo_vec3_add(rayo_vec3_scale(rayo_vec3_sub(tr->b, tr->a), u),
+                                 rayo_vec3_scale(rayo_vec3_sub(tr->c, tr->a), v)));
+    }
+}
+
+/* Random rays from around the scene, half of them aimed at an object's
+ * neighbourhood so that most rays hit something. */
+static void compare_scenes(const rayo_scene *brute, const rayo_scene *tree,
+                           size_t rays, uint64_t seed, tally *t)
+{
+    rayo_lcg g;
+    size_t i, aimable = brute->sphere_count + brute->triangle_count;
+    rayo_lcg_seed(&g, seed);
+    for (i = 0; i < rays; i++) {
+        rayo_ray r;
+        r.origin = random_point(&g, 15);
+        r.direction = random_direction(&g);
+        if (i % 2 && aimable > 0) {
+            size_t k = (size_t)(rayo_lcg_next(&g) * (double)aimable);
+            rayo_vec3 d =
+                rayo_vec3_sub(near_object(brute, k, &g), r.origin);
+            if (rayo_vec3_length(d) > 0)
+                r.direction = rayo_vec3_normalize(d);
+        }
+        compare_ray(brute, tree, &r, 0.0, &g, t);
+        compare_ray(brute, tree, &r, uniform(&g, 0, 10), &g, t);
+    }
+}
+
+static void check_same(const char *name, uint64_t seed, size_t spheres,
+                       size_t triangles, size_t planes, size_t rays)
+{
+    rayo_scene *brute, *tree;
+    rayo_error err;
+    tally t = {0, 0, 0, 0, 0};
+    rayo_scene_create(&brute, &err);
+    rayo_scene_create(&tree, &err);
+    fill_random(brute, seed, spheres, triangles, planes);
+    fill_random(tree, seed, spheres, triangles, planes);
+    is_int(rayo_scene_prepare(tree, &err), RAYO_OK, "%s: prepare", name);
+    compare_scenes(brute, tree, rays, seed + 1, &t);
+    is_int(t.nearest_bad, 0, "%s: %lu rays, same nearest hits", name,
+           (unsigned long)t.rays);
+    is_int(t.occluded_bad, 0, "%s: same shadow-ray answers", name);
+    ok(spheres + triangles + planes == 0 || t.hits * 4 > t.rays,
+       "%s: the rays are not vacuous (%lu of %lu hit)", name,
+       (unsigned long)t.hits, (unsigned long)t.rays);
+    rayo_scene_free(brute);
+    rayo_scene_free(tree);
+}
+
+static size_t tree_depth(const rayo_scene *s)
+{
+    rayo_bvh_info info;
+    rayo_bvh_describe(s->bvh, &info);
+    return info.depth;
+}
+
+/* 2000 spheres all centred at one point, radii 1, 2, ..., 2000 (but each
+ * fifth radius repeated): the nearest from outside is the biggest, the
+ * first added of equals. */
+static void check_one_point(void)
+{
+    rayo_scene *brute, *tree;
+    rayo_error err;
+    rayo_hit h;
+    rayo_ray r;
+    tally t = {0, 0, 0, 0, 0};
+    size_t i;
+    rayo_scene_create(&brute, &err);
+    rayo_scene_create(&tree, &err);
+    for (i = 0; i < 2000; i++) {
+        double radius = (double)(i % 5 == 4 ? i : i + 1) * 0.01;
+        rayo_scene_add_sphere(brute, rayo_vec3_make(1, 2, 3), radius, &err);
+        rayo_scene_add_sphere(tree, rayo_vec3_make(1, 2, 3), radius, &err);
+    }
+    rayo_scene_prepare(tree, &err);
+    ok(tree_depth(tree) <= 30, "one point: the tree stays shallow, depth %lu",
+       (unsigned long)tree_depth(tree));
+    r.origin = rayo_vec3_make(1, 2, -100);
+    r.direction = rayo_vec3_make(0, 0, 1);
+    ok(rayo_scene_intersect(tree, &r, 0, INFINITY, &h) && h.object == 1998 &&
+           fabs(h.t - (103 - 19.99)) < 1e-12,
+       "one point: the biggest sphere (object 1998, r 19.99) first");
+    r.origin = rayo_vec3_make(1, 2, 3);
+    ok(rayo_scene_intersect(tree, &r, 0, INFINITY, &h) && h.object == 0 &&
+           h.t == 0.01,
+       "one point: from the centre the smallest wall first");
+    compare_scenes(brute, tree, 300, 7, &t);
+    is_int(t.nearest_bad + t.occluded_bad, 0,
+           "one point: hierarchy agrees with brute force");
+    rayo_scene_free(brute);
+    rayo_scene_free(tree);
+}
+
+static void check_tiny_scenes(void)
+{
+    rayo_scene *s;
+    rayo_error err;
+    rayo_hit h;
+    rayo_ray r;
+    r.origin = rayo_vec3_make(0, 0, 0);
+    r.direction = rayo_vec3_make(0, 0, 1);
+    rayo_scene_create(&s, &err);
+    is_int(rayo_scene_prepare(s, &err), RAYO_OK, "empty scene: prepare");
+    ok(!rayo_scene_intersect(s, &r, 0, INFINITY, &h) &&
+           !rayo_scene_occluded(s, &r, 0, INFINITY, RAYO_NO_OBJECT) &&
+           !rayo_scene_hit_any(s, &r, 0),
+       "empty scene: nothing is hit");
+    rayo_scene_add_sphere(s, rayo_vec3_make(0, 0, 4), 1, &err);
+    rayo_scene_prepare(s, &err);
+    ok(rayo_scene_intersect(s, &r, 0, INFINITY, &h) && h.t == 3 &&
+           h.object == 0,
+       "one sphere: t = 3");
+    ok(!rayo_scene_occluded(s, &r, 0, INFINITY, 0),
+       "one sphere, skipped: nothing blocks");
+    ok(!rayo_scene_occluded(s, &r, 0, 3, RAYO_NO_OBJECT),
+       "one sphere: t_max = 3 is open, nothing blocks");
+    ok(rayo_scene_occluded(s, &r, 0, 3.0000001, RAYO_NO_OBJECT),
+       "one sphere: just past 3 it blocks");
+    rayo_scene_free(s);
+    check_same("only planes", 11, 0, 0, 5, 300);
+    check_same("one triangle", 12, 0, 1, 0, 300);
+}
+
+/* The hierarchy does its job: far fewer tests than objects per ray. */
+static void check_cost(void)
+{
+    rayo_scene *s;
+    rayo_error err;
+    rayo_scene_stats st = {0, 0, 0};
+    rayo_camera cam;
+    rayo_hit h;
+    uint32_t i, j;
+    rayo_scene_create(&s, &err);
+    rayo_scene_random_spheres(s, 20000, 42, &err);
+    rayo_scene_prepare(s, &err);
+    rayo_camera_init(&cam, 192, 108, 90.0, rayo_vec3_make(0, 0, 0), &err);
+    for (j = 0; j < 108; j += 3)
+        for (i = 0; i < 192; i += 3) {
+            rayo_ray r = rayo_camera_ray(&cam, (double)i, (double)j);
+            rayo_scene_intersect_counted(s, &r, 0, INFINITY, &h, &st);
+        }
+    ok(st.rays == 64 * 36, "cost: %lu rays counted", (unsigned long)st.rays);
+    ok(st.prim_tests < 20 * st.rays,
+       "cost: 20000 spheres, %.1f sphere tests per ray (< 20)",
+       (double)st.prim_tests / (double)st.rays);
+    ok(st.node_tests < 200 * st.rays, "cost: %.1f box tests per ray (< 200)",
+       (double)st.node_tests / (double)st.rays);
+    ok(tree_depth(s) < 40, "cost: depth %lu", (unsigned long)tree_depth(s));
+    rayo_scene_free(s);
+}
+
+static void check_generator(void)
+{
+    rayo_scene *a, *b;
+    rayo_error err;
+    rayo_lcg g;
+    size_t i, same = 1;
+    rayo_lcg_seed(&g, 1);
+    /* state 6364136223846793005 + 1442695040888963407, top 53 bits. */
+    is_double(-16 + 32 * rayo_lcg_next(&g), -2.4573065320731757, 0,
+              "lcg: first x of seed 1");
+    is_double(-9 + 18 * rayo_lcg_next(&g), 0.16933397190697086, 0,
+              "lcg: first y of seed 1");
+    rayo_scene_create(&a, &err);
+    rayo_scene_create(&b, &err);
+    is_int(rayo_scene_random_spheres(a, 1000, 1, &err), RAYO_OK,
+           "generator: 1000 spheres");
+    rayo_scene_random_spheres(b, 1000, 1, &err);
+    is_double(rayo_scene_sphere(a, 0)->center.x, -2.4573065320731757, 0,
+              "generator: sphere 0 is the lcg's first draw");
+    for (i = 0; i < 1000; i++) {
+        const rayo_sphere *p = rayo_scene_sphere(a, i),
+                          *q = rayo_scene_sphere(b, i);
+        if (p->center.x != q->center.x || p->radius != q->radius ||
+            p->center.z < 8 || p->center.z > 40 || p->radius < 0.05 ||
+            p->radius > 0.25)
+            same = 0;
+    }
+    ok(same, "generator: same seed, same scene, within the documented box");
+    is_int(rayo_scene_material_count(a), 9, "generator: 8 materials added");
+    is_int(rayo_scene_random_spheres(a, RAYO_MAX_OBJECTS, 1, &err),
+           RAYO_ERR_LIMIT, "generator: past the object limit");
+    rayo_scene_free(a);
+    rayo_scene_free(b);
+}
+
+int main(void)
+{
+    check_same("mixed scene", 2024, 1000, 200, 2, 1500);
+    check_same("dense small scene", 99, 60, 20, 0, 1000);
+    check_one_point();
+    check_tiny_scenes();
+    check_cost();
+    check_generator();
+    return tap_done();
+}
