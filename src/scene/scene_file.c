@@ -87,8 +87,10 @@ static rayo_status need_number(parser *p, const char *what, double *value,
                                size_t *column)
 {
     scene_word word;
-    char text[WORD_SHOW + 32];
-    rayo_status status = need_word(p, &word, what);
+    char text[WORD_SHOW + 32], label[160];
+    rayo_status status;
+    snprintf(label, sizeof label, "%s (a number)", what);
+    status = need_word(p, &word, label);
     if (status != RAYO_OK)
         return status;
     if (column != NULL)
