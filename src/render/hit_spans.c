@@ -1,0 +1,391 @@
+/*
+ * hit_spans.c - hit-mode rows by spans: for each sphere, where along the
+ * row its hits begin and end, so that only the pixels near those two ends
+ * are traced.  It exists for speed (the seed job, huge frames); it is not
+ * a renderer of its own and must give, bit for bit, what row.c's
+ * per-pixel loop gives.  Scenes with planes or triangles, and cameras
+ * outside the range below, go back to that loop.
+ *
+ * The geometry.  Pixel x of row y has direction d(x) = x a + b, with
+ * a = right and b = -y up + f forward (camera.h).  With l = C - O, the
+ * exact ray test asks for h(x) = l.d(x) / |d(x)| (the assignment's beta)
+ * and g(x) = h^2 - (l.l - R^2) (its delta).  Seen from outside the ball
+ * (l.l > R^2) the ray hits iff h >= sqrt(l.l - R^2): d lies in a convex
+ * cone, and a line meets a convex cone in an interval.  From inside, every
+ * ray hits.  Along the line, h has one maximum, at x* = N / D (below), or
+ * grows towards one end; every superlevel set of h is an interval around
+ * that maximum.
+ *
+ * Why the output is exact.  rayo_sphere_hit works in floating point, so
+ * its answer can differ from the real-number one near the outline.  Its
+ * delta is within E = 512 u (l.l + R^2) of the exact g (u = 2^-53; the
+ * rounding of the direction, its normalisation, beta, beta^2 and the sums
+ * add up to about 35 u (l.l + R^2)), and our own estimate of g within
+ * T = E of it.  So:
+ *   - estimate > E + T (front side)  =>  g > E  =>  the exact test hits;
+ *     those pixels form an interval (a superlevel set of h), so two such
+ *     pixels prove every pixel between them;
+ *   - estimate < -(E + 3T) or behind  =>  outside the set M where
+ *     g >= -(E + 2T), which holds every pixel the exact test can call a
+ *     hit; M is an interval containing x*, so one such pixel proves every
+ *     pixel beyond it (away from x*) a miss;
+ *   - everything else gets the exact test, rayo_camera_ray followed by
+ *     rayo_sphere_hit, the very calls of the per-pixel loop.
+ * The analytic ends (roots of a quadratic) are only hints of where to
+ * look: a wrong hint costs time, never a bit.  When the camera is within
+ * a few E of a sphere's surface, or x* cannot be located, that sphere is
+ * tested at every pixel of the row.
+ */
+#include "hit_spans.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "rayo/sphere.h"
+
+#define UNIT_ROUNDOFF (DBL_EPSILON / 2)
+/* E and T above, in units of UNIT_ROUNDOFF * (l.l + R^2). */
+#define DELTA_ERROR 512.0
+#define ESTIMATE_ERROR 512.0
+/* Bound on the rounding of D and N, in units of u |l| |a|^i |b|^j. */
+#define PEAK_ERROR 64.0
+/* Focal lengths past this (fields of view of a few microdegrees) are left
+ * to the per-pixel loop, so every product below stays far from overflow. */
+#define MAX_FOCAL 1099511627776.0
+/* A sphere costs a few pixels' worth of work on every row, so past one
+ * sphere per pixel column (and a handful on tiny frames) the per-pixel
+ * loop, with its bounding volume hierarchy, wins. */
+#define MAX_SPHERES_ANY_WIDTH 16u
+
+typedef struct row_frame {
+    const rayo_camera *camera;
+    uint32_t row;
+    int64_t width;
+    double half_width;
+    double a2, ab, b2, gram; /* a.a, a.b, b.b, a.a b.b - (a.b)^2 */
+    rayo_vec3 b;
+    unsigned char *out;
+} row_frame;
+
+typedef struct sphere_row {
+    const rayo_sphere *sphere;
+    double length;         /* |l| */
+    double p, q, k;        /* l.a, l.b, l.l - R^2 */
+    double surely_hit;     /* E + T */
+    double surely_missed;  /* -(E + 3T) */
+} sphere_row;
+
+static int bit_set(const unsigned char *out, int64_t i)
+{
+    return (out[i >> 3] >> (7 - (i & 7))) & 1;
+}
+
+static void set_bit(unsigned char *out, int64_t i)
+{
+    out[i >> 3] = (unsigned char)(out[i >> 3] | (0x80u >> (i & 7)));
+}
+
+/* Sets bits first..last, inclusive. */
+static void fill_span(unsigned char *out, int64_t first, int64_t last)
+{
+    size_t b0 = (size_t)(first >> 3), b1 = (size_t)(last >> 3);
+    unsigned char m0 = (unsigned char)(0xFFu >> (first & 7));
+    unsigned char m1 = (unsigned char)(0xFF00u >> (1 + (last & 7)));
+    if (b0 == b1) {
+        out[b0] = (unsigned char)(out[b0] | (m0 & m1));
+        return;
+    }
+    out[b0] = (unsigned char)(out[b0] | m0);
+    memset(out + b0 + 1, 0xFF, b1 - b0 - 1);
+    out[b1] = (unsigned char)(out[b1] | m1);
+}
+
+/* The per-pixel loop's own test, for one sphere. */
+static void exact_test(const row_frame *f, const rayo_sphere *sphere,
+                       int64_t i)
+{
+    rayo_ray ray;
+    if (bit_set(f->out, i))
+        return;
+    ray = rayo_camera_ray(f->camera, (double)i, (double)f->row);
+    if (rayo_sphere_hit(sphere, &ray, 0.0))
+        set_bit(f->out, i);
+}
+
+static void exact_range(const row_frame *f, const rayo_sphere *sphere,
+                        int64_t first, int64_t last)
+{
+    int64_t i;
+    for (i = first; i <= last; i++)
+        exact_test(f, sphere, i);
+}
+
+/* Our estimate of g at pixel i; *front gets the sign of l.d. */
+static double estimate(const row_frame *f, const sphere_row *s, int64_t i,
+                       int *front)
+{
+    double x = (double)i - f->half_width;
+    double num = s->p * x + s->q;
+    double den = (f->a2 * x + 2.0 * f->ab) * x + f->b2;
+    *front = num > 0.0;
+    return num * num / den - s->k;
+}
+
+/* 1 when pixel i is proven outside M (see the top of the file). */
+static int surely_outside(const row_frame *f, const sphere_row *s,
+                          int64_t i)
+{
+    int front;
+    double g = estimate(f, s, i, &front);
+    return !front || g < s->surely_missed;
+}
+
+/* 1 when the exact test is proven to hit pixel i. */
+static int surely_inside(const row_frame *f, const sphere_row *s, int64_t i)
+{
+    int front;
+    double g = estimate(f, s, i, &front);
+    return front && g > s->surely_hit;
+}
+
+/*
+ * The supremum of h^2 over the whole line is |l projected on the plane of
+ * a and b|^2; when even that misses, so does the row.
+ */
+static int row_misses(const row_frame *f, const sphere_row *s)
+{
+    double p = s->p, q = s->q;
+    double h2 = (p * p * f->b2 - 2.0 * p * q * f->ab + q * q * f->a2) /
+                f->gram;
+    return h2 < s->k + s->surely_missed;
+}
+
+/*
+ * Where h peaks along the line: [*lo, *hi] in x holds x*, or both are
+ * +-INFINITY when h grows towards that end.  Returns 0 when the row
+ * surely misses, -1 when x* cannot be located, 1 otherwise.
+ */
+static int peak_window(const row_frame *f, const sphere_row *s, double *lo,
+                       double *hi)
+{
+    double p = s->p, q = s->q;
+    double d = q * f->a2 - p * f->ab;
+    double n = p * f->b2 - q * f->ab;
+    double nb = sqrt(f->b2), na = sqrt(f->a2);
+    double err_d = PEAK_ERROR * UNIT_ROUNDOFF * s->length * f->a2 * nb;
+    double err_n = PEAK_ERROR * UNIT_ROUNDOFF * s->length * na * f->b2;
+    double x, err;
+    if (fabs(d) <= err_d) {
+        /* x* may be anywhere past 2^20 pixels, or h may have no maximum:
+         * either way it grows towards the end where p x grows, provided
+         * N says so beyond doubt. */
+        if (!(fabs(n) - err_n > 2.0 * err_d * 1048576.0 && n * p > 0.0))
+            return -1;
+        *lo = *hi = p > 0.0 ? INFINITY : -INFINITY;
+        return 1;
+    }
+    if (d < 0.0) {
+        /* A minimum: the supremum is |p|/|a|, towards the end where p x
+         * grows. */
+        if (p * p / f->a2 < s->k + s->surely_missed)
+            return 0;
+        *lo = *hi = p > 0.0 ? INFINITY : -INFINITY;
+        return 1;
+    }
+    x = n / d;
+    err = (err_n + fabs(x) * err_d) / (d - err_d) + 0.5;
+    if (!isfinite(x) || !isfinite(err))
+        return -1;
+    *lo = x - err;
+    *hi = x + err;
+    return 1;
+}
+
+/*
+ * Roots of (p x + q)^2 = k |x a + b|^2 nearest the peak window on either
+ * side; NaN or +-INFINITY when there is none.  Hints only.
+ */
+static void root_hints(const row_frame *f, const sphere_row *s, double lo,
+                       double hi, double *left, double *right)
+{
+    double p = s->p, q = s->q, k = s->k;
+    double alpha = p * p - k * f->a2;
+    double beta = p * q - k * f->ab;
+    double gamma = q * q - k * f->b2;
+    double disc = beta * beta - alpha * gamma;
+    double t, r1, r2, roots[2];
+    int j;
+    *left = -INFINITY;
+    *right = INFINITY;
+    if (!(disc >= 0.0))
+        return;
+    t = -(beta + copysign(sqrt(disc), beta));
+    r1 = t / alpha;
+    r2 = gamma / t;
+    roots[0] = r1;
+    roots[1] = r2;
+    for (j = 0; j < 2; j++) {
+        if (!isfinite(roots[j]))
+            continue;
+        if (roots[j] <= lo && roots[j] > *left)
+            *left = roots[j];
+        if (roots[j] >= hi && roots[j] < *right)
+            *right = roots[j];
+    }
+}
+
+/* floor(v) as a pixel index, clamped to [-1, width]. */
+static int64_t index_floor(double v, int64_t width)
+{
+    if (!(v >= -1.0))
+        return -1;
+    if (v >= (double)width)
+        return width;
+    return (int64_t)floor(v);
+}
+
+static int64_t index_ceil(double v, int64_t width)
+{
+    if (!(v >= -1.0))
+        return -1;
+    if (v >= (double)width)
+        return width;
+    return (int64_t)ceil(v);
+}
+
+/*
+ * From start, moves by doubling steps in direction (+1 or -1) until a
+ * pixel is surely outside M, or past the row's end (-1 or width).
+ */
+static int64_t walk_out(const row_frame *f, const sphere_row *s,
+                        int64_t start, int direction)
+{
+    int64_t i = start, step = 1;
+    while (i >= 0 && i < f->width && !surely_outside(f, s, i)) {
+        i += direction * step;
+        step *= 2;
+    }
+    return i < 0 ? -1 : i >= f->width ? f->width : i;
+}
+
+/*
+ * Pixels strictly between left and right may hit: trace inwards from both
+ * ends until a pixel surely hits, and fill between the two found.
+ */
+static void resolve_between(const row_frame *f, const sphere_row *s,
+                            int64_t left, int64_t right)
+{
+    int64_t i, j;
+    for (i = left + 1; i < right; i++) {
+        if (surely_inside(f, s, i))
+            break;
+        exact_test(f, s->sphere, i);
+    }
+    if (i >= right)
+        return;
+    for (j = right - 1; j > i; j--) {
+        if (surely_inside(f, s, j))
+            break;
+        exact_test(f, s->sphere, j);
+    }
+    fill_span(f->out, i, j);
+}
+
+/* A sphere seen from outside (s->k well above the error bounds). */
+static void trace_outside(const row_frame *f, const sphere_row *s)
+{
+    double lo, hi, hint_left, hint_right;
+    int64_t left, right, start;
+    int located;
+    if (row_misses(f, s))
+        return;
+    located = peak_window(f, s, &lo, &hi);
+    if (located == 0)
+        return;
+    if (located < 0) {
+        exact_range(f, s->sphere, 0, f->width - 1);
+        return;
+    }
+    root_hints(f, s, lo, hi, &hint_left, &hint_right);
+    start = index_floor(lo + f->half_width, f->width) - 1;
+    left = isfinite(hint_left)
+               ? index_floor(hint_left + f->half_width, f->width) - 1
+               : start;
+    left = walk_out(f, s, left < start ? left : start, -1);
+    start = index_ceil(hi + f->half_width, f->width) + 1;
+    right = isfinite(hint_right)
+                ? index_ceil(hint_right + f->half_width, f->width) + 1
+                : start;
+    right = walk_out(f, s, right > start ? right : start, 1);
+    resolve_between(f, s, left, right);
+}
+
+/* Traces one sphere into the row; returns 1 when the row is now full. */
+static int trace_sphere(const row_frame *f, const rayo_sphere *sphere)
+{
+    rayo_vec3 l = rayo_vec3_sub(sphere->center, f->camera->origin);
+    double ll = rayo_vec3_dot(l, l), rr = sphere->radius * sphere->radius;
+    double scale = UNIT_ROUNDOFF * (ll + rr);
+    double e = DELTA_ERROR * scale, t = ESTIMATE_ERROR * scale;
+    double margin = 4.0 * (e + 3.0 * t);
+    sphere_row s;
+    if (!isfinite(scale)) {
+        exact_range(f, sphere, 0, f->width - 1);
+        return 0;
+    }
+    s.sphere = sphere;
+    s.length = sqrt(ll);
+    s.p = rayo_vec3_dot(l, f->camera->right);
+    s.q = rayo_vec3_dot(l, f->b);
+    s.k = ll - rr;
+    s.surely_hit = e + t;
+    s.surely_missed = -(e + 3.0 * t);
+    if (s.k < -margin) {
+        fill_span(f->out, 0, f->width - 1);
+        return 1;
+    }
+    if (s.k <= margin)
+        exact_range(f, sphere, 0, f->width - 1);
+    else
+        trace_outside(f, &s);
+    return 0;
+}
+
+static int spans_apply(const rayo_camera *camera, const rayo_scene *scene)
+{
+    size_t spheres = rayo_scene_sphere_count(scene);
+    if (spheres != rayo_scene_object_count(scene))
+        return 0;
+    if (spheres > MAX_SPHERES_ANY_WIDTH && spheres > camera->width)
+        return 0;
+    return isfinite(camera->focal) && camera->focal <= MAX_FOCAL;
+}
+
+int rayo_hit_spans_row(const rayo_camera *camera, const rayo_scene *scene,
+                       uint32_t row, unsigned char *out)
+{
+    row_frame f;
+    rayo_vec3 a = camera->right;
+    double y = (double)row - (double)(camera->height / 2);
+    size_t i, spheres;
+    if (!spans_apply(camera, scene))
+        return 0;
+    f.camera = camera;
+    f.row = row;
+    f.width = camera->width;
+    f.half_width = (double)(camera->width / 2);
+    f.b = rayo_vec3_add(rayo_vec3_scale(camera->up, -y),
+                        rayo_vec3_scale(camera->forward, camera->focal));
+    f.a2 = rayo_vec3_dot(a, a);
+    f.ab = rayo_vec3_dot(a, f.b);
+    f.b2 = rayo_vec3_dot(f.b, f.b);
+    f.gram = f.a2 * f.b2 - f.ab * f.ab;
+    f.out = out;
+    memset(out, 0, ((size_t)camera->width + 7) / 8);
+    spheres = rayo_scene_sphere_count(scene);
+    for (i = 0; i < spheres; i++)
+        if (trace_sphere(&f, rayo_scene_sphere(scene, i)))
+            break;
+    return 1;
+}
