@@ -1,0 +1,91 @@
+#!/bin/sh
+# scenes.t - `rayo render SCENE`: the course's example scenes, the output
+# format each mode chooses, command-line options over the scene's camera
+# and settings, and the same bytes whatever the threads.
+. "$(dirname "$0")/lib.sh"
+EX="$RAYO_SOURCE/examples"
+
+# Scene 1 is the assignment: byte for byte what `rayo` writes.
+rayo >"$TMP/default.pbm"
+run_capture render "$EX/ej1.scene"
+is "$status" 0 "ej1.scene renders"
+cmp -s "$TMP/default.pbm" "$TMP/out"
+ok $? "ej1.scene is byte for byte the default render"
+is "$(wc -c <"$TMP/err" | tr -d ' ')" 0 "nothing on stderr"
+
+# Camera options override the scene's: ej1.scene at another size and field
+# of view is the default sphere at that size and field of view.
+rayo render "$EX/ej1.scene" -W 97 -H 61 --fov 60 >"$TMP/a.pbm"
+rayo -W 97 -H 61 --fov 60 >"$TMP/b.pbm"
+cmp -s "$TMP/a.pbm" "$TMP/b.pbm"
+ok $? "-W -H --fov override the scene's camera"
+rayo render "$EX/ej1.scene" -W 80 -H 60 --origin 0,0,-1 >"$TMP/a.pbm"
+rayo -W 80 -H 60 --origin 0,0,-1 >"$TMP/b.pbm"
+cmp -s "$TMP/a.pbm" "$TMP/b.pbm"
+ok $? "--origin overrides the scene's origin"
+
+# --shade overrides the scene's mode: scene 2 in hit mode is its spheres
+# given on the command line.
+rayo render "$EX/ej2.scene" --shade hit >"$TMP/a.pbm"
+rayo --sphere -0.4,0.75,1.55,0.3 --sphere -0.55,-0.4,2,0.85 \
+     --sphere 3,1.5,4,0.4 --sphere 3,1.5,5,0.4 --sphere 3,-1.5,4,0.4 \
+     --sphere 3,-1.5,5,0.4 >"$TMP/b.pbm"
+cmp -s "$TMP/a.pbm" "$TMP/b.pbm"
+ok $? "--shade hit on ej2.scene: the same spheres in black and white"
+
+# The format follows the mode; the Netpbm tools read what we write.
+rayo render "$EX/ej2.scene" >"$TMP/ej2.pgm"
+is "$(pamfile "$TMP/ej2.pgm" | sed 's/.*:[[:space:]]*//')" "PGM plain, 640 by 480  maxval 255" "course-gray writes plain PGM"
+rayo render "$EX/ej3.scene" >"$TMP/ej3.ppm"
+is "$(pamfile "$TMP/ej3.ppm" | sed 's/.*:[[:space:]]*//')" "PPM plain, 640 by 480  maxval 255" "course-color writes plain PPM"
+rayo render "$EX/ej3.scene" --raw -o "$TMP/ej3raw.ppm"
+is "$(head -c 2 "$TMP/ej3raw.ppm")" "P6" "--raw writes P6"
+rayo render "$EX/ej3.scene" -o "$TMP/ej3.png"
+is "$(head -c 8 "$TMP/ej3.png" | od -An -tx1 | tr -d ' \n')" "89504e470d0a1a0a" "-o .png writes PNG"
+pnmtoplainpnm "$TMP/ej3raw.ppm" | tail -n +4 | tr -s ' \n' '\n\n' >"$TMP/a"
+pngtopnm "$TMP/ej3.png" | pnmtoplainpnm | tail -n +4 | tr -s ' \n' '\n\n' >"$TMP/b"
+tail -n +4 "$TMP/ej3.ppm" | tr -s ' \n' '\n\n' >"$TMP/c"
+cmp -s "$TMP/a" "$TMP/b" && cmp -s "$TMP/a" "$TMP/c"
+ok $? "P3, P6 and PNG hold the same pixels (Netpbm)"
+rayo render "$EX/ej2.scene" -o "$TMP/ej2.png"
+is "$(pngtopnm "$TMP/ej2.png" | pamfile - | sed 's/.*:[[:space:]]*//')" "PGM raw, 640 by 480  maxval 255" "course-gray PNG is 8-bit gray"
+
+# Anti-aliasing: --samples 1 is the one-ray render; more samples change
+# the outlines only, and never depend on the thread count.
+rayo render "$EX/ej3.scene" --samples 1 >"$TMP/s1.ppm"
+cmp -s "$TMP/ej3.ppm" "$TMP/s1.ppm"
+ok $? "--samples 1 gives the bytes of no --samples"
+rayo render "$EX/ej1.scene" --samples 1 >"$TMP/s1.pbm"
+cmp -s "$TMP/default.pbm" "$TMP/s1.pbm"
+ok $? "--samples 1 in hit mode gives the default bytes"
+rayo render "$EX/ej3.scene" --samples 3 -W 320 -H 240 -j1 --raw -o "$TMP/s3j1.ppm"
+rayo render "$EX/ej3.scene" --samples 3 -W 320 -H 240 -j2 --raw -o "$TMP/s3j2.ppm"
+cmp -s "$TMP/s3j1.ppm" "$TMP/s3j2.ppm"
+ok $? "--samples 3: -j1 and -j2 give the same bytes"
+rayo render "$EX/ej3.scene" --samples 3 -W 320 -H 240 -j2 --raw -o "$TMP/again.ppm"
+cmp -s "$TMP/s3j2.ppm" "$TMP/again.ppm"
+ok $? "--samples 3: the same command twice gives the same bytes"
+rayo render "$EX/ej3.scene" -W 320 -H 240 --raw -o "$TMP/s1small.ppm"
+cmp -s "$TMP/s3j1.ppm" "$TMP/s1small.ppm"
+ok "$([ $? -ne 0 ]; echo $?)" "--samples 3 differs from one ray per pixel"
+printf 'samples 3\n' | cat - "$EX/ej3.scene" | grep -v '^shade' >"$TMP/s3.scene"
+rayo render "$TMP/s3.scene" --shade course-color -W 320 -H 240 --raw -o "$TMP/file3.ppm"
+cmp -s "$TMP/s3j1.ppm" "$TMP/file3.ppm"
+ok $? "'samples 3' in the scene is --samples 3"
+rayo render "$EX/ej1.scene" --samples 4 -j1 >"$TMP/h4a.pbm"
+rayo render "$EX/ej1.scene" --samples 4 -j2 >"$TMP/h4b.pbm"
+cmp -s "$TMP/h4a.pbm" "$TMP/h4b.pbm"
+ok $? "hit mode, --samples 4: -j1 and -j2 give the same bytes"
+black() { pnmtoplainpnm "$1" | tail -n +3 | tr -cd 1 | wc -c | tr -d ' '; }
+n1=$(black "$TMP/default.pbm") n4=$(black "$TMP/h4a.pbm")
+ok "$([ $((n4 - n1)) -le 200 ] && [ $((n1 - n4)) -le 200 ]; echo $?)" "hit mode, --samples 4: about as many black pixels ($n4 against $n1)"
+
+# Every example renders, in every mode, the same with one thread or two.
+for scene in "$EX"/*.scene; do
+    name=$(basename "$scene")
+    rayo render "$scene" -W 160 -H 120 -j1 --raw -o "$TMP/j1.ppm" --shade phong
+    rayo render "$scene" -W 160 -H 120 -j2 --raw -o "$TMP/j2.ppm" --shade phong
+    cmp -s "$TMP/j1.ppm" "$TMP/j2.ppm"
+    ok $? "$name, phong, 160x120: -j1 and -j2 give the same bytes"
+done
+done_testing
