@@ -33,12 +33,13 @@ double rayo_lcg_next(rayo_lcg *lcg);
 
 /*
  * Adds 8 coloured materials and `count` spheres to scene, drawn from
- * seed: centres uniform in the box x in [-16, 16], y in [-9, 9],
- * z in [8, 40] (in front of the default camera at the origin looking
- * down +z), radii uniform in [0.05, 0.25], materials in turn.  With
- * count = 100000 at 1920x1080 and a 90 degree field of view about a
- * third of the rays hit something.  RAYO_ERR_LIMIT when the scene would
- * pass RAYO_MAX_OBJECTS.
+ * seed.  Each sphere, in turn: z uniform in [10, 100], x uniform in
+ * [-z, z], y uniform in [-0.5625 z, 0.5625 z] (so centres fill the view
+ * of the default camera at the origin looking down +z, 90 degrees, 16:9),
+ * radius z * s * u with u uniform in [0.001, 0.0035] and
+ * s = sqrt(100000 / count), so that spheres cover about the same part of
+ * the picture (roughly half) whatever their number; materials in turn.
+ * RAYO_ERR_LIMIT when the scene would pass RAYO_MAX_OBJECTS.
  */
 rayo_status rayo_scene_random_spheres(rayo_scene *scene, size_t count,
                                       uint64_t seed, rayo_error *err);

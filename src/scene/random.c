@@ -56,6 +56,7 @@ rayo_status rayo_scene_random_spheres(rayo_scene *scene, size_t count,
 {
     rayo_lcg lcg;
     unsigned first = 0;
+    double scale;
     size_t i;
     rayo_status status;
     if (count > RAYO_MAX_OBJECTS ||
@@ -68,11 +69,12 @@ rayo_status rayo_scene_random_spheres(rayo_scene *scene, size_t count,
     if (status != RAYO_OK)
         return status;
     rayo_lcg_seed(&lcg, seed);
+    scale = count ? sqrt(100000.0 / (double)count) : 1.0;
     for (i = 0; i < count; i++) {
-        double x = uniform(&lcg, -16.0, 16.0);
-        double y = uniform(&lcg, -9.0, 9.0);
-        double z = uniform(&lcg, 8.0, 40.0);
-        double r = uniform(&lcg, 0.05, 0.25);
+        double z = uniform(&lcg, 10.0, 100.0);
+        double x = uniform(&lcg, -z, z);
+        double y = uniform(&lcg, -0.5625 * z, 0.5625 * z);
+        double r = z * scale * uniform(&lcg, 0.001, 0.0035);
         status = rayo_scene_add_sphere_material(
             scene, rayo_vec3_make(x, y, z), r, first + (unsigned)(i % 8),
             err);
