@@ -80,6 +80,20 @@ black() { pnmtoplainpnm "$1" | tail -n +3 | tr -cd 1 | wc -c | tr -d ' '; }
 n1=$(black "$TMP/default.pbm") n4=$(black "$TMP/h4a.pbm")
 ok "$([ $((n4 - n1)) -le 200 ] && [ $((n1 - n4)) -le 200 ]; echo $?)" "hit mode, --samples 4: about as many black pixels ($n4 against $n1)"
 
+# The pictures in docs/ are what rayo renders today (pixels, via Netpbm).
+for n in 1 2 3; do
+    rayo render "$EX/ej$n.scene" -o "$TMP/ej$n.png"
+    pngtopnm "$TMP/ej$n.png" >"$TMP/a.pnm"
+    pngtopnm "$RAYO_SOURCE/docs/images/ej$n.png" >"$TMP/b.pnm"
+    cmp -s "$TMP/a.pnm" "$TMP/b.pnm"
+    ok $? "docs/images/ej$n.png is the render of examples/ej$n.scene"
+done
+# The example at the top of docs/scene-format.md is a valid scene.
+awk '/^```$/ && !done { if (inb) { done = 1; inb = 0 } else inb = 1; next } inb' \
+    "$RAYO_SOURCE/docs/scene-format.md" >"$TMP/doc.scene"
+run_capture render "$TMP/doc.scene" -W 64 -H 48 -o "$TMP/doc.png"
+is "$status" 0 "the example in docs/scene-format.md renders"
+
 # Every example renders, in every mode, the same with one thread or two.
 for scene in "$EX"/*.scene; do
     name=$(basename "$scene")
