@@ -7,6 +7,12 @@
  * MMIX constants), whose top 53 bits make a double in [0, 1): the same
  * seed gives the same scene on every machine.  Not for anything that
  * needs good randomness.
+ *
+ * Both layouts are made for the default camera (origin, looking down +z,
+ * 90 degrees, 16:9 such as 1920x1080) and scale the radii with the count,
+ * so that 10 or 100000 spheres cover about the same part of the picture:
+ * a scene of ten and a scene of 100000 are the same picture in coarse and
+ * fine grain, and their times per pixel can be compared.
  */
 #ifndef RAYO_SCENE_RANDOM_H
 #define RAYO_SCENE_RANDOM_H
@@ -32,17 +38,30 @@ void rayo_lcg_seed(rayo_lcg *lcg, uint64_t seed);
 double rayo_lcg_next(rayo_lcg *lcg);
 
 /*
- * Adds 8 coloured materials and `count` spheres to scene, drawn from
- * seed.  Each sphere, in turn: z uniform in [10, 100], x uniform in
- * [-z, z], y uniform in [-0.5625 z, 0.5625 z] (so centres fill the view
- * of the default camera at the origin looking down +z, 90 degrees, 16:9),
- * radius z * s * u with u uniform in [0.001, 0.0035] and
- * s = sqrt(100000 / count), so that spheres cover about the same part of
- * the picture (roughly half) whatever their number; materials in turn.
- * RAYO_ERR_LIMIT when the scene would pass RAYO_MAX_OBJECTS.
+ * The benchmark scene: a field of spheres lying on a ground plane, as in
+ * most many-object test scenes.  Adds 9 materials (a gray ground and 8
+ * colours), the plane y = -1 (object 0, when the scene was empty) and
+ * `count` spheres, materials in turn.  Sphere i draws, in this order,
+ * x uniform in [-50, 50], z uniform in [5, 105] and u uniform in [0, 1),
+ * and gets radius r = 0.3 s (0.5 + 0.5 u) with s = sqrt(10000 / count)
+ * (the mean spacing of the centres) and centre (x, r - 1, z): it rests
+ * on the ground.  Spheres may overlap.  RAYO_ERR_LIMIT when the scene
+ * would pass RAYO_MAX_OBJECTS; RAYO_ERR_INVALID for count 0.
  */
 rayo_status rayo_scene_random_spheres(rayo_scene *scene, size_t count,
                                       uint64_t seed, rayo_error *err);
+
+/*
+ * The hard case: a cloud of spheres filling the view in depth, so that a
+ * ray that misses them all crosses the whole cloud.  Adds 8 coloured
+ * materials and `count` spheres, materials in turn; sphere i draws z
+ * uniform in [10, 100], x uniform in [-z, z], y uniform in
+ * [-0.5625 z, 0.5625 z] and u uniform in [0.001, 0.0035], and gets
+ * radius z u sqrt(100000 / count).  About half the picture is covered.
+ * Errors as above.
+ */
+rayo_status rayo_scene_random_cloud(rayo_scene *scene, size_t count,
+                                    uint64_t seed, rayo_error *err);
 
 #ifdef __cplusplus
 }

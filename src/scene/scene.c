@@ -167,6 +167,7 @@ static void end_object(rayo_scene *scene, rayo_object_kind kind,
     scene->object_count++;
     rayo_bvh_free(scene->bvh);
     scene->bvh = NULL;
+    scene->prepared = 0;
 }
 
 rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,

@@ -52,8 +52,12 @@ struct rayo_scene {
     rayo_light *lights;
     size_t light_count, light_capacity;
     rayo_vec3 ambient, background;
-    rayo_bvh *bvh; /* NULL unless prepared since the last add */
+    int prepared;  /* rayo_scene_prepare ran since the last add */
+    rayo_bvh *bvh; /* the hierarchy, when prepared and worth one */
 };
+
+/* Up to this many spheres and triangles, testing each beats a tree. */
+#define RAYO_SCENE_BRUTE_MAX 12
 
 /*
  * Tests object `object` against the ray; its t with t_min < t < t_max,

@@ -253,6 +253,52 @@ static void check_tiny_scenes(void)
     check_same("one triangle", 12, 0, 1, 0, 300);
 }
 
+/* The hierarchy on its own, for the sizes scenes never give it: a
+ * callback that hits primitive 0 at t = 2 only. */
+static double hit_only_zero(const void *context, uint32_t prim,
+                            const rayo_ray *ray, double t_min, double t_max)
+{
+    (void)context;
+    (void)ray;
+    return prim == 0 && t_min < 2 && 2 < t_max ? 2.0 : INFINITY;
+}
+
+static void check_bvh_alone(void)
+{
+    rayo_bvh *bvh;
+    rayo_error err;
+    rayo_box box = {{-1, -1, 1}, {1, 1, 3}};
+    uint32_t id = 0;
+    rayo_bvh_cost cost = {0, 0};
+    rayo_ray r;
+    double t = INFINITY;
+    uint32_t best = UINT32_MAX;
+    r.origin = rayo_vec3_make(0, 0, 0);
+    r.direction = rayo_vec3_make(0, 0, 1);
+    is_int(rayo_bvh_build(&bvh, &box, &id, 0, &err), RAYO_OK,
+           "bvh of nothing");
+    rayo_bvh_nearest(bvh, &r, 0, INFINITY, hit_only_zero, NULL, &t, &best,
+                     &cost);
+    ok(t == INFINITY && best == UINT32_MAX &&
+           !rayo_bvh_any(bvh, &r, 0, INFINITY, hit_only_zero, NULL, &cost),
+       "bvh of nothing: no hit");
+    rayo_bvh_free(bvh);
+    is_int(rayo_bvh_build(&bvh, &box, &id, 1, &err), RAYO_OK,
+           "bvh of one box");
+    rayo_bvh_nearest(bvh, &r, 0, INFINITY, hit_only_zero, NULL, &t, &best,
+                     &cost);
+    ok(t == 2 && best == 0, "bvh of one box: its primitive at t = 2");
+    ok(rayo_bvh_any(bvh, &r, 0, INFINITY, hit_only_zero, NULL, &cost),
+       "bvh of one box: any-hit finds it");
+    ok(!rayo_bvh_any(bvh, &r, 0, 0.5, hit_only_zero, NULL, &cost),
+       "bvh of one box: t_max = 0.5 ends before the box");
+    r.origin = rayo_vec3_make(5, 0, 0);
+    ok(!rayo_bvh_any(bvh, &r, 0, INFINITY, hit_only_zero, NULL, &cost) &&
+           cost.prim_tests == 2,
+       "bvh of one box: a ray beside the box never calls the test");
+    rayo_bvh_free(bvh);
+}
+
 /* The hierarchy does its job: far fewer tests than objects per ray. */
 static void check_cost(void)
 {
@@ -263,7 +309,7 @@ static void check_cost(void)
     rayo_hit h;
     uint32_t i, j;
     rayo_scene_create(&s, &err);
-    rayo_scene_random_spheres(s, 20000, 42, &err);
+    rayo_scene_random_cloud(s, 20000, 42, &err);
     rayo_scene_prepare(s, &err);
     rayo_camera_init(&cam, 192, 108, 90.0, rayo_vec3_make(0, 0, 0), &err);
     for (j = 0; j < 108; j += 3)
@@ -273,7 +319,7 @@ static void check_cost(void)
         }
     ok(st.rays == 64 * 36, "cost: %lu rays counted", (unsigned long)st.rays);
     ok(st.prim_tests < 20 * st.rays,
-       "cost: 20000 spheres, %.1f sphere tests per ray (< 20)",
+       "cost: cloud of 20000 spheres, %.1f sphere tests per ray (< 20)",
        (double)st.prim_tests / (double)st.rays);
     ok(st.node_tests + st.prim_tests < 400 * st.rays,
        "cost: %.1f box tests per ray; all tests < 2%% of brute force's",
@@ -282,47 +328,103 @@ static void check_cost(void)
     rayo_scene_free(s);
 }
 
-static void check_generator(void)
+static int same_spheres(const rayo_scene *a, const rayo_scene *b)
+{
+    size_t i;
+    if (rayo_scene_sphere_count(a) != rayo_scene_sphere_count(b))
+        return 0;
+    for (i = 0; i < rayo_scene_sphere_count(a); i++) {
+        const rayo_sphere *p = rayo_scene_sphere(a, i),
+                          *q = rayo_scene_sphere(b, i);
+        if (p->center.x != q->center.x || p->center.y != q->center.y ||
+            p->center.z != q->center.z || p->radius != q->radius)
+            return 0;
+    }
+    return 1;
+}
+
+static void check_field(void)
+{
+    rayo_scene *a, *b;
+    rayo_error err;
+    size_t i, inside = 1;
+    rayo_scene_create(&a, &err);
+    rayo_scene_create(&b, &err);
+    is_int(rayo_scene_random_spheres(a, 1000, 1, &err), RAYO_OK,
+           "field: 1000 spheres");
+    rayo_scene_random_spheres(b, 1000, 1, &err);
+    ok(same_spheres(a, b), "field: same seed, same scene");
+    is_int(rayo_scene_object_count(a), 1001, "field: ground plane + 1000");
+    is_int(rayo_scene_object_kind(a, 0), RAYO_OBJECT_PLANE,
+           "field: object 0 is the ground");
+    is_int(rayo_scene_material_count(a), 10, "field: 9 materials added");
+    /* Seed 1's first three draws, by the same formula in Python; spacing
+     * sqrt(10000 / 1000). */
+    is_double(rayo_scene_sphere(a, 0)->center.x, -7.679082912728674, 1e-13,
+              "field: sphere 0's x is the first draw");
+    is_double(rayo_scene_sphere(a, 0)->center.z, 55.940744288372066, 1e-13,
+              "field: its z the second");
+    is_double(rayo_scene_sphere(a, 0)->radius, 0.7818855131188867, 1e-13,
+              "field: its radius from the third");
+    is_double(rayo_scene_sphere(a, 0)->center.y, -0.21811448688111335,
+              1e-13, "field: it rests on y = -1");
+    for (i = 0; i < 1000; i++) {
+        const rayo_sphere *p = rayo_scene_sphere(a, i);
+        double r = p->radius, sp = sqrt(10.0);
+        if (fabs(p->center.x) > 50 || p->center.z < 5 || p->center.z > 105 ||
+            r < 0.15 * sp - 1e-12 || r > 0.3 * sp + 1e-12 ||
+            fabs(p->center.y - (r - 1)) > 1e-12)
+            inside = 0;
+    }
+    ok(inside, "field: every sphere within the documented ranges");
+    is_int(rayo_scene_random_spheres(a, 0, 1, &err), RAYO_ERR_INVALID,
+           "field: 0 spheres refused");
+    is_int(rayo_scene_random_spheres(a, RAYO_MAX_OBJECTS, 1, &err),
+           RAYO_ERR_LIMIT, "field: past the object limit");
+    rayo_scene_free(a);
+    rayo_scene_free(b);
+}
+
+static void check_cloud(void)
 {
     rayo_scene *a, *b;
     rayo_error err;
     rayo_lcg g;
-    size_t i, same = 1;
+    size_t i, inside = 1;
     rayo_lcg_seed(&g, 1);
     /* state 6364136223846793005 + 1442695040888963407, top 53 bits. */
     is_double(-16 + 32 * rayo_lcg_next(&g), -2.4573065320731757, 0,
-              "lcg: first x of seed 1");
+              "lcg: first draw of seed 1");
     is_double(-9 + 18 * rayo_lcg_next(&g), 0.16933397190697086, 0,
-              "lcg: first y of seed 1");
+              "lcg: second draw of seed 1");
     rayo_scene_create(&a, &err);
     rayo_scene_create(&b, &err);
-    is_int(rayo_scene_random_spheres(a, 1000, 1, &err), RAYO_OK,
-           "generator: 1000 spheres");
-    rayo_scene_random_spheres(b, 1000, 1, &err);
+    is_int(rayo_scene_random_cloud(a, 1000, 1, &err), RAYO_OK,
+           "cloud: 1000 spheres");
+    rayo_scene_random_cloud(b, 1000, 1, &err);
+    ok(same_spheres(a, b), "cloud: same seed, same scene");
     /* Seed 1's first four draws, by the same formula in Python: z, x, y
      * and the radius (scale sqrt(100000 / 1000) = 10). */
     is_double(rayo_scene_sphere(a, 0)->center.z, 48.08882537854419, 1e-13,
-              "generator: sphere 0's z is the first draw");
+              "cloud: sphere 0's z is the first draw");
     is_double(rayo_scene_sphere(a, 0)->center.x, 0.9047857561877422, 1e-13,
-              "generator: its x the second");
+              "cloud: its x the second");
     is_double(rayo_scene_sphere(a, 0)->center.y, 8.026232613270814, 1e-13,
-              "generator: its y the third");
+              "cloud: its y the third");
     is_double(rayo_scene_sphere(a, 0)->radius, 0.9411745220351693, 1e-13,
-              "generator: its radius the fourth");
+              "cloud: its radius the fourth");
     for (i = 0; i < 1000; i++) {
-        const rayo_sphere *p = rayo_scene_sphere(a, i),
-                          *q = rayo_scene_sphere(b, i);
+        const rayo_sphere *p = rayo_scene_sphere(a, i);
         double z = p->center.z, k = p->radius / (10 * z);
-        if (p->center.x != q->center.x || p->radius != q->radius ||
-            z < 10 || z > 100 || fabs(p->center.x) > z ||
+        if (z < 10 || z > 100 || fabs(p->center.x) > z ||
             fabs(p->center.y) > 0.5625 * z || k < 0.001 - 1e-15 ||
             k > 0.0035 + 1e-15)
-            same = 0;
+            inside = 0;
     }
-    ok(same, "generator: same seed, same scene, within the documented box");
-    is_int(rayo_scene_material_count(a), 9, "generator: 8 materials added");
-    is_int(rayo_scene_random_spheres(a, RAYO_MAX_OBJECTS, 1, &err),
-           RAYO_ERR_LIMIT, "generator: past the object limit");
+    ok(inside, "cloud: every sphere within the documented ranges");
+    is_int(rayo_scene_material_count(a), 9, "cloud: 8 materials added");
+    is_int(rayo_scene_random_cloud(a, RAYO_MAX_OBJECTS, 1, &err),
+           RAYO_ERR_LIMIT, "cloud: past the object limit");
     rayo_scene_free(a);
     rayo_scene_free(b);
 }
@@ -333,7 +435,9 @@ int main(void)
     check_same("dense small scene", 99, 60, 20, 0, 1000);
     check_one_point();
     check_tiny_scenes();
+    check_bvh_alone();
     check_cost();
-    check_generator();
+    check_field();
+    check_cloud();
     return tap_done();
 }

@@ -302,9 +302,9 @@ static void test_scene_queries(void)
     check_small_scene(s, "brute force");
     is_int(rayo_scene_prepare(s, &err), RAYO_OK, "prepare");
     ok(rayo_scene_is_prepared(s), "prepared");
-    check_small_scene(s, "hierarchy");
+    check_small_scene(s, "prepared");
     rayo_scene_add_sphere(s, rayo_vec3_make(0, 0, 5), 0.25, &err);
-    ok(!rayo_scene_is_prepared(s), "an add drops the hierarchy");
+    ok(!rayo_scene_is_prepared(s), "an add undoes the preparation");
     rayo_scene_free(s);
     rayo_scene_free(NULL);
     ok(1, "freeing NULL is fine");
