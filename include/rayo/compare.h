@@ -1,0 +1,164 @@
+/*
+ * compare.h - comparing a rendered image with a reference, and saying
+ * what is wrong when they disagree.
+ *
+ * Both images become black/white masks (image_convert.h: gray and colour
+ * are black below half their maximum).  The image is laid on the
+ * reference's frame: pixel (i, j) of each is the point
+ * x = i - floor(w/2), y = j - floor(h/2) of its own grid (camera.h), so
+ * images of different sizes are aligned at their optical centres and the
+ * part of the image outside the reference's frame is ignored.
+ *
+ * What is measured (rayo_compare_report): the mismatched pixels; the IoU
+ * (intersection over union) of the black regions; for every mismatch its
+ * distance from the reference's outline, which is the Euclidean distance
+ * in pixels to the nearest reference pixel of the other colour (a
+ * mismatch just outside the reference's sphere is 1 away); the offset
+ * between the centroids of the black shapes (x to the right, y down, in
+ * pixels) and their scale (the square root of the ratio of their areas).
+ *
+ * The verdict:
+ *   identical     the masks agree everywhere (and the sizes are equal);
+ *   consistent    same size, every mismatch within `tolerance` pixels of
+ *                 the reference's outline, and no whole-pixel shift of the
+ *                 image explains the mismatches (a one-row shift keeps
+ *                 every mismatch on the outline but is still a mistake);
+ *   inconsistent  anything else.
+ * An inconsistent image gets a diagnosis when one fits: each candidate
+ * mistake (a flip, inverted colours, a transposition, a shift, a scale
+ * about the optical centre) is undone on the image, and the candidate is
+ * named only when the result becomes consistent with the reference, or
+ * nearly so (at most a twentieth of the far mismatches left).  Otherwise
+ * the black shape itself is examined: empty, not ellipse-like ("not a
+ * sphere"), or a sphere somewhere else or of another size.
+ *
+ * Masks are packed bits and distances come from per-column lists of the
+ * reference's colour changes, so memory is a few bits per pixel: no
+ * full-size distance map.  Not an image-similarity metric for
+ * photographs (no PSNR, no SSIM), not a tool for colour differences.
+ */
+#ifndef RAYO_COMPARE_H
+#define RAYO_COMPARE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/image.h"
+#include "rayo/output.h"
+#include "rayo/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum rayo_compare_verdict {
+    RAYO_VERDICT_IDENTICAL,
+    RAYO_VERDICT_CONSISTENT,
+    RAYO_VERDICT_INCONSISTENT
+} rayo_compare_verdict;
+
+typedef enum rayo_compare_diagnosis {
+    RAYO_DIAGNOSIS_NONE,            /* identical or consistent */
+    RAYO_DIAGNOSIS_FLIPPED_VERTICALLY,   /* rows upside down */
+    RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY, /* columns right to left */
+    RAYO_DIAGNOSIS_ROTATED_180,     /* flipped both ways */
+    RAYO_DIAGNOSIS_INVERTED,        /* 0 and 1 swapped */
+    RAYO_DIAGNOSIS_TRANSPOSED,      /* rows written as columns */
+    RAYO_DIAGNOSIS_SHIFTED,         /* moved by (shift_x, shift_y) */
+    RAYO_DIAGNOSIS_SCALED,          /* scaled by `scale_found` about the
+                                       optical centre: field of view or
+                                       focal distance */
+    RAYO_DIAGNOSIS_DIFFERENT_SIZE,  /* width or height differ */
+    RAYO_DIAGNOSIS_EMPTY,           /* the image has no black pixel */
+    RAYO_DIAGNOSIS_NOT_A_SPHERE,    /* black region not ellipse-like */
+    RAYO_DIAGNOSIS_OTHER_SPHERE,    /* a sphere, but placed or sized
+                                       differently */
+    RAYO_DIAGNOSIS_UNKNOWN          /* nothing fits */
+} rayo_compare_diagnosis;
+
+typedef struct rayo_compare_options {
+    double tolerance; /* pixels; default 2 */
+} rayo_compare_options;
+
+void rayo_compare_options_init(rayo_compare_options *options);
+
+typedef struct rayo_compare_report {
+    uint32_t reference_width, reference_height;
+    uint32_t image_width, image_height;
+    double tolerance;
+
+    /* Over the reference's frame. */
+    uint64_t pixels;          /* reference width x height */
+    uint64_t mismatches;      /* reference_only + image_only */
+    uint64_t reference_only;  /* black in the reference, white in image */
+    uint64_t image_only;      /* black in the image, white in reference */
+    double mismatch_percent;  /* 100 mismatches / pixels */
+    double iou;               /* |both black| / |either black|; 1 when
+                                 neither has black */
+    double max_distance;      /* of a mismatch from the outline; 0 with no
+                                 mismatch; -1 when the reference is one
+                                 colour (it has no outline) */
+    uint64_t beyond_tolerance; /* mismatches farther than tolerance */
+
+    /* The black shapes, each in its own frame. */
+    uint64_t reference_black, image_black;
+    int shapes_measured;      /* both have black pixels: offset and scale
+                                 below are meaningful */
+    double offset_x, offset_y; /* image centroid - reference centroid */
+    double scale;             /* sqrt(image_black / reference_black) */
+
+    rayo_compare_verdict verdict;
+    rayo_compare_diagnosis diagnosis;
+    int diagnosis_exact;      /* undoing the mistake gives a consistent
+                                 image (0: it only comes close) */
+    int32_t shift_x, shift_y; /* RAYO_DIAGNOSIS_SHIFTED: the image is the
+                                 reference moved this far (right, down) */
+    double scale_found;       /* RAYO_DIAGNOSIS_SCALED */
+} rayo_compare_report;
+
+/*
+ * Compares image with reference (any layouts).  Fails only for memory
+ * (RAYO_ERR_NOMEM) or an invalid image (RAYO_ERR_INVALID); disagreement
+ * is the report's business.
+ */
+rayo_status rayo_compare_images(const rayo_image *reference,
+                                 const rayo_image *image,
+                                 const rayo_compare_options *options,
+                                 rayo_compare_report *report,
+                                 rayo_error *err);
+
+/*
+ * Writes the difference picture to out as an 8-bit RGB PNG of the
+ * reference's size, streamed row by row: black and white where the masks
+ * agree, RAYO_DIFF_REFERENCE_ONLY_RGB (red) where only the reference is
+ * black, RAYO_DIFF_IMAGE_ONLY_RGB (blue) where only the image is black.
+ * The image is laid on the reference's frame as for the report.  The
+ * caller commits or aborts out.
+ */
+#define RAYO_DIFF_REFERENCE_ONLY_RGB 0xE0, 0x10, 0x10 /* red */
+#define RAYO_DIFF_IMAGE_ONLY_RGB 0x10, 0x60, 0xF0     /* blue */
+rayo_status rayo_compare_write_diff(const rayo_image *reference,
+                                    const rayo_image *image,
+                                    rayo_output *out, rayo_error *err);
+
+/* "identical", "consistent", "inconsistent". */
+const char *rayo_compare_verdict_name(rayo_compare_verdict verdict);
+
+/* A short machine name: "flipped-vertically", "shifted", "none", ... */
+const char *rayo_compare_diagnosis_name(rayo_compare_diagnosis diagnosis);
+
+/*
+ * The report as text for a person (several lines, English) or as one
+ * JSON object, into buffer (always terminated when size > 0).  Returns
+ * the length the whole text needs, as snprintf does.
+ */
+size_t rayo_compare_format_text(const rayo_compare_report *report,
+                                char *buffer, size_t size);
+size_t rayo_compare_format_json(const rayo_compare_report *report,
+                                char *buffer, size_t size);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,125 @@
+/*
+ * compare.c - rayo_compare_images: the measurements of one comparison
+ * put together into a report, and the names of verdicts and diagnoses.
+ *
+ * The work is done elsewhere in src/compare (compare_impl.h lists the
+ * pieces); this file orders it: masks, the reference's outline, one
+ * measuring pass, the shapes, the diagnosis.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "compare_impl.h"
+
+void rayo_compare_options_init(rayo_compare_options *options)
+{
+    options->tolerance = 2;
+}
+
+static void fill_counts(const cmp_counts *c, int has_edges,
+                        rayo_compare_report *r)
+{
+    r->reference_only = c->reference_only;
+    r->image_only = c->image_only;
+    r->mismatches = c->reference_only + c->image_only;
+    r->mismatch_percent =
+        r->pixels ? 100.0 * (double)r->mismatches / (double)r->pixels : 0;
+    r->iou = c->either ? (double)c->both / (double)c->either : 1.0;
+    r->max_distance = c->max_distance;
+    r->beyond_tolerance = c->beyond;
+    if (!has_edges) {
+        r->max_distance = r->mismatches ? -1 : 0;
+        r->beyond_tolerance = r->mismatches;
+    }
+}
+
+static void fill_shapes(const cmp_shape *rs, const cmp_shape *is,
+                        rayo_compare_report *r)
+{
+    r->reference_black = rs->black;
+    r->image_black = is->black;
+    r->shapes_measured = rs->black != 0 && is->black != 0;
+    r->scale = 1;
+    if (!r->shapes_measured)
+        return;
+    r->offset_x = is->cx - rs->cx;
+    r->offset_y = is->cy - rs->cy;
+    r->scale = sqrt((double)is->black / (double)rs->black);
+}
+
+static rayo_status run(const cmp_pair *pair, rayo_compare_report *report,
+                       rayo_error *err)
+{
+    cmp_transform identity = {CMP_IDENTITY, 0, 0, 1, 1};
+    cmp_outline *outline;
+    cmp_counts counts;
+    cmp_shape rs, is;
+    rayo_status s = cmp_outline_create(&outline, &pair->ref, err);
+    if (s != RAYO_OK)
+        return s;
+    s = cmp_measure(&pair->ref, &pair->image, &identity, outline,
+                    report->tolerance, &counts, err);
+    if (s == RAYO_OK) {
+        fill_counts(&counts, cmp_outline_has_edges(outline), report);
+        cmp_shape_measure(&pair->ref, &rs);
+        cmp_shape_measure(&pair->image, &is);
+        fill_shapes(&rs, &is, report);
+        s = cmp_diagnose(&pair->ref, &pair->image, outline, &rs, &is, report,
+                         err);
+    }
+    cmp_outline_free(outline);
+    return s;
+}
+
+rayo_status rayo_compare_images(const rayo_image *reference,
+                                const rayo_image *image,
+                                const rayo_compare_options *options,
+                                rayo_compare_report *report, rayo_error *err)
+{
+    cmp_pair pair;
+    rayo_status s;
+    memset(report, 0, sizeof *report);
+    report->tolerance = options ? options->tolerance : 2;
+    if (!(report->tolerance >= 0) || !isfinite(report->tolerance))
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "compare: tolerance %g; expected a finite "
+                              "number of pixels, 0 or more",
+                              report->tolerance);
+    s = cmp_pair_make(&pair, reference, image, err);
+    if (s != RAYO_OK)
+        return s;
+    report->reference_width = pair.ref.width;
+    report->reference_height = pair.ref.height;
+    report->image_width = pair.image.width;
+    report->image_height = pair.image.height;
+    report->pixels = (uint64_t)pair.ref.width * pair.ref.height;
+    report->scale_found = 1;
+    s = run(&pair, report, err);
+    cmp_pair_free(&pair);
+    return s;
+}
+
+const char *rayo_compare_verdict_name(rayo_compare_verdict verdict)
+{
+    switch (verdict) {
+    case RAYO_VERDICT_IDENTICAL:
+        return "identical";
+    case RAYO_VERDICT_CONSISTENT:
+        return "consistent";
+    default:
+        return "inconsistent";
+    }
+}
+
+const char *rayo_compare_diagnosis_name(rayo_compare_diagnosis diagnosis)
+{
+    static const char *const names[] = {
+        "none",        "flipped-vertically", "flipped-horizontally",
+        "rotated-180", "inverted",           "transposed",
+        "shifted",     "scaled",             "different-size",
+        "empty",       "not-a-sphere",       "other-sphere",
+        "unknown"};
+    if ((size_t)diagnosis >= sizeof names / sizeof names[0])
+        return "unknown";
+    return names[diagnosis];
+}

@@ -1,0 +1,153 @@
+/*
+ * compare_impl.h - the pieces compare is built from, shared by the files
+ * of src/compare and by no one else.
+ *
+ *   mask       a bilevel image as packed bits (1 = black), borrowed;
+ *   transform  a candidate mistake undone: the image's row y as it would
+ *              be in the reference's frame (flipped back, shifted back,
+ *              rescaled, ...), with the pixels it cannot know marked;
+ *   outline    the reference's colour changes, column by column, giving
+ *              for any row the distance of each pixel to the nearest
+ *              pixel of the other colour;
+ *   shape      the moments of a mask's black region and how ellipse-like
+ *              it is;
+ *   measure    one pass comparing the reference with a transformed image.
+ */
+#ifndef RAYO_COMPARE_IMPL_H
+#define RAYO_COMPARE_IMPL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/compare.h"
+
+typedef struct cmp_mask {
+    uint32_t width, height;
+    size_t stride;
+    const unsigned char *bits;
+} cmp_mask;
+
+/* Bytes of a packed row of this width. */
+static inline size_t cmp_row_bytes(uint32_t width)
+{
+    return ((size_t)width + 7) / 8;
+}
+
+static inline const unsigned char *cmp_mask_row(const cmp_mask *m,
+                                                uint32_t y)
+{
+    return m->bits + (size_t)y * m->stride;
+}
+
+/* The two masks of a comparison, converted from any layout when they
+ * are not bilevel already (then borrowed, not copied). */
+typedef struct cmp_pair {
+    rayo_image owned_ref, owned_image;
+    cmp_mask ref, image;
+} cmp_pair;
+
+rayo_status cmp_pair_make(cmp_pair *pair, const rayo_image *reference,
+                          const rayo_image *image, rayo_error *err);
+void cmp_pair_free(cmp_pair *pair);
+
+/* Number of set bits in n bytes. */
+uint64_t cmp_popcount(const unsigned char *bytes, size_t n);
+
+/* Clears the bits past width in the last byte of a packed row. */
+void cmp_clear_padding(unsigned char *row, uint32_t width);
+
+/* ---- transform.c ---- */
+
+typedef enum cmp_transform_kind {
+    CMP_IDENTITY,   /* same frame, or centred on the reference's */
+    CMP_INVERT,
+    CMP_FLIP_V,
+    CMP_FLIP_H,
+    CMP_FLIP_BOTH,
+    CMP_TRANSPOSE,
+    CMP_SHIFT,      /* the image is the reference moved by (dx, dy) */
+    CMP_SCALE       /* the image is the reference scaled by s about the
+                       optical centre */
+} cmp_transform_kind;
+
+typedef struct cmp_transform {
+    cmp_transform_kind kind;
+    int32_t dx, dy;
+    double scale;
+    uint32_t step; /* CMP_SCALE search: sample every step-th pixel only */
+} cmp_transform;
+
+/*
+ * The image's row y undone by t, in the reference's frame (width
+ * ref_width): out gets the bits, known the pixels that map inside the
+ * image (1 = known).  Returns 1 when every pixel of the row is known
+ * (known is then left alone).  Padding bits are zero in both.
+ */
+int cmp_transform_row(const cmp_transform *t, const cmp_mask *image,
+                      uint32_t ref_width, uint32_t ref_height, uint32_t y,
+                      unsigned char *out, unsigned char *known);
+
+/* ---- outline.c ---- */
+
+typedef struct cmp_outline cmp_outline;
+
+rayo_status cmp_outline_create(cmp_outline **outline, const cmp_mask *ref,
+                               rayo_error *err);
+void cmp_outline_free(cmp_outline *outline);
+
+/* Starts again from row 0 (rows must then be asked in increasing order). */
+void cmp_outline_rewind(cmp_outline *outline);
+
+/* 1 when the reference has both colours (so distances are finite). */
+int cmp_outline_has_edges(const cmp_outline *outline);
+
+/*
+ * For row y: d2[x] = squared distance from (x, y) to the nearest
+ * reference pixel of colour `colour` (0 white, 1 black), or INT64_MAX if
+ * there is none.  d2 has room for the reference's width.
+ */
+void cmp_outline_distances(cmp_outline *outline, uint32_t y, int colour,
+                           int64_t *d2);
+
+/* ---- shape.c ---- */
+
+typedef struct cmp_shape {
+    uint64_t black;
+    double cx, cy;            /* centroid, centred coordinates, y down */
+    double sxx, syy, sxy;     /* central second moments (per pixel) */
+    int touches_border;
+    double ellipse_iou;       /* IoU with the ellipse of equal moments */
+} cmp_shape;
+
+void cmp_shape_measure(const cmp_mask *mask, cmp_shape *shape);
+
+/* ---- measure.c ---- */
+
+typedef struct cmp_counts {
+    uint64_t known;           /* pixels the transform could place */
+    uint64_t reference_only, image_only, both, either;
+    uint64_t beyond;          /* mismatches farther than the tolerance */
+    double max_distance;      /* -1 when distances were not asked for */
+} cmp_counts;
+
+/*
+ * Compares ref with image undone by t.  With outline NULL only the
+ * counts are made (no distances, beyond = 0).
+ */
+rayo_status cmp_measure(const cmp_mask *ref, const cmp_mask *image,
+                        const cmp_transform *t, cmp_outline *outline,
+                        double tolerance, cmp_counts *counts,
+                        rayo_error *err);
+
+/* ---- diagnose.c ---- */
+
+/*
+ * Fills report's verdict and diagnosis, given its measurements (filled by
+ * compare.c) and the shapes.
+ */
+rayo_status cmp_diagnose(const cmp_mask *ref, const cmp_mask *image,
+                         cmp_outline *outline, const cmp_shape *ref_shape,
+                         const cmp_shape *image_shape,
+                         rayo_compare_report *report, rayo_error *err);
+
+#endif

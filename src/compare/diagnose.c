@@ -1,0 +1,348 @@
+/*
+ * diagnose.c - the verdict, and for an inconsistent image the mistake
+ * that explains it.
+ *
+ * Every candidate mistake is tried the same way: undo it on the image
+ * (transform.c) and compare again.  A candidate is named only if the
+ * result is consistent with the reference, or close to it (at most a
+ * twentieth of the far mismatches left and the black regions' IoU at
+ * least 0.97); among those, the one leaving fewest far mismatches wins.
+ * Counting alone is cheap, so a candidate whose undoing does not halve
+ * the mismatches is dropped before any distance is computed.  The shift
+ * to try comes from the centroids; the scale from the areas and the
+ * centroids, refined by a golden-section search on a sampled grid.  When
+ * nothing fits, the image's black region is judged on its own: empty,
+ * not ellipse-like (not a sphere), or another sphere.
+ *
+ * Thresholds are written once, below, with their reasons.  Not a
+ * registration algorithm: one mistake at a time, no combinations.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "compare_impl.h"
+
+/* A candidate "comes close": far mismatches cut twentyfold and IoU. */
+#define CLOSE_REDUCTION 20
+#define CLOSE_IOU 0.97
+/* Below this IoU with its moment ellipse a black region is not a sphere
+ * (rendered spheres of a few hundred pixels or more score above 0.97;
+ * a rectangle scores about 0.90, a ring or two blobs far less).  Shapes
+ * cut by the frame are held to a looser bound. */
+#define SPHERE_IOU 0.94
+#define CLIPPED_SPHERE_IOU 0.80
+/* Scales closer to 1 than this are not worth a diagnosis. */
+#define SCALE_EPSILON 0.004
+/* The scale search samples about this many pixels. */
+#define SCALE_SAMPLES 65536.0
+
+typedef struct candidate_result {
+    int tried;
+    cmp_counts counts;
+} candidate_result;
+
+static double iou_of(const cmp_counts *c)
+{
+    return c->either ? (double)c->both / (double)c->either : 1.0;
+}
+
+static uint64_t mismatches_of(const cmp_counts *c)
+{
+    return c->reference_only + c->image_only;
+}
+
+/* Measures t fully if counting shows it could explain the mismatches. */
+static rayo_status try_candidate(const cmp_mask *ref, const cmp_mask *image,
+                                 cmp_outline *outline,
+                                 const rayo_compare_report *report,
+                                 const cmp_transform *t,
+                                 candidate_result *result, rayo_error *err)
+{
+    rayo_status s;
+    result->tried = 0;
+    s = cmp_measure(ref, image, t, NULL, report->tolerance, &result->counts,
+                    err);
+    if (s != RAYO_OK)
+        return s;
+    if (2 * mismatches_of(&result->counts) > report->mismatches)
+        return RAYO_OK;
+    s = cmp_measure(ref, image, t, outline, report->tolerance,
+                    &result->counts, err);
+    result->tried = s == RAYO_OK;
+    return s;
+}
+
+static int fits(const candidate_result *r, const rayo_compare_report *report)
+{
+    if (!r->tried)
+        return 0;
+    if (r->counts.beyond == 0)
+        return 1;
+    return r->counts.beyond * CLOSE_REDUCTION <= report->beyond_tolerance &&
+           iou_of(&r->counts) >= CLOSE_IOU;
+}
+
+static int better(const candidate_result *a, const candidate_result *b)
+{
+    if (a->counts.beyond != b->counts.beyond)
+        return a->counts.beyond < b->counts.beyond;
+    return mismatches_of(&a->counts) < mismatches_of(&b->counts);
+}
+
+/* 1 - IoU of ref and the image scaled by s, on a sampled grid. */
+static rayo_status scale_loss(const cmp_mask *ref, const cmp_mask *image,
+                              double s, uint32_t step, double *loss,
+                              rayo_error *err)
+{
+    cmp_transform t = {CMP_SCALE, 0, 0, 0, 0};
+    cmp_counts c;
+    rayo_status st;
+    t.scale = s;
+    t.step = step;
+    st = cmp_measure(ref, image, &t, NULL, 0, &c, err);
+    *loss = 1.0 - iou_of(&c);
+    return st;
+}
+
+/* The scale s (image = reference scaled by s about the optical centre)
+ * that best lays the image on the reference. */
+static rayo_status search_scale(const cmp_mask *ref, const cmp_mask *image,
+                                const cmp_shape *rs, const cmp_shape *is,
+                                double area_scale, double *best,
+                                rayo_error *err)
+{
+    double lo = area_scale, hi = area_scale, rn, in, a, b, c, d, fc, fd;
+    double pixels = (double)ref->width * ref->height;
+    uint32_t step = (uint32_t)ceil(sqrt(pixels / SCALE_SAMPLES)), i;
+    rayo_status s;
+    rn = hypot(rs->cx, rs->cy);
+    in = hypot(is->cx, is->cy);
+    if (rn > 8 && in > 8) {
+        lo = fmin(lo, in / rn);
+        hi = fmax(hi, in / rn);
+    }
+    a = lo / 1.25;
+    b = hi * 1.25;
+    c = b - (b - a) * 0.6180339887;
+    d = a + (b - a) * 0.6180339887;
+    if ((s = scale_loss(ref, image, c, step, &fc, err)) != RAYO_OK ||
+        (s = scale_loss(ref, image, d, step, &fd, err)) != RAYO_OK)
+        return s;
+    for (i = 0; i < 24; i++) {
+        if (fc <= fd) {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - (b - a) * 0.6180339887;
+            s = scale_loss(ref, image, c, step, &fc, err);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + (b - a) * 0.6180339887;
+            s = scale_loss(ref, image, d, step, &fd, err);
+        }
+        if (s != RAYO_OK)
+            return s;
+    }
+    *best = (a + b) / 2;
+    return RAYO_OK;
+}
+
+typedef struct chooser {
+    candidate_result best;
+    cmp_transform transform;
+    int found;
+} chooser;
+
+static rayo_status consider(chooser *ch, const cmp_mask *ref,
+                            const cmp_mask *image, cmp_outline *outline,
+                            const rayo_compare_report *report,
+                            const cmp_transform *t, rayo_error *err)
+{
+    candidate_result r;
+    rayo_status s = try_candidate(ref, image, outline, report, t, &r, err);
+    if (s != RAYO_OK || !fits(&r, report))
+        return s;
+    if (!ch->found || better(&r, &ch->best)) {
+        ch->best = r;
+        ch->transform = *t;
+        ch->found = 1;
+    }
+    return RAYO_OK;
+}
+
+static rayo_compare_diagnosis diagnosis_of(cmp_transform_kind kind)
+{
+    switch (kind) {
+    case CMP_INVERT:
+        return RAYO_DIAGNOSIS_INVERTED;
+    case CMP_FLIP_V:
+        return RAYO_DIAGNOSIS_FLIPPED_VERTICALLY;
+    case CMP_FLIP_H:
+        return RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY;
+    case CMP_FLIP_BOTH:
+        return RAYO_DIAGNOSIS_ROTATED_180;
+    case CMP_TRANSPOSE:
+        return RAYO_DIAGNOSIS_TRANSPOSED;
+    case CMP_SHIFT:
+        return RAYO_DIAGNOSIS_SHIFTED;
+    case CMP_SCALE:
+        return RAYO_DIAGNOSIS_SCALED;
+    default:
+        return RAYO_DIAGNOSIS_UNKNOWN;
+    }
+}
+
+static void name_choice(const chooser *ch, rayo_compare_report *report)
+{
+    report->diagnosis = diagnosis_of(ch->transform.kind);
+    report->diagnosis_exact = ch->best.counts.beyond == 0;
+    report->shift_x = ch->transform.dx;
+    report->shift_y = ch->transform.dy;
+    report->scale_found = ch->transform.scale;
+}
+
+static int32_t round_offset(double v)
+{
+    return (int32_t)floor(v + 0.5);
+}
+
+/* The centroid offset left after the scale about the optical centre
+ * (which is what a focal distance a little off produces). */
+static void residual_offset(const cmp_shape *rs, const cmp_shape *is,
+                            const rayo_compare_report *report, int32_t *dx,
+                            int32_t *dy)
+{
+    double s = rs->touches_border || is->touches_border ? 1 : report->scale;
+    *dx = round_offset(is->cx - s * rs->cx);
+    *dy = round_offset(is->cy - s * rs->cy);
+}
+
+/* Within tolerance everywhere: consistent unless a whole-pixel shift
+ * explains the mismatches (then they are a mistake, not rounding). */
+static rayo_status judge_close(const cmp_mask *ref, const cmp_mask *image,
+                               const cmp_shape *rs, const cmp_shape *is,
+                               rayo_compare_report *report, rayo_error *err)
+{
+    cmp_transform t = {CMP_SHIFT, 0, 0, 1, 1};
+    cmp_counts c;
+    rayo_status s;
+    report->verdict = RAYO_VERDICT_CONSISTENT;
+    if (!report->shapes_measured)
+        return RAYO_OK;
+    residual_offset(rs, is, report, &t.dx, &t.dy);
+    if (t.dx == 0 && t.dy == 0)
+        return RAYO_OK;
+    s = cmp_measure(ref, image, &t, NULL, 0, &c, err);
+    if (s != RAYO_OK || 2 * mismatches_of(&c) > report->mismatches)
+        return s;
+    report->verdict = RAYO_VERDICT_INCONSISTENT;
+    report->diagnosis = RAYO_DIAGNOSIS_SHIFTED;
+    report->diagnosis_exact = 1;
+    report->shift_x = t.dx;
+    report->shift_y = t.dy;
+    return RAYO_OK;
+}
+
+static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
+                           cmp_outline *outline, const cmp_shape *rs,
+                           const cmp_shape *is, rayo_compare_report *report,
+                           chooser *ch, rayo_error *err)
+{
+    static const cmp_transform_kind plain[] = {
+        CMP_INVERT, CMP_FLIP_V, CMP_FLIP_H, CMP_FLIP_BOTH, CMP_TRANSPOSE};
+    cmp_transform t = {CMP_IDENTITY, 0, 0, 1, 1};
+    rayo_status s = RAYO_OK;
+    size_t i;
+    for (i = 0; i < sizeof plain / sizeof plain[0] && s == RAYO_OK; i++) {
+        t.kind = plain[i];
+        if (t.kind != CMP_TRANSPOSE || ref->width == ref->height)
+            s = consider(ch, ref, image, outline, report, &t, err);
+    }
+    if (s != RAYO_OK || !report->shapes_measured)
+        return s;
+    t.kind = CMP_SHIFT;
+    t.dx = round_offset(report->offset_x);
+    t.dy = round_offset(report->offset_y);
+    if ((t.dx != 0 || t.dy != 0) &&
+        (s = consider(ch, ref, image, outline, report, &t, err)) != RAYO_OK)
+        return s;
+    t.kind = CMP_SCALE;
+    t.dx = t.dy = 0;
+    if ((s = search_scale(ref, image, rs, is, report->scale, &t.scale,
+                          err)) != RAYO_OK)
+        return s;
+    if (fabs(t.scale - 1) < SCALE_EPSILON)
+        return RAYO_OK;
+    return consider(ch, ref, image, outline, report, &t, err);
+}
+
+static void judge_shape(const cmp_shape *is, rayo_compare_report *report)
+{
+    double bound = is->touches_border ? CLIPPED_SPHERE_IOU : SPHERE_IOU;
+    if (is->black == 0)
+        report->diagnosis = RAYO_DIAGNOSIS_EMPTY;
+    else if (is->ellipse_iou < bound)
+        report->diagnosis = RAYO_DIAGNOSIS_NOT_A_SPHERE;
+    else if (report->reference_black != 0)
+        report->diagnosis = RAYO_DIAGNOSIS_OTHER_SPHERE;
+    else
+        report->diagnosis = RAYO_DIAGNOSIS_UNKNOWN;
+}
+
+/* Different sizes are always inconsistent; transposed when laying the
+ * image's rows as columns fits the reference. */
+static rayo_status diagnose_size(const cmp_mask *ref, const cmp_mask *image,
+                                 cmp_outline *outline,
+                                 rayo_compare_report *report,
+                                 rayo_error *err)
+{
+    cmp_transform t = {CMP_TRANSPOSE, 0, 0, 1, 1};
+    cmp_counts c;
+    rayo_status s;
+    report->verdict = RAYO_VERDICT_INCONSISTENT;
+    report->diagnosis = RAYO_DIAGNOSIS_DIFFERENT_SIZE;
+    if (image->width != ref->height || image->height != ref->width)
+        return RAYO_OK;
+    s = cmp_measure(ref, image, &t, outline, report->tolerance, &c, err);
+    if (s != RAYO_OK)
+        return s;
+    if (c.beyond == 0 || iou_of(&c) >= CLOSE_IOU) {
+        report->diagnosis = RAYO_DIAGNOSIS_TRANSPOSED;
+        report->diagnosis_exact = c.beyond == 0;
+    }
+    return RAYO_OK;
+}
+
+rayo_status cmp_diagnose(const cmp_mask *ref, const cmp_mask *image,
+                         cmp_outline *outline, const cmp_shape *rs,
+                         const cmp_shape *is, rayo_compare_report *report,
+                         rayo_error *err)
+{
+    chooser ch;
+    rayo_status s;
+    report->diagnosis = RAYO_DIAGNOSIS_NONE;
+    if (ref->width != image->width || ref->height != image->height)
+        return diagnose_size(ref, image, outline, report, err);
+    if (report->mismatches == 0) {
+        report->verdict = RAYO_VERDICT_IDENTICAL;
+        return RAYO_OK;
+    }
+    if (report->beyond_tolerance == 0)
+        return judge_close(ref, image, rs, is, report, err);
+    report->verdict = RAYO_VERDICT_INCONSISTENT;
+    if (is->black == 0) {
+        report->diagnosis = RAYO_DIAGNOSIS_EMPTY;
+        return RAYO_OK;
+    }
+    ch.found = 0;
+    s = try_all(ref, image, outline, rs, is, report, &ch, err);
+    if (s != RAYO_OK)
+        return s;
+    if (ch.found)
+        name_choice(&ch, report);
+    else
+        judge_shape(is, report);
+    return RAYO_OK;
+}

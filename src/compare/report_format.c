@@ -1,0 +1,193 @@
+/*
+ * report_format.c - a comparison report as text for a student or as JSON
+ * for a program.
+ *
+ * Both forms carry the same numbers; the text adds a sentence saying what
+ * the diagnosis means and what to look at in one's code.  Writing goes
+ * into the caller's buffer with snprintf semantics (the full length is
+ * returned, the text is cut to fit), so the library never prints.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "compare_impl.h"
+
+typedef struct sink {
+    char *buffer;
+    size_t size, length;
+} sink;
+
+static void put(sink *s, const char *format, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void put(sink *s, const char *format, ...)
+{
+    va_list ap;
+    int n;
+    size_t room = s->length < s->size ? s->size - s->length : 0;
+    va_start(ap, format);
+    n = vsnprintf(room ? s->buffer + s->length : NULL, room, format, ap);
+    va_end(ap);
+    if (n > 0)
+        s->length += (size_t)n;
+}
+
+/* One sentence (no quotes, no backslashes) saying what went wrong. */
+static void put_diagnosis(sink *s, const rayo_compare_report *r)
+{
+    if (!r->diagnosis_exact && r->diagnosis <= RAYO_DIAGNOSIS_SCALED &&
+        r->diagnosis != RAYO_DIAGNOSIS_NONE)
+        put(s, "most likely (undoing it comes close, not exact): ");
+    switch (r->diagnosis) {
+    case RAYO_DIAGNOSIS_NONE:
+        put(s, "none");
+        break;
+    case RAYO_DIAGNOSIS_FLIPPED_VERTICALLY:
+        put(s, "the image is upside down (flipped vertically): rows written "
+               "from the bottom up, or y not negated in the ray direction");
+        break;
+    case RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY:
+        put(s, "the image is mirrored left to right (flipped horizontally): "
+               "columns written from the right, or x negated");
+        break;
+    case RAYO_DIAGNOSIS_ROTATED_180:
+        put(s, "the image is upside down and mirrored (flipped both ways, "
+               "a half turn)");
+        break;
+    case RAYO_DIAGNOSIS_INVERTED:
+        put(s, "the colours are inverted (0 and 1 swapped): in PBM 1 is "
+               "black, and a ray that hits the sphere is black");
+        break;
+    case RAYO_DIAGNOSIS_TRANSPOSED:
+        put(s, "the image is transposed (width and height swapped): rows "
+               "written as columns");
+        break;
+    case RAYO_DIAGNOSIS_SHIFTED:
+        put(s, "the picture is shifted by (%+d, %+d) pixels (right, down): "
+               "check the pixel grid, x = i - w/2 and y = j - h/2",
+            r->shift_x, r->shift_y);
+        break;
+    case RAYO_DIAGNOSIS_SCALED:
+        put(s, "the shape is scaled by %.3f about the centre of the image: "
+               "a wrong field of view or focal distance (z = w / (2 "
+               "tan(fov/2)), fov in radians)",
+            r->scale_found);
+        break;
+    case RAYO_DIAGNOSIS_DIFFERENT_SIZE:
+        put(s, "the image is %ux%u but the reference is %ux%u: check the "
+               "width and height (ANCHO, ALTO)",
+            r->image_width, r->image_height, r->reference_width,
+            r->reference_height);
+        break;
+    case RAYO_DIAGNOSIS_EMPTY:
+        put(s, "the image has no black pixel: no ray hit the sphere");
+        break;
+    case RAYO_DIAGNOSIS_NOT_A_SPHERE:
+        put(s, "the black region is not an ellipse-shaped blob: this does "
+               "not look like a picture of a sphere");
+        break;
+    case RAYO_DIAGNOSIS_OTHER_SPHERE:
+        put(s, "a sphere, but not the reference's: its shape is offset by "
+               "(%+.1f, %+.1f) pixels and %.3f times the size; check the "
+               "sphere's centre and radius",
+            r->offset_x, r->offset_y, r->scale);
+        break;
+    default:
+        put(s, "no single mistake (flip, inversion, transposition, shift, "
+               "scale) explains the differences");
+        break;
+    }
+}
+
+static void put_distance_text(sink *s, const rayo_compare_report *r)
+{
+    if (r->max_distance < 0)
+        put(s, "farthest mismatch from the reference's outline: - (the "
+               "reference is all one colour)\n");
+    else
+        put(s, "farthest mismatch from the reference's outline: %.2f px "
+               "(tolerance %g px; %llu beyond it)\n",
+            r->max_distance, r->tolerance,
+            (unsigned long long)r->beyond_tolerance);
+}
+
+size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
+                                size_t size)
+{
+    sink s = {buffer, size, 0};
+    if (size > 0)
+        buffer[0] = '\0';
+    put(&s, "reference: %ux%u, %llu black pixels\n", r->reference_width,
+        r->reference_height, (unsigned long long)r->reference_black);
+    put(&s, "image:     %ux%u, %llu black pixels\n", r->image_width,
+        r->image_height, (unsigned long long)r->image_black);
+    put(&s, "mismatched pixels: %llu of %llu (%.3f%%): %llu black only in "
+            "the reference, %llu black only in the image\n",
+        (unsigned long long)r->mismatches, (unsigned long long)r->pixels,
+        r->mismatch_percent, (unsigned long long)r->reference_only,
+        (unsigned long long)r->image_only);
+    put(&s, "IoU of the black regions: %.4f\n", r->iou);
+    put_distance_text(&s, r);
+    if (r->shapes_measured)
+        put(&s, "black shape of the image vs the reference: offset "
+                "(%+.2f, %+.2f) px (right, down), scale %.4f\n",
+            r->offset_x, r->offset_y, r->scale);
+    else
+        put(&s, "black shape of the image vs the reference: - (one of them "
+                "has no black pixel)\n");
+    put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
+    if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
+        put(&s, "diagnosis: ");
+        put_diagnosis(&s, r);
+        put(&s, "\n");
+    }
+    return s.length;
+}
+
+size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
+                                size_t size)
+{
+    sink s = {buffer, size, 0};
+    if (size > 0)
+        buffer[0] = '\0';
+    put(&s, "{\"reference\": {\"width\": %u, \"height\": %u, \"black\": %llu}"
+            ", \"image\": {\"width\": %u, \"height\": %u, \"black\": %llu}",
+        r->reference_width, r->reference_height,
+        (unsigned long long)r->reference_black, r->image_width,
+        r->image_height, (unsigned long long)r->image_black);
+    put(&s, ", \"pixels\": %llu, \"mismatches\": %llu, \"reference_only\": "
+            "%llu, \"image_only\": %llu, \"mismatch_percent\": %.6f, "
+            "\"iou\": %.6f",
+        (unsigned long long)r->pixels, (unsigned long long)r->mismatches,
+        (unsigned long long)r->reference_only,
+        (unsigned long long)r->image_only, r->mismatch_percent, r->iou);
+    if (r->max_distance < 0)
+        put(&s, ", \"max_distance\": null");
+    else
+        put(&s, ", \"max_distance\": %.6f", r->max_distance);
+    put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": %llu", r->tolerance,
+        (unsigned long long)r->beyond_tolerance);
+    if (r->shapes_measured)
+        put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, \"scale\": %.6f",
+            r->offset_x, r->offset_y, r->scale);
+    else
+        put(&s, ", \"offset\": null, \"scale\": null");
+    put(&s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
+            "\"exact\": %s",
+        rayo_compare_verdict_name(r->verdict),
+        rayo_compare_diagnosis_name(r->diagnosis),
+        r->diagnosis_exact ? "true" : "false");
+    if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
+        put(&s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
+            r->shift_y);
+    if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
+        put(&s, ", \"scale\": %.6f", r->scale_found);
+    put(&s, ", \"text\": \"");
+    put_diagnosis(&s, r);
+    put(&s, "\"}}\n");
+    return s.length;
+}

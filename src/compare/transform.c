@@ -1,0 +1,162 @@
+/*
+ * transform.c - undoing a candidate mistake on the image, one row at a
+ * time, in the reference's frame.
+ *
+ * Each candidate of the diagnosis (a flip, inverted colours, a
+ * transposition, a shift, a scale about the optical centre) is a map from
+ * a reference pixel to the image pixel that should hold the same colour;
+ * this file applies it.  Pixels whose source falls outside the image are
+ * "unknown" for shifts and scales (the image never saw them) and white
+ * for a plain change of frame (an image of another size, centred).
+ * Not a resampler for display (no filtering); nearest pixel only.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "compare_impl.h"
+
+/* 1 black, 0 white, -1 outside the image. */
+static int image_bit(const cmp_mask *image, int64_t i, int64_t j)
+{
+    if (i < 0 || j < 0 || i >= image->width || j >= image->height)
+        return -1;
+    return rayo_bit_get(cmp_mask_row(image, (uint32_t)j), (uint32_t)i);
+}
+
+/* Eight pixels of row src from column q on, bit by bit at the edges. */
+static unsigned byte_at(const unsigned char *src, uint32_t width, int64_t q,
+                        unsigned *inside)
+{
+    unsigned v = 0, bit;
+    if (q >= 0 && q + 8 <= (int64_t)width) {
+        size_t k = (size_t)q >> 3;
+        unsigned sh = (unsigned)(q & 7);
+        *inside = 0xFFu;
+        v = (unsigned)src[k] << sh;
+        if (sh != 0)
+            v |= (unsigned)src[k + 1] >> (8 - sh);
+        return v & 0xFFu;
+    }
+    *inside = 0;
+    for (bit = 0; bit < 8; bit++) {
+        int64_t i = q + bit;
+        if (i < 0 || i >= (int64_t)width)
+            continue;
+        *inside |= 0x80u >> bit;
+        if (rayo_bit_get(src, (uint32_t)i))
+            v |= 0x80u >> bit;
+    }
+    return v;
+}
+
+/* The image moved by (ox, oy): out(i) = image(i + ox, y + oy); pixels
+ * from outside the image are white, and unknown unless outside_known. */
+static int offset_row(const cmp_mask *image, uint32_t width, uint32_t y,
+                      int64_t ox, int64_t oy, int outside_known,
+                      unsigned char *out, unsigned char *known)
+{
+    size_t n = cmp_row_bytes(width), k;
+    int64_t j = (int64_t)y + oy;
+    unsigned all = 0xFFu, inside;
+    if (j < 0 || j >= (int64_t)image->height) {
+        if (outside_known)
+            return 1;
+        memset(known, 0, n);
+        return 0;
+    }
+    for (k = 0; k < n; k++) {
+        out[k] = (unsigned char)byte_at(cmp_mask_row(image, (uint32_t)j),
+                                        image->width,
+                                        ox + 8 * (int64_t)k, &inside);
+        known[k] = (unsigned char)inside;
+        all &= inside | (k == n - 1 ? 0xFFu >> ((width & 7u) ? (width & 7u)
+                                                               : 8u)
+                                    : 0u);
+    }
+    cmp_clear_padding(out, width);
+    cmp_clear_padding(known, width);
+    return outside_known || all == 0xFFu;
+}
+
+static int same_frame_row(const cmp_mask *image, uint32_t width, uint32_t y,
+                          int invert, unsigned char *out)
+{
+    size_t n = cmp_row_bytes(width), k;
+    memcpy(out, cmp_mask_row(image, y), n);
+    if (invert)
+        for (k = 0; k < n; k++)
+            out[k] = (unsigned char)~out[k];
+    cmp_clear_padding(out, width);
+    return 1;
+}
+
+/* Flips and transposition: a permutation of the pixels of equal frames. */
+static int permuted_row(const cmp_transform *t, const cmp_mask *image,
+                        uint32_t width, uint32_t y, unsigned char *out)
+{
+    uint32_t i;
+    if (t->kind == CMP_FLIP_V)
+        return same_frame_row(image, width, image->height - 1 - y, 0, out);
+    for (i = 0; i < width; i++) {
+        int b;
+        if (t->kind == CMP_FLIP_H)
+            b = image_bit(image, image->width - 1 - (int64_t)i, y);
+        else if (t->kind == CMP_FLIP_BOTH)
+            b = image_bit(image, image->width - 1 - (int64_t)i,
+                          image->height - 1 - (int64_t)y);
+        else
+            b = image_bit(image, y, i);
+        if (b > 0)
+            rayo_bit_set(out, i, 1);
+    }
+    return 1;
+}
+
+/* out(x, y) = image(round(s x), round(s y)) in centred coordinates. */
+static int scaled_row(const cmp_transform *t, const cmp_mask *image,
+                      uint32_t width, uint32_t height, uint32_t y,
+                      unsigned char *out, unsigned char *known)
+{
+    uint32_t i, step = t->step ? t->step : 1;
+    double yr = (double)y - (double)(height / 2);
+    int64_t j = (int64_t)floor(t->scale * yr + 0.5) + image->height / 2;
+    memset(known, 0, cmp_row_bytes(width));
+    if (y % step != 0)
+        return 0;
+    for (i = 0; i < width; i += step) {
+        double xr = (double)i - (double)(width / 2);
+        int64_t ii = (int64_t)floor(t->scale * xr + 0.5) + image->width / 2;
+        int b = image_bit(image, ii, j);
+        if (b < 0)
+            continue;
+        rayo_bit_set(known, i, 1);
+        if (b)
+            rayo_bit_set(out, i, 1);
+    }
+    return 0;
+}
+
+int cmp_transform_row(const cmp_transform *t, const cmp_mask *image,
+                      uint32_t ref_width, uint32_t ref_height, uint32_t y,
+                      unsigned char *out, unsigned char *known)
+{
+    int same = image->width == ref_width && image->height == ref_height;
+    memset(out, 0, cmp_row_bytes(ref_width));
+    switch (t->kind) {
+    case CMP_IDENTITY:
+        if (same)
+            return same_frame_row(image, ref_width, y, 0, out);
+        return offset_row(image, ref_width, y,
+                          (int64_t)(image->width / 2) - ref_width / 2,
+                          (int64_t)(image->height / 2) - ref_height / 2, 1,
+                          out, known);
+    case CMP_INVERT:
+        return same_frame_row(image, ref_width, y, 1, out);
+    case CMP_SHIFT:
+        return offset_row(image, ref_width, y, t->dx, t->dy, 0, out, known);
+    case CMP_SCALE:
+        return scaled_row(t, image, ref_width, ref_height, y, out, known);
+    default:
+        return permuted_row(t, image, ref_width, y, out);
+    }
+}
