@@ -23,6 +23,14 @@ enum {
 /* Subcommands: each takes its own argv (argv[0] is the subcommand name). */
 int cli_render(int argc, char **argv);
 int cli_convert(int argc, char **argv);
+int cli_compare(int argc, char **argv);
+int cli_view(int argc, char **argv);
+
+/* view: the terminal's width ($COLUMNS, else 80), and an image printed
+ * as text on stream (preview.h); returns an exit status. */
+unsigned cli_terminal_columns(void);
+int cli_print_preview(const rayo_image *image,
+                      const rayo_preview_options *options, FILE *stream);
 
 /* Prints "rayo: MESSAGE" on stderr; returns CLI_EXIT_USAGE. */
 int cli_usage_error(const char *format, ...)

@@ -20,6 +20,8 @@ typedef struct subcommand {
 static const subcommand subcommands[] = {
     {"render", cli_render, "trace rays through a scene into an image (default)"},
     {"convert", cli_convert, "convert an image between PBM, PGM, PPM and PNG"},
+    {"compare", cli_compare, "compare an image with a reference and say what is wrong"},
+    {"view", cli_view, "show an image in the terminal"},
 };
 #define SUBCOMMAND_COUNT (sizeof subcommands / sizeof subcommands[0])
 

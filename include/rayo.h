@@ -33,5 +33,7 @@
 #include "rayo/writer.h"
 #include "rayo/reader.h"
 #include "rayo/image_convert.h"
+#include "rayo/compare.h"
+#include "rayo/preview.h"
 
 #endif
