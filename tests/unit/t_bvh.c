@@ -431,7 +431,7 @@ static void check_cloud(void)
 
 int main(void)
 {
-    check_same("mixed scene", 2024, 1000, 200, 2, 1500);
+    check_same("mixed scene", 2024, 600, 150, 2, 1000);
     check_same("dense small scene", 99, 60, 20, 0, 1000);
     check_one_point();
     check_tiny_scenes();
