@@ -22,6 +22,7 @@ static const subcommand subcommands[] = {
     {"convert", cli_convert, "convert an image between PBM, PGM, PPM and PNG"},
     {"compare", cli_compare, "compare an image with a reference and say what is wrong"},
     {"view", cli_view, "show an image in the terminal"},
+    {"grade", cli_grade, "check a student's submission as the course does"},
 };
 #define SUBCOMMAND_COUNT (sizeof subcommands / sizeof subcommands[0])
 
@@ -42,8 +43,11 @@ static void print_overview(void)
 int main(int argc, char **argv)
 {
     size_t i;
-    /* Write errors come back as EPIPE; cli_report decides what to do. */
+    /* Write errors come back as EPIPE or EFBIG instead of killing us, so
+       a partial output file is always removed; cli_report decides what
+       to say. */
     signal(SIGPIPE, SIG_IGN);
+    signal(SIGXFSZ, SIG_IGN);
     if (argc > 1) {
         for (i = 0; i < SUBCOMMAND_COUNT; i++)
             if (strcmp(argv[1], subcommands[i].name) == 0)
