@@ -17,16 +17,18 @@ PREFIX ?= /usr/local
 PKG_CONFIG ?= pkg-config
 AR ?= ar
 
-PNG_CFLAGS := $(shell $(PKG_CONFIG) --cflags libpng)
-PNG_LIBS := $(shell $(PKG_CONFIG) --libs libpng)
+# Evaluated when used, so they see a libpng that scripts/deps.sh has just
+# installed on a fresh machine.
+PNG_CFLAGS = $(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null)
+PNG_LIBS = $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null || echo -lpng)
 
 OPT ?= -O2 -g
 WARNINGS := -Wall -Wextra -Werror -pedantic -Wshadow -Wstrict-prototypes \
             -Wmissing-prototypes -Wformat=2
 CFLAGS ?=
-ALL_CFLAGS := -std=c11 $(OPT) $(WARNINGS) -Iinclude $(PNG_CFLAGS) $(CFLAGS) \
+ALL_CFLAGS = -std=c11 $(OPT) $(WARNINGS) -Iinclude $(PNG_CFLAGS) $(CFLAGS) \
               -MMD -MP
-LDLIBS := $(PNG_LIBS) -lpthread -lm
+LDLIBS = $(PNG_LIBS) -lpthread -lm
 
 LIB_SRC := $(sort $(shell find src -name '*.c'))
 CLI_SRC := $(sort $(wildcard cli/*.c))
@@ -48,7 +50,15 @@ RAYO := $(BUILD)/rayo
 
 all: $(RAYO) $(LIB)
 
-$(BUILD)/obj/%.o: %.c
+# What a fresh Debian machine lacks is installed once (scripts/deps.sh).
+$(BUILD)/.deps-build:
+	@scripts/deps.sh build
+	@mkdir -p $(dir $@) && touch $@
+$(BUILD)/.deps-check:
+	@scripts/deps.sh check
+	@mkdir -p $(dir $@) && touch $@
+
+$(BUILD)/obj/%.o: %.c | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
@@ -69,7 +79,7 @@ unit: $(UNIT_BIN)
 
 # Every test, as TAP, through prove.  Command tests find the build through
 # the environment, so `make check BUILD=build-asan` tests that build.
-check: all $(UNIT_BIN)
+check: all $(UNIT_BIN) | $(BUILD)/.deps-check
 	RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
 	RAYO_CC="$(CC)" RAYO_SOURCE=$(CURDIR) \
 	    prove -f --exec '' $(UNIT_BIN) $(sort $(wildcard tests/cli/*.t))
@@ -84,6 +94,19 @@ check-sanitize:
 	$(MAKE) check CC=clang BUILD=$(BUILD)-sanitize \
 	    OPT="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
 	    LDFLAGS="-fsanitize=address,undefined"
+
+# Benchmarks (bench/bench.c says how to add a row): a table on stdout
+# and $(BUILD)/bench.json; docs/performance.md quotes them.
+BENCH_BIN := $(BUILD)/bench/rayo-bench
+
+$(BENCH_BIN): $(BENCH_SRC) bench/bench.h $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) -Ibench $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) \
+	    $(LDLIBS)
+
+bench: $(RAYO) $(BENCH_BIN)
+	RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
+	RAYO_SOURCE=$(CURDIR) $(BENCH_BIN) --json $(BUILD)/bench.json
 
 # The command tests with every rayo run under valgrind memcheck.
 check-valgrind: all $(UNIT_BIN)
