@@ -25,6 +25,7 @@ int cli_render(int argc, char **argv);
 int cli_convert(int argc, char **argv);
 int cli_compare(int argc, char **argv);
 int cli_view(int argc, char **argv);
+int cli_grade(int argc, char **argv);
 
 /* view: the terminal's width ($COLUMNS, else 80), and an image printed
  * as text on stream (preview.h); returns an exit status. */

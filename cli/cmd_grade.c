@@ -1,0 +1,413 @@
+/*
+ * cmd_grade.c - `rayo grade`: grade one submission (files or a folder)
+ * or, with --each, every submission folder in a directory, and print the
+ * report as text or JSON.
+ *
+ * All the checking is library code (grade.h); this file parses options,
+ * lays the report out and picks the exit status: 0 when everything
+ * passed, 1 when a criterion failed, 2 for usage errors.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <getopt.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "rayo/grade.h"
+
+typedef struct grade_request {
+    rayo_grade_options options;
+    int json, each;
+} grade_request;
+
+static void print_help(void)
+{
+    size_t count, i;
+    const rayo_grade_exercise *exercises = rayo_grade_exercises(&count);
+    printf(
+        "usage: rayo grade [OPTIONS] SOURCE.c [MORE.c ...]\n"
+        "       rayo grade [OPTIONS] FOLDER\n"
+        "       rayo grade [OPTIONS] --each DIRECTORY\n\n"
+        "Checks a submission the way the course does: it compiles with "
+        "cc -std=c99\n-Wall -Werror -pedantic ... -lm; its functions "
+        "producto_interno, norma and\nintersecta_esfera return the right "
+        "values; it runs with no input to exit\nstatus 0 under limits; its "
+        "output is strict plain PBM of the right size; its\nimage is "
+        "consistent with the reference (as 'rayo compare' judges); and "
+        "valgrind\nfinds no invalid access and no leak.  Every failure is "
+        "explained.\n\n"
+        "options:\n"
+        "      --exercise NAME    the exercise (default ej1)\n"
+        "      --reference FILE   compare with this image instead of the "
+        "exercise's\n"
+        "                         reference rendered by rayo\n"
+        "      --diff OUT.png     keep the difference picture\n"
+        "      --json             the report as JSON\n"
+        "      --each             DIRECTORY holds one folder per student: "
+        "grade each,\n"
+        "                         print a table\n"
+        "      --timeout SEC      wall-clock limit per run (default 10)\n"
+        "      --cpu SEC          CPU time limit per run (default 10)\n"
+        "      --memory MIB       address space limit (default 1024)\n"
+        "      --output-limit MIB largest file the program may write "
+        "(default 64)\n"
+        "      --processes N      process limit (default 64)\n"
+        "      --no-valgrind      skip the valgrind run\n"
+        "      --cc COMMAND       the compiler (default $CC, else cc)\n"
+        "  -h, --help             this help\n\n"
+        "exercises:\n");
+    for (i = 0; i < count; i++)
+        printf("  %-8s %s\n", exercises[i].name, exercises[i].title);
+    printf("\nThe limits stop honest mistakes (loops, runaway output); they "
+           "are not a\nsandbox: grade untrusted code in a container.\n\n"
+           "exit status: 0 everything passed, 1 something failed, 2 bad "
+           "options.\n");
+}
+
+static int parse_seconds(const char *option, const char *text, double *value)
+{
+    if (!cli_parse_double(option, text, value))
+        return 0;
+    if (!(*value > 0 && *value <= 3600)) {
+        cli_usage_error("%s: '%s' is out of range; expected seconds, more "
+                        "than 0 and at most 3600",
+                        option, text);
+        return 0;
+    }
+    return 1;
+}
+
+static int parse_mib(const char *option, const char *text, uint64_t *bytes)
+{
+    unsigned long mib;
+    if (!cli_parse_uint(option, text, 1, 1048576, &mib))
+        return 0;
+    *bytes = (uint64_t)mib << 20;
+    return 1;
+}
+
+enum {
+    OPT_EXERCISE = 256, OPT_REFERENCE, OPT_DIFF, OPT_JSON, OPT_EACH,
+    OPT_TIMEOUT, OPT_CPU, OPT_MEMORY, OPT_OUTPUT_LIMIT, OPT_PROCESSES,
+    OPT_NO_VALGRIND, OPT_CC
+};
+
+static int parse_option(int c, grade_request *req)
+{
+    rayo_grade_options *o = &req->options;
+    switch (c) {
+    case OPT_EXERCISE:
+        o->exercise = rayo_grade_exercise_find(optarg);
+        if (o->exercise == NULL)
+            return cli_usage_error("--exercise: unknown exercise '%s'; "
+                                   "see 'rayo grade --help'",
+                                   optarg);
+        return CLI_EXIT_OK;
+    case OPT_REFERENCE: o->reference = optarg; return CLI_EXIT_OK;
+    case OPT_DIFF: o->diff = optarg; return CLI_EXIT_OK;
+    case OPT_JSON: req->json = 1; return CLI_EXIT_OK;
+    case OPT_EACH: req->each = 1; return CLI_EXIT_OK;
+    case OPT_NO_VALGRIND: o->valgrind = 0; return CLI_EXIT_OK;
+    case OPT_CC: o->cc = optarg; return CLI_EXIT_OK;
+    case OPT_TIMEOUT:
+        return parse_seconds("--timeout", optarg, &o->timeout)
+                   ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+    case OPT_CPU:
+        return parse_seconds("--cpu", optarg, &o->cpu) ? CLI_EXIT_OK
+                                                       : CLI_EXIT_USAGE;
+    case OPT_MEMORY:
+        return parse_mib("--memory", optarg, &o->memory) ? CLI_EXIT_OK
+                                                         : CLI_EXIT_USAGE;
+    case OPT_OUTPUT_LIMIT:
+        return parse_mib("--output-limit", optarg, &o->output_limit)
+                   ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+    case OPT_PROCESSES:
+        return cli_parse_uint("--processes", optarg, 1, 100000,
+                              &o->processes)
+                   ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_USAGE;
+}
+
+static int parse_request(int argc, char **argv, grade_request *req)
+{
+    static const struct option options[] = {
+        {"exercise", required_argument, NULL, OPT_EXERCISE},
+        {"reference", required_argument, NULL, OPT_REFERENCE},
+        {"diff", required_argument, NULL, OPT_DIFF},
+        {"json", no_argument, NULL, OPT_JSON},
+        {"each", no_argument, NULL, OPT_EACH},
+        {"timeout", required_argument, NULL, OPT_TIMEOUT},
+        {"cpu", required_argument, NULL, OPT_CPU},
+        {"memory", required_argument, NULL, OPT_MEMORY},
+        {"output-limit", required_argument, NULL, OPT_OUTPUT_LIMIT},
+        {"processes", required_argument, NULL, OPT_PROCESSES},
+        {"no-valgrind", no_argument, NULL, OPT_NO_VALGRIND},
+        {"cc", required_argument, NULL, OPT_CC},
+        {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0}};
+    int c;
+    opterr = 0;
+    optind = 0;
+    while ((c = getopt_long(argc, argv, ":h", options, NULL)) != -1) {
+        int status;
+        if (c == 'h') {
+            print_help();
+            return -1;
+        }
+        if (c == '?' || c == ':')
+            return cli_bad_option(c, argv, optind);
+        status = parse_option(c, req);
+        if (status != CLI_EXIT_OK)
+            return status;
+    }
+    if (optind >= argc)
+        return cli_usage_error("grade: no submission given; expected "
+                               "SOURCE.c, a folder, or --each DIRECTORY");
+    if (req->each && argc - optind != 1)
+        return cli_usage_error("grade: --each takes one DIRECTORY, not %d "
+                               "arguments",
+                               argc - optind);
+    if (req->each && req->options.diff != NULL)
+        return cli_usage_error("--diff: applies to one submission, not to "
+                               "--each");
+    return CLI_EXIT_OK;
+}
+
+/* ---- text ---- */
+
+static void print_text(const rayo_grade_report *r)
+{
+    size_t c, i, failed = 0, skipped = 0, warnings = 0;
+    char failed_names[128] = "";
+    for (c = 0; c < RAYO_GRADE_CRITERIA; c++) {
+        const rayo_grade_item *item = &r->items[c];
+        const char *result = item->result == RAYO_GRADE_FAIL
+                                 ? "FAIL"
+                                 : rayo_grade_result_name(item->result);
+        printf("%-10s %-8s %s\n", rayo_grade_criterion_name(c), result,
+               item->line_count > 0 ? item->lines[0] : "");
+        for (i = 1; i < item->line_count; i++)
+            printf("%-19s %s\n", "", item->lines[i]);
+        warnings += item->warnings;
+        if (item->result == RAYO_GRADE_SKIPPED)
+            skipped++;
+        if (item->result == RAYO_GRADE_FAIL) {
+            size_t n = strlen(failed_names);
+            snprintf(failed_names + n, sizeof failed_names - n, "%s%s",
+                     failed++ > 0 ? ", " : "",
+                     rayo_grade_criterion_name(c));
+        }
+    }
+    if (failed > 0)
+        printf("\nFAIL: %zu of %d criteria failed (%s)", failed,
+               RAYO_GRADE_CRITERIA, failed_names);
+    else
+        printf("\nPASS: %zu of %d criteria passed", RAYO_GRADE_CRITERIA -
+                                                        skipped,
+               RAYO_GRADE_CRITERIA);
+    if (skipped > 0)
+        printf(", %zu skipped", skipped);
+    if (warnings > 0)
+        printf(", %zu warning%s", warnings, warnings == 1 ? "" : "s");
+    printf("\n");
+}
+
+/* ---- JSON ---- */
+
+static void json_string(const char *s)
+{
+    putchar('"');
+    for (; *s != '\0'; s++) {
+        unsigned char ch = (unsigned char)*s;
+        if (ch == '"' || ch == '\\')
+            printf("\\%c", ch);
+        else if (ch == '\n')
+            printf("\\n");
+        else if (ch == '\t')
+            printf("\\t");
+        else if (ch < 0x20 || ch == 0x7f)
+            printf("\\u%04x", ch);
+        else
+            putchar(ch);
+    }
+    putchar('"');
+}
+
+static void print_json(const char *student, const rayo_grade_options *o,
+                       const rayo_grade_report *r)
+{
+    size_t c, i;
+    printf("{");
+    if (student != NULL) {
+        printf("\"student\": ");
+        json_string(student);
+        printf(", ");
+    }
+    printf("\"exercise\": ");
+    json_string(o->exercise->name);
+    printf(", \"sources\": [");
+    for (i = 0; i < o->source_count; i++) {
+        printf(i > 0 ? ", " : "");
+        json_string(o->sources[i]);
+    }
+    printf("], \"result\": \"%s\", \"verdict\": ",
+           rayo_grade_result_name(rayo_grade_overall(r)));
+    if (r->verdict != NULL)
+        json_string(r->verdict);
+    else
+        printf("null");
+    printf(", \"criteria\": [");
+    for (c = 0; c < RAYO_GRADE_CRITERIA; c++) {
+        const rayo_grade_item *item = &r->items[c];
+        printf("%s{\"name\": \"%s\", \"result\": \"%s\", \"reasons\": [",
+               c > 0 ? ", " : "", rayo_grade_criterion_name(c),
+               rayo_grade_result_name(item->result));
+        for (i = 0; i < item->line_count; i++) {
+            printf(i > 0 ? ", " : "");
+            json_string(item->lines[i]);
+        }
+        printf("]}");
+    }
+    printf("]}");
+}
+
+/* ---- one submission ---- */
+
+static int grade_one(const char *path, const char *student,
+                     grade_request *req, rayo_grade_report *report,
+                     rayo_error *err)
+{
+    char **sources = NULL;
+    size_t count = 0;
+    rayo_status status = rayo_grade_sources(path, &sources, &count, err);
+    if (status == RAYO_OK) {
+        req->options.sources = (const char *const *)sources;
+        req->options.source_count = count;
+        status = rayo_grade(&req->options, report, err);
+    }
+    if (status == RAYO_OK && req->json)
+        print_json(student, &req->options, report);
+    req->options.sources = NULL;
+    req->options.source_count = 0;
+    rayo_grade_paths_free(sources, count);
+    return status == RAYO_OK;
+}
+
+static int grade_single(int argc, char **argv, int first, grade_request *req)
+{
+    rayo_grade_report report;
+    rayo_error err;
+    int exit_status;
+    rayo_error_clear(&err);
+    if (first + 1 == argc) {
+        if (!grade_one(argv[first], NULL, req, &report, &err))
+            return cli_report(&err);
+    } else {
+        req->options.sources = (const char *const *)(argv + first);
+        req->options.source_count = (size_t)(argc - first);
+        if (rayo_grade(&req->options, &report, &err) != RAYO_OK)
+            return cli_report(&err);
+        if (req->json)
+            print_json(NULL, &req->options, &report);
+    }
+    if (req->json)
+        printf("\n");
+    else
+        print_text(&report);
+    exit_status = rayo_grade_overall(&report) == RAYO_GRADE_PASS
+                      ? CLI_EXIT_OK
+                      : CLI_EXIT_FAILURE;
+    rayo_grade_report_free(&report);
+    return exit_status;
+}
+
+/* ---- a class ---- */
+
+static void print_table_header(void)
+{
+    size_t c;
+    printf("%-20s", "student");
+    for (c = 0; c < RAYO_GRADE_CRITERIA; c++)
+        printf(" %-9s", rayo_grade_criterion_name(c));
+    printf(" result\n");
+}
+
+static void print_table_row(const char *student, const rayo_grade_report *r)
+{
+    size_t c;
+    printf("%-20s", student);
+    for (c = 0; c < RAYO_GRADE_CRITERIA; c++)
+        printf(" %-9s", r->items[c].result == RAYO_GRADE_FAIL
+                            ? "FAIL"
+                            : rayo_grade_result_name(r->items[c].result));
+    printf(" %s\n", rayo_grade_overall(r) == RAYO_GRADE_PASS ? "PASS"
+                                                             : "FAIL");
+}
+
+static const char *base_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash != NULL ? slash + 1 : path;
+}
+
+static int grade_each(const char *dir, grade_request *req)
+{
+    char **folders = NULL;
+    size_t count = 0, i, passed = 0;
+    rayo_error err;
+    rayo_error_clear(&err);
+    if (rayo_grade_submissions(dir, &folders, &count, &err) != RAYO_OK)
+        return cli_report(&err);
+    if (req->json)
+        printf("[");
+    else
+        print_table_header();
+    for (i = 0; i < count; i++) {
+        rayo_grade_report report;
+        const char *student = base_name(folders[i]);
+        if (req->json && i > 0)
+            printf(",\n ");
+        rayo_error_clear(&err);
+        if (!grade_one(folders[i], student, req, &report, &err)) {
+            /* One bad folder does not stop the class. */
+            if (req->json) {
+                printf("{\"student\": ");
+                json_string(student);
+                printf(", \"result\": \"error\", \"error\": ");
+                json_string(err.message);
+                printf("}");
+            } else {
+                printf("%-20s error: %s\n", student, err.message);
+            }
+            continue;
+        }
+        if (!req->json)
+            print_table_row(student, &report);
+        if (rayo_grade_overall(&report) == RAYO_GRADE_PASS)
+            passed++;
+        rayo_grade_report_free(&report);
+        fflush(stdout);
+    }
+    if (req->json)
+        printf("]\n");
+    else
+        printf("\n%zu of %zu submissions passed\n", passed, count);
+    rayo_grade_paths_free(folders, count);
+    return passed == count ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
+}
+
+int cli_grade(int argc, char **argv)
+{
+    grade_request req;
+    int status;
+    memset(&req, 0, sizeof req);
+    rayo_grade_options_init(&req.options);
+    status = parse_request(argc, argv, &req);
+    if (status != CLI_EXIT_OK)
+        return status < 0 ? CLI_EXIT_OK : status;
+    if (req.each)
+        return grade_each(argv[optind], &req);
+    return grade_single(argc, argv, optind, &req);
+}

@@ -1,0 +1,141 @@
+/*
+ * grade.h - checking a student's submission the way the course does:
+ * it compiles with the course's flags, its three functions return the
+ * right values, it runs to the end under limits, its output is strict
+ * Netpbm of the right size, its image is consistent with the reference,
+ * and valgrind finds no invalid access and no leak.
+ *
+ * The grader is library code: it never prints.  It fills a report, one
+ * entry per criterion (pass, fail or skipped, with reason lines written
+ * for the student), that the command turns into text or JSON.  Each
+ * exercise of the course is an entry in a registry (rayo_grade_exercise)
+ * with its name, image size and reference, so later exercises plug in.
+ *
+ * What it is not: a security sandbox.  The program runs as the calling
+ * user, in a fresh temporary directory, with a minimal environment and
+ * resource limits (setrlimit in the child before exec: CPU time, address
+ * space, file size, process count; a wall-clock timeout that kills the
+ * whole process group).  That stops the accidents of honest code
+ * (infinite loops, runaway output, fork loops, huge allocations); it
+ * does not stop code written to do harm, which can read and write
+ * anything the user can.  Grade untrusted code inside a container or a
+ * throwaway account (docs/grading.md).
+ */
+#ifndef RAYO_GRADE_H
+#define RAYO_GRADE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/image.h"
+#include "rayo/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The criteria, in the order they are checked and reported. */
+typedef enum rayo_grade_criterion {
+    RAYO_GRADE_COMPILE,   /* cc -std=c99 -Wall -Werror -pedantic ... -lm */
+    RAYO_GRADE_FUNCTIONS, /* producto_interno, norma, intersecta_esfera */
+    RAYO_GRADE_RUN,       /* runs to exit status 0 within the limits */
+    RAYO_GRADE_OUTPUT,    /* strict Netpbm, the exercise's size */
+    RAYO_GRADE_IMAGE,     /* consistent with the reference image */
+    RAYO_GRADE_VALGRIND,  /* no invalid access, no leak */
+    RAYO_GRADE_CRITERIA   /* how many there are */
+} rayo_grade_criterion;
+
+typedef enum rayo_grade_result {
+    RAYO_GRADE_SKIPPED = 0, /* not checked (reason says why) */
+    RAYO_GRADE_PASS,
+    RAYO_GRADE_FAIL
+} rayo_grade_result;
+
+/* One criterion's outcome: a result and reason lines for the student. */
+typedef struct rayo_grade_item {
+    rayo_grade_result result;
+    char **lines;       /* line_count lines, no newline; owned */
+    size_t line_count;
+    size_t warnings;    /* lines that begin "warning: " */
+} rayo_grade_item;
+
+typedef struct rayo_grade_report {
+    rayo_grade_item items[RAYO_GRADE_CRITERIA];
+    char *verdict;      /* compare's verdict ("identical", ...) or NULL */
+} rayo_grade_report;
+
+/* What an exercise asks for.  The registry is constant data. */
+typedef struct rayo_grade_exercise {
+    const char *name;        /* "ej1" */
+    const char *title;       /* "Ejercicio obligatorio 1: the sphere" */
+    uint32_t width, height;  /* the image the program must write */
+    int check_functions;     /* the ej1 functions are checked */
+    /* Renders the exercise's reference image into image. */
+    rayo_status (*reference)(rayo_image *image, rayo_error *err);
+} rayo_grade_exercise;
+
+/* The exercise called name, or NULL. */
+const rayo_grade_exercise *rayo_grade_exercise_find(const char *name);
+
+/* The registry: *count exercises. */
+const rayo_grade_exercise *rayo_grade_exercises(size_t *count);
+
+typedef struct rayo_grade_options {
+    const char *const *sources;  /* the student's .c files */
+    size_t source_count;
+    const rayo_grade_exercise *exercise;
+    const char *cc;              /* compiler; NULL: $CC, else "cc" */
+    const char *reference;       /* image file; NULL: the exercise's */
+    const char *diff;            /* write the compare picture here */
+    double timeout;              /* wall seconds per run (default 10) */
+    double cpu;                  /* CPU seconds per run (default 10) */
+    uint64_t memory;             /* address space, bytes (1 GiB) */
+    uint64_t output_limit;       /* file size, bytes (64 MiB) */
+    unsigned long processes;     /* process count (64) */
+    int valgrind;                /* run memcheck when installed */
+} rayo_grade_options;
+
+/* The defaults above, for exercise ej1 and no sources. */
+void rayo_grade_options_init(rayo_grade_options *options);
+
+/*
+ * Grades a submission.  RAYO_OK means the grading itself worked, however
+ * the submission did: read the report.  Errors are the grader's own (no
+ * temporary directory, a reference that cannot be read, out of memory),
+ * and leave the report empty.  Free the report with
+ * rayo_grade_report_free in every case.
+ */
+rayo_status rayo_grade(const rayo_grade_options *options,
+                       rayo_grade_report *report, rayo_error *err);
+
+/* RAYO_GRADE_PASS when no criterion failed, else RAYO_GRADE_FAIL. */
+rayo_grade_result rayo_grade_overall(const rayo_grade_report *report);
+
+/* "compile", "functions", "run", "output", "image", "valgrind". */
+const char *rayo_grade_criterion_name(rayo_grade_criterion criterion);
+
+/* "pass", "fail", "skipped". */
+const char *rayo_grade_result_name(rayo_grade_result result);
+
+void rayo_grade_report_free(rayo_grade_report *report);
+
+/*
+ * The C sources of a submission: path itself when it is a file, else
+ * the *.c files directly inside the directory, sorted by name.  Free
+ * with rayo_grade_paths_free.  RAYO_ERR_INVALID when a directory holds
+ * no .c file.
+ */
+rayo_status rayo_grade_sources(const char *path, char ***sources,
+                               size_t *count, rayo_error *err);
+
+/* The submission folders directly inside dir, sorted by name. */
+rayo_status rayo_grade_submissions(const char *dir, char ***folders,
+                                   size_t *count, rayo_error *err);
+
+void rayo_grade_paths_free(char **paths, size_t count);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,64 @@
+/*
+ * exercise.c - the registry of the course's exercises that rayo can
+ * grade: each with its name, the image its program must write and how
+ * to make the reference that image is compared with.
+ *
+ * Adding an exercise is adding an entry here (and, where it has
+ * functions of its own to check, a harness in functions.c).  The
+ * registry is constant data; nothing here runs a submission.
+ */
+#include <stddef.h>
+#include <string.h>
+
+#include "rayo/camera.h"
+#include "rayo/render.h"
+#include "rayo/scene.h"
+#include "rayo/seed.h"
+
+#include "grade_impl.h"
+
+/* Ejercicio obligatorio 1: the seed sphere, 640x480, fov 90, hit = black. */
+static rayo_status reference_ej1(rayo_image *image, rayo_error *err)
+{
+    rayo_camera camera;
+    rayo_scene *scene = NULL;
+    rayo_render_options options;
+    rayo_status status = rayo_camera_init(
+        &camera, RAYO_SEED_WIDTH, RAYO_SEED_HEIGHT, RAYO_SEED_FOV,
+        rayo_vec3_make(0, 0, 0), err);
+    if (status == RAYO_OK)
+        status = rayo_scene_create(&scene, err);
+    if (status == RAYO_OK)
+        status = rayo_scene_add_sphere(
+            scene,
+            rayo_vec3_make(RAYO_SEED_CENTER_X, RAYO_SEED_CENTER_Y,
+                           RAYO_SEED_CENTER_Z),
+            RAYO_SEED_RADIUS, err);
+    if (status == RAYO_OK) {
+        rayo_render_options_init(&options);
+        options.threads = 1;
+        status = rayo_render_image(&camera, scene, &options, image, err);
+    }
+    rayo_scene_free(scene);
+    return status;
+}
+
+static const rayo_grade_exercise exercises[] = {
+    {"ej1", "Ejercicio obligatorio 1: the sphere, plain PBM 640x480",
+     RAYO_SEED_WIDTH, RAYO_SEED_HEIGHT, 1, reference_ej1},
+};
+
+const rayo_grade_exercise *rayo_grade_exercises(size_t *count)
+{
+    *count = sizeof exercises / sizeof exercises[0];
+    return exercises;
+}
+
+const rayo_grade_exercise *rayo_grade_exercise_find(const char *name)
+{
+    size_t i;
+    for (i = 0; i < sizeof exercises / sizeof exercises[0]; i++)
+        if (strcmp(exercises[i].name, name) == 0)
+            return &exercises[i];
+    return NULL;
+}

@@ -1,0 +1,215 @@
+/*
+ * grade.c - rayo_grade: the steps in order, each filling its criterion,
+ * and what a failed step means for the ones after it (nothing runs
+ * that was not compiled; a program that did not finish has no output to
+ * check; one that hung is not run again under valgrind).
+ *
+ * The reference is loaded before anything runs, so a bad --reference
+ * is a usage error, not a failed grade.  The temporary directory is
+ * removed on every path out.
+ */
+#define _XOPEN_SOURCE 700
+
+#include <errno.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "rayo/pbm_check.h"
+#include "rayo/reader.h"
+
+#include "grade_impl.h"
+
+void rayo_grade_options_init(rayo_grade_options *options)
+{
+    memset(options, 0, sizeof *options);
+    options->exercise = rayo_grade_exercise_find("ej1");
+    options->timeout = 10;
+    options->cpu = 10;
+    options->memory = (uint64_t)1 << 30;
+    options->output_limit = (uint64_t)64 << 20;
+    options->processes = 64;
+    options->valgrind = 1;
+}
+
+static void skip(grade_context *ctx, rayo_grade_criterion c,
+                 const char *reason, rayo_error *err, rayo_status *status)
+{
+    rayo_grade_item *item = &ctx->report->items[c];
+    if (*status != RAYO_OK || item->result != RAYO_GRADE_SKIPPED ||
+        item->line_count > 0)
+        return;
+    *status = grade_say(item, err, "%s", reason);
+}
+
+/* Splits the compiler command on spaces ("gcc -m32" is two words). */
+static rayo_status split_cc(grade_context *ctx, rayo_error *err)
+{
+    const char *cc = ctx->options->cc;
+    char *copy, *word, *save = NULL;
+    if (cc == NULL || cc[0] == '\0')
+        cc = getenv("CC");
+    if (cc == NULL || strspn(cc, " ") == strlen(cc))
+        cc = "cc";
+    copy = strdup(cc);
+    ctx->cc = calloc(strlen(cc) / 2 + 2, sizeof *ctx->cc);
+    if (copy == NULL || ctx->cc == NULL) {
+        free(copy);
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    }
+    for (word = strtok_r(copy, " ", &save); word != NULL;
+         word = strtok_r(NULL, " ", &save))
+        ctx->cc[ctx->cc_words++] = word;
+    return RAYO_OK;
+}
+
+static rayo_status absolute_sources(grade_context *ctx, rayo_error *err)
+{
+    size_t i;
+    ctx->absolute = calloc(ctx->source_count, sizeof *ctx->absolute);
+    if (ctx->absolute == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    for (i = 0; i < ctx->source_count; i++) {
+        ctx->absolute[i] = realpath(ctx->sources[i], NULL);
+        if (ctx->absolute[i] == NULL)
+            return rayo_error_set(err, RAYO_ERR_INVALID, "%s: %s",
+                                  ctx->sources[i], strerror(errno));
+    }
+    return RAYO_OK;
+}
+
+static rayo_status load_reference(const rayo_grade_options *o,
+                                  rayo_image *reference, rayo_error *err)
+{
+    if (o->reference != NULL)
+        return rayo_image_read_file(o->reference, reference, NULL, err);
+    return o->exercise->reference(reference, err);
+}
+
+/* The output criterion, and the pixels for the image criterion. */
+static rayo_status check_output(grade_context *ctx, rayo_image *image,
+                                int *salvaged, rayo_error *err)
+{
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_OUTPUT];
+    rayo_status status = rayo_pbm_check(
+        ctx->output, ctx->output_size, ctx->options->exercise->width,
+        ctx->options->exercise->height, item, image, err);
+    *salvaged = item->result == RAYO_GRADE_FAIL;
+    if (status != RAYO_OK || image->pixels != NULL || ctx->output_size == 0)
+        return status;
+    /* Not P1: another format the readers may know. */
+    *salvaged = 0;
+    if (rayo_image_read_memory(ctx->output, ctx->output_size, "the output",
+                               image, NULL, NULL) != RAYO_OK)
+        memset(image, 0, sizeof *image);
+    return RAYO_OK;
+}
+
+static rayo_status run_steps(grade_context *ctx, const rayo_image *reference,
+                             rayo_error *err)
+{
+    rayo_grade_report *report = ctx->report;
+    rayo_image image;
+    int salvaged = 0;
+    rayo_status status = grade_step_compile(ctx, err);
+    memset(&image, 0, sizeof image);
+    if (status != RAYO_OK || ctx->program == NULL)
+        return status;
+    if (ctx->options->exercise->check_functions)
+        status = grade_step_functions(ctx, err);
+    if (status == RAYO_OK)
+        status = grade_step_run(ctx, err);
+    if (status == RAYO_OK && report->items[RAYO_GRADE_RUN].result ==
+                                 RAYO_GRADE_PASS)
+        status = check_output(ctx, &image, &salvaged, err);
+    if (status == RAYO_OK && image.pixels != NULL)
+        status = grade_step_image(ctx, &image, reference, salvaged, err);
+    else if (report->items[RAYO_GRADE_RUN].result == RAYO_GRADE_PASS)
+        skip(ctx, RAYO_GRADE_IMAGE, "not compared: the output is not an "
+                                    "image that can be read",
+             err, &status);
+    rayo_image_free(&image);
+    if (status == RAYO_OK && ctx->options->valgrind &&
+        !(report->items[RAYO_GRADE_RUN].result == RAYO_GRADE_FAIL &&
+          strstr(report->items[RAYO_GRADE_RUN].lines[0], "did not finish") !=
+              NULL))
+        status = grade_step_valgrind(ctx, err);
+    return status;
+}
+
+static void skip_the_rest(grade_context *ctx, rayo_error *err,
+                          rayo_status *status)
+{
+    const rayo_grade_report *r = ctx->report;
+    if (r->items[RAYO_GRADE_COMPILE].result != RAYO_GRADE_PASS) {
+        skip(ctx, RAYO_GRADE_FUNCTIONS, "not checked: it did not compile",
+             err, status);
+        skip(ctx, RAYO_GRADE_RUN, "not run: it did not compile", err, status);
+        skip(ctx, RAYO_GRADE_OUTPUT, "not checked: it did not compile", err,
+             status);
+        skip(ctx, RAYO_GRADE_IMAGE, "not compared: it did not compile", err,
+             status);
+        skip(ctx, RAYO_GRADE_VALGRIND, "not run: it did not compile", err,
+             status);
+        return;
+    }
+    if (!ctx->options->exercise->check_functions)
+        skip(ctx, RAYO_GRADE_FUNCTIONS, "this exercise has no functions to "
+                                        "check", err, status);
+    if (r->items[RAYO_GRADE_RUN].result != RAYO_GRADE_PASS)
+        skip(ctx, RAYO_GRADE_OUTPUT, "not checked: the program did not run "
+                                     "to the end", err, status);
+    skip(ctx, RAYO_GRADE_IMAGE, "not compared: the program did not run to "
+                                "the end", err, status);
+    if (!ctx->options->valgrind)
+        skip(ctx, RAYO_GRADE_VALGRIND, "not run (--no-valgrind)", err,
+             status);
+    else
+        skip(ctx, RAYO_GRADE_VALGRIND, "not run: the program did not "
+                                       "finish", err, status);
+}
+
+rayo_status rayo_grade(const rayo_grade_options *options,
+                       rayo_grade_report *report, rayo_error *err)
+{
+    grade_context ctx;
+    rayo_image reference;
+    rayo_status status;
+    size_t i;
+    memset(report, 0, sizeof *report);
+    memset(&ctx, 0, sizeof ctx);
+    memset(&reference, 0, sizeof reference);
+    if (options->source_count == 0 || options->exercise == NULL ||
+        !(options->timeout > 0) || !(options->cpu >= 0))
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "grade: no sources, no exercise or a "
+                              "non-positive timeout");
+    ctx.options = options;
+    ctx.report = report;
+    ctx.sources = options->sources;
+    ctx.source_count = options->source_count;
+    status = load_reference(options, &reference, err);
+    if (status == RAYO_OK)
+        status = absolute_sources(&ctx, err);
+    if (status == RAYO_OK)
+        status = split_cc(&ctx, err);
+    if (status == RAYO_OK)
+        status = grade_tempdir_create(&ctx.dir, err);
+    if (status == RAYO_OK)
+        status = run_steps(&ctx, &reference, err);
+    if (status == RAYO_OK)
+        skip_the_rest(&ctx, err, &status);
+    grade_tempdir_remove(ctx.dir);
+    for (i = 0; ctx.absolute != NULL && i < ctx.source_count; i++)
+        free(ctx.absolute[i]);
+    free(ctx.absolute);
+    if (ctx.cc != NULL && ctx.cc_words > 0)
+        free(ctx.cc[0]);
+    free(ctx.cc);
+    free(ctx.program);
+    free(ctx.output);
+    rayo_image_free(&reference);
+    if (status != RAYO_OK)
+        rayo_grade_report_free(report);
+    return status;
+}

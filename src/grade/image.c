@@ -1,0 +1,190 @@
+/*
+ * image.c - the fifth criterion: the picture is consistent with the
+ * exercise's reference, as `rayo compare` judges it (compare.h), and
+ * when it is not, what the mistake looks like, in the student's terms.
+ *
+ * The pixels come from the strict checker when the output is P1 (even a
+ * slightly wrong P1: its pixels are read as if the header were right,
+ * and the report says so), or from the tolerant readers for any other
+ * format.  The diagnosis names are compare's; the sentences and the
+ * hints about likely causes in the code are this file's.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "rayo/compare.h"
+#include "rayo/output.h"
+#include "rayo/reader.h"
+
+#include "grade_impl.h"
+
+/* tan(45 rad) / tan(45 deg): how much bigger the focal distance is
+   when FOV is given to tan() in degrees: the sphere looks this much
+   smaller. */
+#define DEGREES_AS_RADIANS_SCALE (1.0 / tan(45.0))
+
+static rayo_status say_scaled(rayo_grade_item *item,
+                              const rayo_compare_report *r, rayo_error *err)
+{
+    double wrong = fabs(DEGREES_AS_RADIANS_SCALE);
+    rayo_status status = grade_fail(
+        item, err, "the sphere is %.2f times the size of the reference's: "
+                   "the focal distance z = ancho / (2 tan(fov / 2)) is off",
+        r->scale_found);
+    if (status == RAYO_OK && fabs(r->scale_found - wrong) < 0.03)
+        status = grade_say(item, err, "that is exactly what tan() of FOV "
+                                      "in degrees gives: tan() takes "
+                                      "radians, fov * M_PI / 180");
+    return status;
+}
+
+static rayo_status say_diagnosis(rayo_grade_item *item,
+                                 const rayo_compare_report *r,
+                                 rayo_error *err)
+{
+    switch (r->diagnosis) {
+    case RAYO_DIAGNOSIS_NONE:
+        return RAYO_OK;
+    case RAYO_DIAGNOSIS_FLIPPED_VERTICALLY:
+        return grade_fail(item, err, "the image is upside down: rows must "
+                                     "go from the top (y = -ALTO/2) down, "
+                                     "and the direction is (x, -y, z)");
+    case RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY:
+        return grade_fail(item, err, "the image is mirrored left to right: "
+                                     "columns must go from x = -ANCHO/2 "
+                                     "to the right");
+    case RAYO_DIAGNOSIS_ROTATED_180:
+        return grade_fail(item, err, "the image is rotated 180 degrees "
+                                     "(upside down and mirrored)");
+    case RAYO_DIAGNOSIS_INVERTED:
+        return grade_fail(item, err, "black and white are swapped: PBM's 1 "
+                                     "is black, and must be written where "
+                                     "the ray hits the sphere");
+    case RAYO_DIAGNOSIS_TRANSPOSED:
+        return grade_fail(item, err, "rows and columns are swapped: write "
+                                     "the image row by row, each row from "
+                                     "left to right");
+    case RAYO_DIAGNOSIS_SHIFTED:
+        return grade_fail(item, err, "the image is moved %d pixels right "
+                                     "and %d down: the centre of the "
+                                     "picture must be x = 0, y = 0 (x = i "
+                                     "- ANCHO/2, y = j - ALTO/2)",
+                          (int)r->shift_x, (int)r->shift_y);
+    case RAYO_DIAGNOSIS_SCALED:
+        return say_scaled(item, r, err);
+    case RAYO_DIAGNOSIS_DIFFERENT_SIZE:
+        return grade_fail(item, err, "the image is %ux%u; the reference is "
+                                     "%ux%u",
+                          (unsigned)r->image_width,
+                          (unsigned)r->image_height,
+                          (unsigned)r->reference_width,
+                          (unsigned)r->reference_height);
+    case RAYO_DIAGNOSIS_EMPTY:
+        return grade_fail(item, err, "the image is all white: no ray hits "
+                                     "the sphere");
+    case RAYO_DIAGNOSIS_NOT_A_SPHERE:
+        return grade_fail(item, err, "the black region is not round like a "
+                                     "sphere seen through the camera%s",
+                          r->image_black * 2 > r->pixels
+                              ? "; most of the image is black: is the "
+                                "direction normalised before "
+                                "intersecta_esfera?"
+                              : "");
+    case RAYO_DIAGNOSIS_OTHER_SPHERE:
+        return grade_fail(item, err, "there is a sphere, but elsewhere or "
+                                     "of another size: its centre is "
+                                     "%.0f, %.0f pixels off, its size %.2f "
+                                     "times the reference's",
+                          r->offset_x, r->offset_y, r->scale);
+    case RAYO_DIAGNOSIS_UNKNOWN:
+        break;
+    }
+    return grade_fail(item, err, "no simple mistake explains the "
+                                 "difference%s",
+                      r->image_black * 2 > r->pixels
+                          ? "; most of the image is black: is the "
+                            "direction normalised before "
+                            "intersecta_esfera?"
+                          : "");
+}
+
+static rayo_status judge(rayo_grade_item *item, const rayo_compare_report *r,
+                         rayo_error *err)
+{
+    rayo_status status;
+    if (r->verdict == RAYO_VERDICT_IDENTICAL) {
+        item->result = RAYO_GRADE_PASS;
+        return grade_say(item, err, "identical to the reference, pixel for "
+                                    "pixel");
+    }
+    if (r->verdict == RAYO_VERDICT_CONSISTENT) {
+        item->result = RAYO_GRADE_PASS;
+        return grade_say(item, err, "consistent with the reference: %llu "
+                                    "pixels differ (%.3f%%), all within %g "
+                                    "pixels of the sphere's outline "
+                                    "(rounding, float precision)",
+                         (unsigned long long)r->mismatches,
+                         r->mismatch_percent, r->tolerance);
+    }
+    status = grade_fail(item, err, "inconsistent with the reference: %llu "
+                                   "pixels differ (%.2f%%), %llu of them "
+                                   "more than %g pixels from the sphere's "
+                                   "outline",
+                        (unsigned long long)r->mismatches,
+                        r->mismatch_percent,
+                        (unsigned long long)r->beyond_tolerance,
+                        r->tolerance);
+    if (status == RAYO_OK)
+        status = say_diagnosis(item, r, err);
+    return status;
+}
+
+static rayo_status write_diff(rayo_grade_item *item, const char *path,
+                              const rayo_image *reference,
+                              const rayo_image *image, rayo_error *err)
+{
+    rayo_output *out;
+    rayo_status status = rayo_output_open(&out, path, err);
+    if (status != RAYO_OK)
+        return status;
+    status = rayo_compare_write_diff(reference, image, out, err);
+    if (status == RAYO_OK)
+        status = rayo_output_commit(out, err);
+    else
+        rayo_output_abort(out);
+    if (status != RAYO_OK)
+        return status;
+    return grade_say(item, err, "difference picture: %s (red: black only "
+                                "in the reference; blue: black only in "
+                                "yours)",
+                     path);
+}
+
+rayo_status grade_step_image(grade_context *ctx, const rayo_image *image,
+                             const rayo_image *reference, int salvaged,
+                             rayo_error *err)
+{
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_IMAGE];
+    rayo_compare_options options;
+    rayo_compare_report r;
+    rayo_status status;
+    rayo_compare_options_init(&options);
+    status = rayo_compare_images(reference, image, &options, &r, err);
+    if (status != RAYO_OK)
+        return status;
+    ctx->report->verdict = malloc(strlen(rayo_compare_verdict_name(
+                                      r.verdict)) + 1);
+    if (ctx->report->verdict == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    strcpy(ctx->report->verdict, rayo_compare_verdict_name(r.verdict));
+    status = judge(item, &r, err);
+    if (status == RAYO_OK && salvaged)
+        status = grade_say(item, err, "warning: the pixels were read as if "
+                                      "the output's mistakes above were "
+                                      "fixed");
+    if (status == RAYO_OK && ctx->options->diff != NULL)
+        status = write_diff(item, ctx->options->diff, reference, image, err);
+    return status;
+}

@@ -1,0 +1,153 @@
+/*
+ * report.c - the grader's report: reason lines added to a criterion,
+ * names for criteria and results, the overall result, and freeing.
+ *
+ * Reasons are whole sentences for a student; the command decides how to
+ * lay them out (text or JSON).  Nothing here knows what a criterion
+ * checks.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "grade_impl.h"
+
+static rayo_status add_line(rayo_grade_item *item, char *line,
+                            rayo_error *err)
+{
+    char **grown;
+    if (item->line_count >= ((size_t)-1) / sizeof *grown - 1) {
+        free(line);
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: too many lines");
+    }
+    grown = realloc(item->lines, (item->line_count + 1) * sizeof *grown);
+    if (grown == NULL) {
+        free(line);
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    }
+    item->lines = grown;
+    item->lines[item->line_count++] = line;
+    if (strncmp(line, "warning: ", 9) == 0)
+        item->warnings++;
+    return RAYO_OK;
+}
+
+static rayo_status vsay(rayo_grade_item *item, rayo_error *err,
+                        const char *format, va_list args) GRADE_PRINTF(3, 0);
+
+static rayo_status vsay(rayo_grade_item *item, rayo_error *err,
+                        const char *format, va_list args)
+{
+    char small[1];
+    char *line;
+    va_list copy;
+    int length;
+    va_copy(copy, args);
+    length = vsnprintf(small, sizeof small, format, copy);
+    va_end(copy);
+    if (length < 0)
+        return rayo_error_set(err, RAYO_ERR_INVALID, "grade: bad message");
+    line = malloc((size_t)length + 1);
+    if (line == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    vsnprintf(line, (size_t)length + 1, format, args);
+    return add_line(item, line, err);
+}
+
+rayo_status grade_say(rayo_grade_item *item, rayo_error *err,
+                      const char *format, ...)
+{
+    rayo_status status;
+    va_list args;
+    va_start(args, format);
+    status = vsay(item, err, format, args);
+    va_end(args);
+    return status;
+}
+
+rayo_status grade_fail(rayo_grade_item *item, rayo_error *err,
+                       const char *format, ...)
+{
+    rayo_status status;
+    va_list args;
+    item->result = RAYO_GRADE_FAIL;
+    va_start(args, format);
+    status = vsay(item, err, format, args);
+    va_end(args);
+    return status;
+}
+
+rayo_status grade_quote(rayo_grade_item *item, const char *text,
+                        size_t max, rayo_error *err)
+{
+    size_t shown = 0, total = 0;
+    const char *p = text;
+    while (*p != '\0') {
+        const char *end = strchr(p, '\n');
+        size_t length = end != NULL ? (size_t)(end - p) : strlen(p);
+        if (length > 0) {
+            total++;
+            if (shown < max) {
+                rayo_status status =
+                    grade_say(item, err, "  %.*s", (int)length, p);
+                if (status != RAYO_OK)
+                    return status;
+                shown++;
+            }
+        }
+        p += length;
+        if (*p == '\n')
+            p++;
+    }
+    if (total > shown)
+        return grade_say(item, err, "  ... (%zu more lines)", total - shown);
+    return RAYO_OK;
+}
+
+const char *rayo_grade_criterion_name(rayo_grade_criterion criterion)
+{
+    switch (criterion) {
+    case RAYO_GRADE_COMPILE: return "compile";
+    case RAYO_GRADE_FUNCTIONS: return "functions";
+    case RAYO_GRADE_RUN: return "run";
+    case RAYO_GRADE_OUTPUT: return "output";
+    case RAYO_GRADE_IMAGE: return "image";
+    case RAYO_GRADE_VALGRIND: return "valgrind";
+    case RAYO_GRADE_CRITERIA: break;
+    }
+    return "unknown";
+}
+
+const char *rayo_grade_result_name(rayo_grade_result result)
+{
+    switch (result) {
+    case RAYO_GRADE_PASS: return "pass";
+    case RAYO_GRADE_FAIL: return "fail";
+    case RAYO_GRADE_SKIPPED: return "skipped";
+    }
+    return "unknown";
+}
+
+rayo_grade_result rayo_grade_overall(const rayo_grade_report *report)
+{
+    size_t i;
+    for (i = 0; i < RAYO_GRADE_CRITERIA; i++)
+        if (report->items[i].result == RAYO_GRADE_FAIL)
+            return RAYO_GRADE_FAIL;
+    return RAYO_GRADE_PASS;
+}
+
+void rayo_grade_report_free(rayo_grade_report *report)
+{
+    size_t i, j;
+    if (report == NULL)
+        return;
+    for (i = 0; i < RAYO_GRADE_CRITERIA; i++) {
+        for (j = 0; j < report->items[i].line_count; j++)
+            free(report->items[i].lines[j]);
+        free(report->items[i].lines);
+    }
+    free(report->verdict);
+    memset(report, 0, sizeof *report);
+}
