@@ -1,0 +1,231 @@
+/*
+ * bvh.c - the scale row of `make bench`: 100,000 spheres against 10, and
+ * the bounding volume hierarchy against brute force.
+ *
+ * The scenes come from rayo_scene_random_spheres (a field of spheres on
+ * a ground plane, seeded; scene_random.h), lit by a directional and a
+ * point light, seen by the default camera at 1920x1080.  The 10-sphere
+ * and the 100,000-sphere scenes cover the same share of the picture, so
+ * their times per pixel compare like with like.  Frames render on one
+ * thread so the figures do not depend on what else the machine runs.
+ * Brute force (an unprepared scene tests every object) is too slow for a
+ * whole frame at 100,000 spheres, so both are timed on the same grid of
+ * primary rays, one in every 40x40 pixels.  The cloud
+ * (rayo_scene_random_cloud) is the hierarchy's hard case: a ray that
+ * misses crosses all of it.  Not a test: it prints, it checks nothing.
+ */
+#include <stdio.h>
+
+#include "bench.h"
+
+#define BVH_WIDTH 1920u
+#define BVH_HEIGHT 1080u
+#define BVH_MANY 100000u
+#define BVH_FEW 10u
+#define BVH_GRID 40u /* the brute-force sample: one ray per 40x40 pixels */
+#define BVH_SEED 2026u
+
+typedef enum bvh_layout { BVH_FIELD, BVH_CLOUD } bvh_layout;
+
+/* The scene, lit, prepared or not; NULL on failure. */
+static rayo_scene *bvh_scene(bvh_layout layout, size_t count, int prepare,
+                             double *build_seconds)
+{
+    rayo_scene *scene;
+    rayo_error err;
+    rayo_light sun = {RAYO_LIGHT_DIRECTIONAL, {0.4, 1.0, -0.5}, {0.7, 0.7, 0.7}};
+    rayo_light lamp = {RAYO_LIGHT_POINT, {-10.0, 20.0, 20.0}, {0.5, 0.5, 0.4}};
+    rayo_status status;
+    double start;
+    if (rayo_scene_create(&scene, &err) != RAYO_OK)
+        return NULL;
+    status = layout == BVH_FIELD
+                 ? rayo_scene_random_spheres(scene, count, BVH_SEED, &err)
+                 : rayo_scene_random_cloud(scene, count, BVH_SEED, &err);
+    if (status == RAYO_OK)
+        status = rayo_scene_add_light(scene, &sun, &err);
+    if (status == RAYO_OK)
+        status = rayo_scene_add_light(scene, &lamp, &err);
+    rayo_scene_set_ambient(scene, rayo_vec3_make(0.1, 0.1, 0.1));
+    rayo_scene_set_background(scene, rayo_vec3_make(0.5, 0.7, 1.0));
+    start = bench_now();
+    if (status == RAYO_OK && prepare)
+        status = rayo_scene_prepare(scene, &err);
+    if (build_seconds != NULL)
+        *build_seconds = bench_now() - start;
+    if (status != RAYO_OK) {
+        fprintf(stderr, "bench bvh: %s\n", err.message);
+        rayo_scene_free(scene);
+        return NULL;
+    }
+    return scene;
+}
+
+static int bvh_camera(rayo_camera *camera)
+{
+    rayo_error err;
+    return rayo_camera_init(camera, BVH_WIDTH, BVH_HEIGHT, 90.0,
+                            rayo_vec3_make(0, 0, 0), &err) == RAYO_OK
+               ? 0
+               : -1;
+}
+
+/* Nanoseconds per pixel of a whole frame on one thread, best of the
+ * table's repeats; -1 on failure. */
+static double frame_ns_per_pixel(const rayo_scene *scene,
+                                 rayo_shade_mode shade, int repeats)
+{
+    rayo_camera camera;
+    rayo_render_options options;
+    double best = -1;
+    int r;
+    if (bvh_camera(&camera) != 0)
+        return -1;
+    rayo_render_options_init(&options);
+    options.threads = 1;
+    options.shade = shade;
+    for (r = 0; r < repeats; r++) {
+        rayo_image image;
+        rayo_error err;
+        double start = bench_now(), seconds;
+        if (rayo_render_image(&camera, scene, &options, &image, &err) !=
+            RAYO_OK)
+            return -1;
+        seconds = bench_now() - start;
+        rayo_image_free(&image);
+        if (best < 0 || seconds < best)
+            best = seconds;
+    }
+    return best * 1e9 / ((double)BVH_WIDTH * BVH_HEIGHT);
+}
+
+/* Nearest-hit queries for the grid of primary rays: nanoseconds per
+ * ray (best of repeats) and, in *stats, the tests of one pass. */
+static double grid_ns_per_ray(const rayo_scene *scene, int repeats,
+                              rayo_scene_stats *stats)
+{
+    rayo_camera camera;
+    double best = -1;
+    int r;
+    if (bvh_camera(&camera) != 0)
+        return -1;
+    for (r = 0; r < repeats; r++) {
+        rayo_scene_stats pass = {0, 0, 0};
+        double start = bench_now(), seconds;
+        uint32_t i, j;
+        for (j = BVH_GRID / 2; j < BVH_HEIGHT; j += BVH_GRID)
+            for (i = BVH_GRID / 2; i < BVH_WIDTH; i += BVH_GRID) {
+                rayo_ray ray = rayo_camera_ray(&camera, i, j);
+                rayo_hit hit;
+                rayo_scene_intersect_counted(scene, &ray, 0.0, INFINITY,
+                                             &hit, &pass);
+            }
+        seconds = bench_now() - start;
+        *stats = pass;
+        if (best < 0 || seconds < best)
+            best = seconds;
+    }
+    return best * 1e9 / (double)stats->rays;
+}
+
+static double per_ray(uint64_t tests, const rayo_scene_stats *stats)
+{
+    return stats->rays ? (double)tests / (double)stats->rays : -1;
+}
+
+static double ratio(double a, double b)
+{
+    return a > 0 && b > 0 ? a / b : -1;
+}
+
+/* 10 against 100,000 spheres, whole frames. */
+static void bvh_frames(bench_table *table, int repeats)
+{
+    rayo_scene *few = bvh_scene(BVH_FIELD, BVH_FEW, 1, NULL);
+    double build = -1;
+    rayo_scene *many = bvh_scene(BVH_FIELD, BVH_MANY, 1, &build);
+    double few_phong, many_phong, few_hit, many_hit;
+    if (few == NULL || many == NULL) {
+        rayo_scene_free(few);
+        rayo_scene_free(many);
+        return;
+    }
+    bench_add(table, "bvh_build_100k", "bvh: build, 100000 spheres", build,
+              "s");
+    few_hit = frame_ns_per_pixel(few, RAYO_SHADE_HIT, repeats);
+    many_hit = frame_ns_per_pixel(many, RAYO_SHADE_HIT, repeats);
+    few_phong = frame_ns_per_pixel(few, RAYO_SHADE_PHONG, repeats);
+    many_phong = frame_ns_per_pixel(many, RAYO_SHADE_PHONG, repeats);
+    bench_add(table, "bvh_hit_10", "bvh: hit mode, 10 spheres, 1 thread",
+              few_hit, "ns/px");
+    bench_add(table, "bvh_hit_100k",
+              "bvh: hit mode, 100000 spheres, 1 thread", many_hit, "ns/px");
+    bench_add(table, "bvh_phong_10", "bvh: phong, 10 spheres, 1 thread",
+              few_phong, "ns/px");
+    bench_add(table, "bvh_phong_100k",
+              "bvh: phong, 100000 spheres, 1 thread", many_phong, "ns/px");
+    bench_target(table, "bvh: phong per pixel, 100000 / 10 spheres",
+                 ratio(many_phong, few_phong), 2.0, 1);
+    rayo_scene_free(few);
+    rayo_scene_free(many);
+}
+
+/* Brute force against the hierarchy on the same rays. */
+static void bvh_brute(bench_table *table, int repeats)
+{
+    rayo_scene *tree = bvh_scene(BVH_FIELD, BVH_MANY, 1, NULL);
+    rayo_scene *brute = bvh_scene(BVH_FIELD, BVH_MANY, 0, NULL);
+    rayo_scene_stats ts = {0, 0, 0}, bs = {0, 0, 0};
+    double t, b;
+    if (tree == NULL || brute == NULL) {
+        rayo_scene_free(tree);
+        rayo_scene_free(brute);
+        return;
+    }
+    t = grid_ns_per_ray(tree, repeats, &ts);
+    b = grid_ns_per_ray(brute, 1, &bs);
+    bench_add(table, "bvh_ray_tree", "bvh: primary ray, hierarchy", t, "ns");
+    bench_add(table, "bvh_ray_brute", "bvh: primary ray, brute force", b,
+              "ns");
+    bench_add(table, "bvh_box_tests", "bvh: box tests per ray, hierarchy",
+              per_ray(ts.node_tests, &ts), "");
+    bench_add(table, "bvh_object_tests",
+              "bvh: object tests per ray, hierarchy",
+              per_ray(ts.prim_tests, &ts), "");
+    bench_add(table, "bvh_object_tests_brute",
+              "bvh: object tests per ray, brute force",
+              per_ray(bs.prim_tests, &bs), "");
+    bench_target(table, "bvh: hierarchy speed-up over brute force",
+                 ratio(b, t), 100.0, 0);
+    rayo_scene_free(tree);
+    rayo_scene_free(brute);
+}
+
+/* The hard case. */
+static void bvh_cloud(bench_table *table, int repeats)
+{
+    rayo_scene *cloud = bvh_scene(BVH_CLOUD, BVH_MANY, 1, NULL);
+    rayo_scene_stats st = {0, 0, 0};
+    double t;
+    if (cloud == NULL)
+        return;
+    t = grid_ns_per_ray(cloud, repeats, &st);
+    bench_add(table, "bvh_cloud_ray", "bvh: cloud of 100000, primary ray", t,
+              "ns");
+    bench_add(table, "bvh_cloud_box_tests", "bvh: cloud, box tests per ray",
+              per_ray(st.node_tests, &st), "");
+    bench_add(table, "bvh_cloud_object_tests",
+              "bvh: cloud, object tests per ray", per_ray(st.prim_tests, &st),
+              "");
+    rayo_scene_free(cloud);
+}
+
+void bench_bvh(bench_table *table)
+{
+    int repeats = bench_repeats(table);
+    printf("scale: %ux%u, 10 and 100000 spheres (seed %u)\n", BVH_WIDTH,
+           BVH_HEIGHT, BVH_SEED);
+    bvh_frames(table, repeats);
+    bvh_brute(table, repeats);
+    bvh_cloud(table, repeats);
+}
