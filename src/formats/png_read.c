@@ -184,6 +184,34 @@ static rayo_status allocate(png_reader *r, const rayo_image_info *info,
     return RAYO_OK;
 }
 
+/*
+ * Deflate cannot shrink data more than 1032:1, so a file (or memory) with
+ * fewer bytes left than the raster needs over 1032 is lying about its
+ * size; refusing it here spares allocating for it.  Unknown sizes (pipes)
+ * are found out while reading.
+ */
+static rayo_status check_room(png_reader *r, const rayo_image_info *info)
+{
+    uint64_t remaining, bits, raw;
+    if (!rayo_source_remaining(r->src, &remaining))
+        return RAYO_OK;
+    bits = (uint64_t)info->width * png_get_channels(r->png, r->info) *
+           png_get_bit_depth(r->png, r->info);
+    raw = (uint64_t)info->height * (1 + (bits + 7) / 8);
+    if (remaining * 1032 + 4096 >= raw)
+        return RAYO_OK;
+    return rayo_error_set(&r->error, RAYO_ERR_FORMAT,
+                          "%s: byte %llu: found %llu bytes after the header; "
+                          "expected at least %llu for the compressed data of "
+                          "a %lux%lu PNG",
+                          r->src->name,
+                          (unsigned long long)rayo_source_offset(r->src),
+                          (unsigned long long)remaining,
+                          (unsigned long long)((raw - 4096) / 1032),
+                          (unsigned long)info->width,
+                          (unsigned long)info->height);
+}
+
 static unsigned char *row_target(const png_reader *r, uint32_t y, int passes)
 {
     if (!r->alpha)
@@ -235,6 +263,10 @@ static rayo_status read_with_libpng(png_reader *r)
     png_set_crc_action(r->png, PNG_CRC_ERROR_QUIT, PNG_CRC_ERROR_QUIT);
     png_read_info(r->png, r->info);
     choose_layout(r, &info);
+    /* Before png_read_update_info: the file's channels and depth. */
+    if (rayo_image_info_check(&info, NULL) == RAYO_OK &&
+        check_room(r, &info) != RAYO_OK)
+        return r->error.status;
     passes = png_set_interlace_handling(r->png);
     png_read_update_info(r->png, r->info);
     r->in_row_bytes = png_get_rowbytes(r->png, r->info);

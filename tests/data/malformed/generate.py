@@ -100,6 +100,8 @@ write("png-bad-crc-text.png",
 write("png-no-iend.png", SIG + ihdr(4, 3) + gray_idat(4, 3))
 write("png-gigapixel-ihdr.png", SIG + ihdr(60000, 60000) + gray_idat(4, 3)
       + IEND)
+write("png-ihdr-larger-than-file.png", SIG + ihdr(16384, 16384)
+      + gray_idat(4, 3) + IEND)
 write("png-width-over-limit.png", SIG + ihdr(100000, 1) + gray_idat(4, 1)
       + IEND)
 write("png-width-2-to-the-31.png", SIG + ihdr(0x7FFFFFFF, 1)
