@@ -81,7 +81,9 @@ typedef struct cmp_transform {
  * The image's row y undone by t, in the reference's frame (width
  * ref_width): out gets the bits, known the pixels that map inside the
  * image (1 = known).  Returns 1 when every pixel of the row is known
- * (known is then left alone).  Padding bits are zero in both.
+ * (known is then left alone, or used as scratch), -1 when none is (out
+ * and known then need not be read), else 0.  Padding bits are zero in
+ * both.
  */
 int cmp_transform_row(const cmp_transform *t, const cmp_mask *image,
                       uint32_t ref_width, uint32_t ref_height, uint32_t y,
@@ -116,10 +118,14 @@ typedef struct cmp_shape {
     double cx, cy;            /* centroid, centred coordinates, y down */
     double sxx, syy, sxy;     /* central second moments (per pixel) */
     int touches_border;
-    double ellipse_iou;       /* IoU with the ellipse of equal moments */
 } cmp_shape;
 
 void cmp_shape_measure(const cmp_mask *mask, cmp_shape *shape);
+
+/* Mean distance (pixels) of the mask's outline from its best-fitting
+ * ellipse; HUGE_VAL when no ellipse around black fits.  Costs a few
+ * passes over the mask, so it is asked for only when needed. */
+double cmp_shape_ellipse_error(const cmp_mask *mask);
 
 /* ---- measure.c ---- */
 

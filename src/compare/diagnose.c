@@ -12,7 +12,7 @@
  * to try comes from the centroids; the scale from the areas and the
  * centroids, refined by a golden-section search on a sampled grid.  When
  * nothing fits, the image's black region is judged on its own: empty,
- * not ellipse-like (not a sphere), or another sphere.
+ * an outline that no ellipse fits (not a sphere), or another sphere.
  *
  * Thresholds are written once, below, with their reasons.  Not a
  * registration algorithm: one mistake at a time, no combinations.
@@ -25,16 +25,23 @@
 /* A candidate "comes close": far mismatches cut twentyfold and IoU. */
 #define CLOSE_REDUCTION 20
 #define CLOSE_IOU 0.97
-/* Below this IoU with its moment ellipse a black region is not a sphere
- * (rendered spheres of a few hundred pixels or more score above 0.97;
- * a rectangle scores about 0.90, a ring or two blobs far less).  Shapes
- * cut by the frame are held to a looser bound. */
-#define SPHERE_IOU 0.94
-#define CLIPPED_SPHERE_IOU 0.80
+/* A black region is a sphere when its outline (its edge inside the
+ * frame, so a sphere cut by the frame still counts) lies on average
+ * within this many pixels of the best-fitting ellipse.  Rendered
+ * spheres score about 0.3 (pixel rounding); a straight edge, a ring, two
+ * blobs or noise fit no ellipse at all or miss by far more. */
+#define SPHERE_OUTLINE_ERROR 1.0
+/* A flip or transposition is tried only if it would bring the
+ * reference's centroid within this distance of the image's: a fraction
+ * of the shape's size (square root of its area), at least a few pixels. */
+#define CENTROID_SLACK 0.15
+#define CENTROID_SLACK_MIN 4.0
 /* Scales closer to 1 than this are not worth a diagnosis. */
 #define SCALE_EPSILON 0.004
-/* The scale search samples about this many pixels. */
+/* The scale search samples about this many pixels, and first scans this
+ * many scales. */
 #define SCALE_SAMPLES 65536.0
+#define SCALE_SCAN 33
 
 typedef struct candidate_result {
     int tried;
@@ -105,15 +112,19 @@ static rayo_status scale_loss(const cmp_mask *ref, const cmp_mask *image,
 }
 
 /* The scale s (image = reference scaled by s about the optical centre)
- * that best lays the image on the reference. */
+ * that best lays the image on the reference: a coarse scan of scales
+ * around the estimates from the areas and the centroids (both biased
+ * when the frame cuts the shape, hence the wide range), then a
+ * golden-section search between the neighbours of the best. */
 static rayo_status search_scale(const cmp_mask *ref, const cmp_mask *image,
                                 const cmp_shape *rs, const cmp_shape *is,
                                 double area_scale, double *best,
                                 rayo_error *err)
 {
     double lo = area_scale, hi = area_scale, rn, in, a, b, c, d, fc, fd;
-    double pixels = (double)ref->width * ref->height;
+    double pixels = (double)ref->width * ref->height, ratio, f, fbest = 2;
     uint32_t step = (uint32_t)ceil(sqrt(pixels / SCALE_SAMPLES)), i;
+    uint32_t ibest = 0;
     rayo_status s;
     rn = hypot(rs->cx, rs->cy);
     in = hypot(is->cx, is->cy);
@@ -121,14 +132,26 @@ static rayo_status search_scale(const cmp_mask *ref, const cmp_mask *image,
         lo = fmin(lo, in / rn);
         hi = fmax(hi, in / rn);
     }
-    a = lo / 1.25;
-    b = hi * 1.25;
+    lo /= 2;
+    hi *= 2;
+    ratio = pow(hi / lo, 1.0 / (SCALE_SCAN - 1));
+    for (i = 0; i < SCALE_SCAN; i++) {
+        if ((s = scale_loss(ref, image, lo * pow(ratio, i), step, &f,
+                            err)) != RAYO_OK)
+            return s;
+        if (f < fbest) {
+            fbest = f;
+            ibest = i;
+        }
+    }
+    a = lo * pow(ratio, (double)ibest - 1);
+    b = lo * pow(ratio, (double)ibest + 1);
     c = b - (b - a) * 0.6180339887;
     d = a + (b - a) * 0.6180339887;
     if ((s = scale_loss(ref, image, c, step, &fc, err)) != RAYO_OK ||
         (s = scale_loss(ref, image, d, step, &fd, err)) != RAYO_OK)
         return s;
-    for (i = 0; i < 24; i++) {
+    for (i = 0; i < 20; i++) {
         if (fc <= fd) {
             b = d;
             d = c;
@@ -245,6 +268,31 @@ static rayo_status judge_close(const cmp_mask *ref, const cmp_mask *image,
     return RAYO_OK;
 }
 
+/* Whether the reference's centroid, moved as the mistake would move it,
+ * lands near the image's: a cheap test that spares most candidates a
+ * full pass.  Inversion moves the centroid unpredictably: always tried. */
+static int centroid_agrees(const cmp_mask *ref, const cmp_shape *rs,
+                           const cmp_shape *is, cmp_transform_kind kind)
+{
+    double w = ref->width, h = ref->height;
+    double mx = rs->cx + floor(w / 2), my = rs->cy + floor(h / 2), t;
+    double slack = fmax(CENTROID_SLACK_MIN,
+                        CENTROID_SLACK * sqrt((double)rs->black));
+    if (kind == CMP_INVERT || rs->black == 0 || is->black == 0)
+        return 1;
+    if (kind == CMP_FLIP_V || kind == CMP_FLIP_BOTH)
+        my = h - 1 - my;
+    if (kind == CMP_FLIP_H || kind == CMP_FLIP_BOTH)
+        mx = w - 1 - mx;
+    if (kind == CMP_TRANSPOSE) {
+        t = mx;
+        mx = my;
+        my = t;
+    }
+    return hypot(mx - floor(w / 2) - is->cx, my - floor(h / 2) - is->cy) <=
+           slack;
+}
+
 static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
                            cmp_outline *outline, const cmp_shape *rs,
                            const cmp_shape *is, rayo_compare_report *report,
@@ -257,7 +305,8 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
     size_t i;
     for (i = 0; i < sizeof plain / sizeof plain[0] && s == RAYO_OK; i++) {
         t.kind = plain[i];
-        if (t.kind != CMP_TRANSPOSE || ref->width == ref->height)
+        if ((t.kind != CMP_TRANSPOSE || ref->width == ref->height) &&
+            centroid_agrees(ref, rs, is, t.kind))
             s = consider(ch, ref, image, outline, report, &t, err);
     }
     if (s != RAYO_OK || !report->shapes_measured)
@@ -278,12 +327,12 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
     return consider(ch, ref, image, outline, report, &t, err);
 }
 
-static void judge_shape(const cmp_shape *is, rayo_compare_report *report)
+static void judge_shape(const cmp_mask *image, const cmp_shape *is,
+                        rayo_compare_report *report)
 {
-    double bound = is->touches_border ? CLIPPED_SPHERE_IOU : SPHERE_IOU;
     if (is->black == 0)
         report->diagnosis = RAYO_DIAGNOSIS_EMPTY;
-    else if (is->ellipse_iou < bound)
+    else if (!(cmp_shape_ellipse_error(image) <= SPHERE_OUTLINE_ERROR))
         report->diagnosis = RAYO_DIAGNOSIS_NOT_A_SPHERE;
     else if (report->reference_black != 0)
         report->diagnosis = RAYO_DIAGNOSIS_OTHER_SPHERE;
@@ -343,6 +392,6 @@ rayo_status cmp_diagnose(const cmp_mask *ref, const cmp_mask *image,
     if (ch.found)
         name_choice(&ch, report);
     else
-        judge_shape(is, report);
+        judge_shape(image, is, report);
     return RAYO_OK;
 }

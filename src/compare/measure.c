@@ -118,6 +118,8 @@ rayo_status cmp_measure(const cmp_mask *ref, const cmp_mask *image,
     for (y = 0; y < ref->height; y++) {
         int all = cmp_transform_row(t, image, ref->width, ref->height, y,
                                     r.img, r.known);
+        if (all < 0)
+            continue;
         counts->known += all ? ref->width
                              : cmp_popcount(r.known,
                                             cmp_row_bytes(ref->width));

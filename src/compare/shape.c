@@ -13,6 +13,7 @@
  * (x = i - floor(w/2), y = j - floor(h/2)), y down.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "compare_impl.h"
@@ -69,53 +70,138 @@ static void add_row(const cmp_mask *m, uint32_t y, sums *s, int *touches)
     s->sxy += r1 * y;
 }
 
-/* Black pixels of row among columns i0..i1 (inclusive). */
-static uint64_t count_range(const unsigned char *row, uint32_t i0,
-                            uint32_t i1)
+/* The outline row y: black pixels with a white 4-neighbour inside the
+ * frame (the frame's edge is not an outline: a cut sphere stays a
+ * sphere).  Into out, cmp_row_bytes(width) bytes. */
+static void outline_row(const cmp_mask *m, uint32_t y, unsigned char *out)
 {
-    uint32_t k0 = i0 >> 3, k1 = i1 >> 3;
-    unsigned head = 0xFFu >> (i0 & 7u);
-    unsigned tail = (0xFFu << (7 - (i1 & 7u))) & 0xFFu;
-    uint64_t total;
-    unsigned char b;
-    if (k0 == k1) {
-        b = (unsigned char)(row[k0] & head & tail);
-        return cmp_popcount(&b, 1);
+    size_t n = cmp_row_bytes(m->width), k;
+    const unsigned char *row = cmp_mask_row(m, y);
+    const unsigned char *up = y > 0 ? cmp_mask_row(m, y - 1) : row;
+    const unsigned char *down = y + 1 < m->height ? cmp_mask_row(m, y + 1)
+                                                  : row;
+    unsigned last = (m->width & 7u) ? 7u - ((m->width - 1) & 7u) : 0;
+    for (k = 0; k < n; k++) {
+        unsigned v = row[k];
+        unsigned left = (v >> 1) | (k > 0 ? (row[k - 1] & 1u) << 7 : 0x80u);
+        unsigned right = ((v << 1) & 0xFFu) | (k + 1 < n ? row[k + 1] >> 7
+                                                         : 1u);
+        if (k + 1 == n && last)
+            right |= 1u << last; /* the frame's right edge */
+        out[k] = (unsigned char)(v & ~(up[k] & down[k] & left & right));
     }
-    b = (unsigned char)(row[k0] & head);
-    total = cmp_popcount(&b, 1);
-    total += cmp_popcount(row + k0 + 1, k1 - k0 - 1);
-    b = (unsigned char)(row[k1] & tail);
-    return total + cmp_popcount(&b, 1);
+    cmp_clear_padding(out, m->width);
 }
 
-/* IoU of the black region with the ellipse of mean (mx, my) and
- * covariance (a b; b c). */
-static double ellipse_iou(const cmp_mask *m, uint64_t black, double mx,
-                          double my, double a, double b, double c)
+typedef struct conic_fit {
+    double ox, oy, unit;   /* origin and unit of the fit's coordinates */
+    double m[5][6];        /* normal equations, augmented */
+    double theta[5];       /* A x^2 + B x y + C y^2 + D x + E y = 1 */
+    double n, sum_x, sum_y, residual;
+    int pass;
+} conic_fit;
+
+static void visit_point(conic_fit *f, double i, double j)
 {
-    double det = a * c - b * b;
-    uint64_t inside = 0, area = 0;
-    uint32_t y;
-    if (!(det > 0) || !(c > 0))
-        return 0;
-    for (y = 0; y < m->height; y++) {
-        double dy = (double)y - my, r = 4 * c - dy * dy, half, lo, hi;
-        if (r < 0)
-            continue;
-        half = sqrt(det * r) / c;
-        lo = ceil(mx + (b * dy - half) / c);
-        hi = floor(mx + (b * dy + half) / c);
-        if (lo < 0)
-            lo = 0;
-        if (hi > (double)m->width - 1)
-            hi = (double)m->width - 1;
-        if (hi < lo)
-            continue;
-        area += (uint64_t)(hi - lo) + 1;
-        inside += count_range(cmp_mask_row(m, y), (uint32_t)lo, (uint32_t)hi);
+    double x = (i - f->ox) / f->unit, y = (j - f->oy) / f->unit;
+    double phi[5] = {x * x, x * y, y * y, x, y};
+    const double *t = f->theta;
+    int r, c;
+    if (f->pass == 0) {
+        f->n += 1;
+        f->sum_x += i;
+        f->sum_y += j;
+    } else if (f->pass == 1) {
+        for (r = 0; r < 5; r++) {
+            for (c = 0; c < 5; c++)
+                f->m[r][c] += phi[r] * phi[c];
+            f->m[r][5] += phi[r];
+        }
+    } else {
+        double v = t[0] * x * x + t[1] * x * y + t[2] * y * y + t[3] * x +
+                   t[4] * y - 1;
+        double gx = 2 * t[0] * x + t[1] * y + t[3];
+        double gy = t[1] * x + 2 * t[2] * y + t[4];
+        double g = sqrt(gx * gx + gy * gy);
+        f->residual += g > 0 ? fabs(v) / g * f->unit : f->unit;
     }
-    return (double)inside / (double)(black + area - inside);
+}
+
+static void walk_outline(const cmp_mask *m, unsigned char *buf,
+                         conic_fit *f)
+{
+    size_t n = cmp_row_bytes(m->width), k;
+    uint32_t y;
+    unsigned bit;
+    for (y = 0; y < m->height; y++) {
+        outline_row(m, y, buf);
+        for (k = 0; k < n; k++)
+            if (buf[k] != 0)
+                for (bit = 0; bit < 8; bit++)
+                    if ((buf[k] >> (7 - bit)) & 1u)
+                        visit_point(f, (double)(k * 8 + bit), y);
+    }
+}
+
+/* Gaussian elimination with partial pivoting; 0 when singular. */
+static int solve5(double m[5][6], double *x)
+{
+    int r, c, p, k;
+    for (c = 0; c < 5; c++) {
+        p = c;
+        for (r = c + 1; r < 5; r++)
+            if (fabs(m[r][c]) > fabs(m[p][c]))
+                p = r;
+        if (fabs(m[p][c]) < 1e-12)
+            return 0;
+        for (k = 0; k < 6; k++) {
+            double t = m[c][k];
+            m[c][k] = m[p][k];
+            m[p][k] = t;
+        }
+        for (r = 0; r < 5; r++) {
+            double q = m[r][c] / m[c][c];
+            if (r == c)
+                continue;
+            for (k = c; k < 6; k++)
+                m[r][k] -= q * m[c][k];
+        }
+    }
+    for (r = 0; r < 5; r++)
+        x[r] = m[r][5] / m[r][r];
+    return 1;
+}
+
+/* Mean distance (pixels) of the outline from the conic that fits it
+ * best, or HUGE_VAL when that conic is not an ellipse around black. */
+double cmp_shape_ellipse_error(const cmp_mask *m)
+{
+    conic_fit f;
+    unsigned char *buf = malloc(cmp_row_bytes(m->width));
+    const double *t = f.theta;
+    double result = HUGE_VAL;
+    uint32_t ci, cj;
+    memset(&f, 0, sizeof f);
+    if (buf == NULL)
+        return result;
+    f.unit = (m->width > m->height ? m->width : m->height) / 2.0;
+    walk_outline(m, buf, &f);
+    if (f.n >= 8) {
+        f.ox = f.sum_x / f.n;
+        f.oy = f.sum_y / f.n;
+        f.pass = 1;
+        walk_outline(m, buf, &f);
+        ci = (uint32_t)floor(f.ox + 0.5);
+        cj = (uint32_t)floor(f.oy + 0.5);
+        if (solve5(f.m, f.theta) && t[1] * t[1] - 4 * t[0] * t[2] < 0 &&
+            rayo_bit_get(cmp_mask_row(m, cj), ci)) {
+            f.pass = 2;
+            walk_outline(m, buf, &f);
+            result = f.residual / f.n;
+        }
+    }
+    free(buf);
+    return result;
 }
 
 void cmp_shape_measure(const cmp_mask *mask, cmp_shape *shape)
@@ -138,6 +224,4 @@ void cmp_shape_measure(const cmp_mask *mask, cmp_shape *shape)
     shape->sxx = (double)s.sxx / n - mx * mx;
     shape->syy = (double)s.syy / n - my * my;
     shape->sxy = (double)s.sxy / n - mx * my;
-    shape->ellipse_iou = ellipse_iou(mask, s.n, mx, my, shape->sxx,
-                                     shape->sxy, shape->syy);
 }

@@ -61,8 +61,7 @@ static int offset_row(const cmp_mask *image, uint32_t width, uint32_t y,
     if (j < 0 || j >= (int64_t)image->height) {
         if (outside_known)
             return 1;
-        memset(known, 0, n);
-        return 0;
+        return -1;
     }
     for (k = 0; k < n; k++) {
         out[k] = (unsigned char)byte_at(cmp_mask_row(image, (uint32_t)j),
@@ -90,25 +89,45 @@ static int same_frame_row(const cmp_mask *image, uint32_t width, uint32_t y,
     return 1;
 }
 
+static unsigned reverse_bits(unsigned v)
+{
+    v = ((v & 0xF0u) >> 4) | ((v & 0x0Fu) << 4);
+    v = ((v & 0xCCu) >> 2) | ((v & 0x33u) << 2);
+    return ((v & 0xAAu) >> 1) | ((v & 0x55u) << 1);
+}
+
+/* Row j of the image mirrored left to right, using scratch (a row). */
+static void mirrored_row(const cmp_mask *image, uint32_t j,
+                         unsigned char *scratch, unsigned char *out)
+{
+    const unsigned char *src = cmp_mask_row(image, j);
+    size_t n = cmp_row_bytes(image->width), k;
+    unsigned pad = (unsigned)(8 * n - image->width), inside;
+    for (k = 0; k < n; k++)
+        scratch[k] = (unsigned char)reverse_bits(src[n - 1 - k]);
+    for (k = 0; k < n; k++)
+        out[k] = (unsigned char)byte_at(scratch, (uint32_t)(8 * n),
+                                        (int64_t)pad + 8 * (int64_t)k,
+                                        &inside);
+    cmp_clear_padding(out, image->width);
+}
+
 /* Flips and transposition: a permutation of the pixels of equal frames. */
 static int permuted_row(const cmp_transform *t, const cmp_mask *image,
-                        uint32_t width, uint32_t y, unsigned char *out)
+                        uint32_t width, uint32_t y, unsigned char *out,
+                        unsigned char *scratch)
 {
     uint32_t i;
     if (t->kind == CMP_FLIP_V)
         return same_frame_row(image, width, image->height - 1 - y, 0, out);
-    for (i = 0; i < width; i++) {
-        int b;
-        if (t->kind == CMP_FLIP_H)
-            b = image_bit(image, image->width - 1 - (int64_t)i, y);
-        else if (t->kind == CMP_FLIP_BOTH)
-            b = image_bit(image, image->width - 1 - (int64_t)i,
-                          image->height - 1 - (int64_t)y);
-        else
-            b = image_bit(image, y, i);
-        if (b > 0)
-            rayo_bit_set(out, i, 1);
+    if (t->kind == CMP_FLIP_H || t->kind == CMP_FLIP_BOTH) {
+        mirrored_row(image, t->kind == CMP_FLIP_H ? y : image->height - 1 - y,
+                     scratch, out);
+        return 1;
     }
+    for (i = 0; i < width; i++) /* transposed: column y, row i */
+        if (image_bit(image, y, i) > 0)
+            rayo_bit_set(out, i, 1);
     return 1;
 }
 
@@ -120,9 +139,9 @@ static int scaled_row(const cmp_transform *t, const cmp_mask *image,
     uint32_t i, step = t->step ? t->step : 1;
     double yr = (double)y - (double)(height / 2);
     int64_t j = (int64_t)floor(t->scale * yr + 0.5) + image->height / 2;
-    memset(known, 0, cmp_row_bytes(width));
     if (y % step != 0)
-        return 0;
+        return -1;
+    memset(known, 0, cmp_row_bytes(width));
     for (i = 0; i < width; i += step) {
         double xr = (double)i - (double)(width / 2);
         int64_t ii = (int64_t)floor(t->scale * xr + 0.5) + image->width / 2;
@@ -157,6 +176,6 @@ int cmp_transform_row(const cmp_transform *t, const cmp_mask *image,
     case CMP_SCALE:
         return scaled_row(t, image, ref_width, ref_height, y, out, known);
     default:
-        return permuted_row(t, image, ref_width, y, out);
+        return permuted_row(t, image, ref_width, y, out, known);
     }
 }
