@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "progress.h"
 
 #define MAX_SPHERES_ON_COMMAND_LINE 4096
 
@@ -27,6 +28,7 @@ typedef struct render_request {
     const char *format;  /* NULL: from the output's extension */
     int raw;
     unsigned long threads;
+    int quiet; /* --quiet: no progress bar */
     const char *scene_path; /* SCENE argument, or NULL */
     rayo_scene_file file;   /* what it holds, once loaded */
     int width_given, height_given, fov_given, origin_given;
@@ -44,11 +46,10 @@ static void on_interrupt(int signal_number)
     interrupted_by = signal_number;
 }
 
+/* The render's progress callback: draws the bar, stops on a signal. */
 static int stop_requested(void *context, uint32_t done, uint32_t total)
 {
-    (void)context;
-    (void)done;
-    (void)total;
+    cli_progress_update(context, done, total);
     return interrupted_by != 0;
 }
 
@@ -99,6 +100,10 @@ static void print_help(void)
         "(P1-P3)\n"
         "  -j, --threads N        rendering threads (default: one per "
         "CPU)\n"
+        "  -q, --quiet            no progress bar (otherwise drawn on a "
+        "terminal's\n"
+        "                         stderr for renders longer than a "
+        "second)\n"
         "  -h, --help             this help\n"
         "  -V, --version          the version\n\n"
         "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
@@ -120,6 +125,7 @@ static int parse_request(int argc, char **argv, render_request *req)
         {"format", required_argument, NULL, 'F'},
         {"raw", no_argument, NULL, 'r'},
         {"threads", required_argument, NULL, 'j'},
+        {"quiet", no_argument, NULL, 'q'},
         {"shade", required_argument, NULL, 'S'},
         {"samples", required_argument, NULL, 'N'},
         {"depth", required_argument, NULL, 'D'},
@@ -129,7 +135,7 @@ static int parse_request(int argc, char **argv, render_request *req)
     int c;
     opterr = 0;
     optind = 0;
-    while ((c = getopt_long(argc, argv, ":W:H:o:j:hV", options, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":W:H:o:j:qhV", options, NULL)) != -1) {
         double v[4];
         switch (c) {
         case 'W':
@@ -205,6 +211,9 @@ static int parse_request(int argc, char **argv, render_request *req)
                                 &req->depth))
                 return CLI_EXIT_USAGE;
             req->depth_given = 1;
+            break;
+        case 'q':
+            req->quiet = 1;
             break;
         case 'h':
             print_help();
@@ -420,6 +429,7 @@ int cli_render(int argc, char **argv)
     rayo_write_options write_options;
     rayo_output *out = NULL;
     rayo_error err;
+    cli_progress progress;
     int exit_status;
 
     if (req == NULL)
@@ -453,6 +463,8 @@ int cli_render(int argc, char **argv)
     render_settings(req, &options);
     options.threads = (unsigned)req->threads;
     options.progress = stop_requested;
+    cli_progress_init(&progress, req->quiet);
+    options.progress_context = &progress;
     catch_interrupts();
 
     if (rayo_output_open(&out, req->output, &err) == RAYO_OK) {
@@ -462,6 +474,7 @@ int cli_render(int argc, char **argv)
         else
             rayo_output_abort(out);
     }
+    cli_progress_finish(&progress);
     rayo_scene_free(scene);
     free(req);
     if (interrupted_by != 0)

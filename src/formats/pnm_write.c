@@ -8,7 +8,10 @@
  * PGM and PPM samples separated by spaces).  Raw PBM rows are packed bits
  * with the padding bits of the last byte zero; raw samples are bytes, or
  * two bytes big-endian when maxval > 255.  Each row is formatted into a
- * scratch buffer and handed to the output in one call.
+ * scratch buffer and handed to the output in one call; plain PBM rows are
+ * spelled out eight digits per byte from a table.  Raw rows that need no
+ * change (bytes, or bits whose padding is already zero) go to the output
+ * straight from the caller's memory, a whole block of rows in one call.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,7 +24,7 @@
 typedef struct pnm_state {
     unsigned char *scratch;
     size_t scratch_size;
-    char bits_table[256 * 8]; /* eight ASCII digits for each byte */
+    char bits_table[256 * 8 + 8]; /* eight ASCII digits for each byte */
 } pnm_state;
 
 static int magic_number(const rayo_writer *writer)
@@ -67,8 +70,8 @@ static size_t scratch_bytes(const rayo_writer *writer)
     size_t samples = (size_t)info->width * info->channels;
     if (!writer->options.plain)
         return rayo_image_info_row_bytes(info);
-    if (info->sample == RAYO_SAMPLE_BIT)
-        return samples + samples / PLAIN_LINE_MAX + 2;
+    if (info->sample == RAYO_SAMPLE_BIT) /* + 16: format_plain_bits */
+        return samples + samples / PLAIN_LINE_MAX + 2 + 16;
     /* "65535 " per sample, and a newline at worst every 11 samples. */
     return samples * 6 + samples / 11 + 2;
 }
@@ -79,6 +82,7 @@ static void fill_bits_table(char *table)
     for (byte = 0; byte < 256; byte++)
         for (bit = 0; bit < 8; bit++)
             table[byte * 8 + bit] = (char)('0' + ((byte >> (7 - bit)) & 1));
+    memset(table + 256 * 8, '0', 8);
 }
 
 static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
@@ -119,28 +123,36 @@ static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
     return status;
 }
 
+/*
+ * Eight digits per byte from the table, written where they belong with a
+ * newline after every PLAIN_LINE_MAX digits and at the end of the row.
+ */
 static size_t format_plain_bits(const rayo_writer *writer,
                                 const unsigned char *row, unsigned char *out)
 {
     const char *table = ((const pnm_state *)writer->state)->bits_table;
     uint32_t width = writer->info.width;
-    uint32_t x = 0;
-    size_t n = 0;
-    while (x < width) {
-        uint32_t line_end = width - x > PLAIN_LINE_MAX ? x + PLAIN_LINE_MAX
-                                                       : width;
-        while (x < line_end) {
-            if ((x & 7) == 0 && line_end - x >= 8) {
-                memcpy(out + n, table + row[x >> 3] * 8, 8);
-                n += 8;
-                x += 8;
-            } else {
-                out[n++] = (unsigned char)('0' + rayo_bit_get(row, x));
-                x++;
-            }
+    size_t bytes = ((size_t)width + 7) / 8, i, n = 0, column = 0;
+    for (i = 0; i < bytes; i++) {
+        const char *digits = table + 8 * row[i];
+        size_t count = width - 8 * i < 8 ? width - 8 * i : 8;
+        size_t room = PLAIN_LINE_MAX - column;
+        /* Whole 8-byte copies, which compile to single moves: the
+         * scratch and the table have 8 bytes to spare. */
+        memcpy(out + n, digits, 8);
+        if (count < room) {
+            n += count;
+            column += count;
+            continue;
         }
+        n += room;
         out[n++] = '\n';
+        memcpy(out + n, digits + room, 8);
+        n += count - room;
+        column = count - room;
     }
+    if (column > 0)
+        out[n++] = '\n';
     return n;
 }
 
@@ -212,11 +224,35 @@ static size_t format_raw(const rayo_writer *writer, const unsigned char *row,
     return bytes;
 }
 
+/* 1 when the rows can go to the file as they are, stride included. */
+static int raw_as_is(const rayo_writer *writer, const unsigned char *rows,
+                     size_t stride, uint32_t count)
+{
+    const rayo_image_info *info = &writer->info;
+    size_t bytes = rayo_image_info_row_bytes(info);
+    unsigned padding;
+    uint32_t r;
+    if (writer->options.plain || stride != bytes)
+        return 0;
+    if (info->sample == RAYO_SAMPLE_U8)
+        return 1;
+    if (info->sample != RAYO_SAMPLE_BIT)
+        return 0;
+    padding = 0xFFu >> (info->width % 8 ? info->width % 8 : 8);
+    for (r = 0; r < count; r++)
+        if (rows[(size_t)r * stride + bytes - 1] & padding)
+            return 0;
+    return 1;
+}
+
 static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
                             size_t stride, uint32_t count, rayo_error *err)
 {
     pnm_state *state = writer->state;
     uint32_t r;
+    if (raw_as_is(writer, rows, stride, count))
+        return rayo_output_write(writer->out, rows, (size_t)count * stride,
+                                 err);
     for (r = 0; r < count; r++) {
         const unsigned char *row = rows + (size_t)r * stride;
         size_t n;

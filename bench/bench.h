@@ -1,0 +1,63 @@
+/*
+ * bench.h - what the benchmark's files share: the clock, the table of
+ * results, pipes drained by a thread, and child processes measured for
+ * time and peak memory.
+ *
+ * The benchmark (`make bench`) is a program, not a test: it prints a
+ * table and writes JSON, and checks nothing in `make check`.  Every
+ * figure is the best of several runs in the same process, so the ratios
+ * in the table compare figures taken minutes apart on the same machine.
+ * bench.c explains how to add a row.
+ */
+#ifndef RAYO_BENCH_H
+#define RAYO_BENCH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo.h"
+
+typedef struct bench_table bench_table;
+
+/* Seconds on a monotonic clock. */
+double bench_now(void);
+
+/* Adds a measured figure (label as printed; key as in the JSON). */
+void bench_add(bench_table *table, const char *key, const char *label,
+               double value, const char *unit);
+
+/*
+ * Adds a target: value compared with limit (at_most: value <= limit,
+ * else value >= limit).  Printed after the figures with pass or FAIL.
+ */
+void bench_target(bench_table *table, const char *label, double value,
+                  double limit, int at_most);
+
+/* The number of runs each figure takes the best of. */
+int bench_repeats(const bench_table *table);
+
+/* A pipe whose reading end a thread empties into nothing. */
+typedef struct bench_pipe bench_pipe;
+int bench_pipe_open(bench_pipe **pipe, int *write_fd);
+/* Closes the writing end (if still open) and waits for the reader. */
+void bench_pipe_close(bench_pipe *pipe, int write_fd);
+
+/*
+ * Runs argv (argv[0] a path) with stdout on /dev/null, or `sh -c
+ * command` when argv is NULL; returns the wall time in seconds and puts
+ * the peak resident set of the child and its descendants, in KiB, in
+ * *max_rss_kib.  Returns a negative number when the child fails.
+ */
+double bench_run_child(char *const argv[], const char *command,
+                       long *max_rss_kib);
+
+/* The rows: seed.c, large.c, bvh.c, commands.c. */
+void bench_seed(bench_table *table);
+void bench_large(bench_table *table, const char *rayo);
+void bench_bvh(bench_table *table);
+void bench_commands(bench_table *table, const char *rows_file);
+
+/* The assignment's program, the baseline of seed.c (baseline.c). */
+void bench_baseline_seed(int fd);
+
+#endif

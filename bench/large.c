@@ -1,0 +1,200 @@
+/*
+ * large.c - large frames of the seed's scene: 16384x12288 to raw PBM with
+ * one thread and with all, to PNG against libpng alone encoding the same
+ * rows, and the peak memory of 16384x16384 renders by the `rayo` command.
+ *
+ * Output goes to /dev/null (through rayo_output, as `-o /dev/null`
+ * would), so the figures measure rendering, formatting and compression,
+ * not the disk.  "libpng alone" is the rows already rendered in memory
+ * and handed to libpng with the settings png_write.c uses; keep the two in
+ * step when either changes.
+ */
+#include <png.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+
+#define LARGE_WIDTH 16384u
+#define LARGE_HEIGHT 12288u
+#define RSS_SIDE "16384"
+
+typedef struct large_setup {
+    rayo_camera camera;
+    rayo_scene *scene;
+} large_setup;
+
+static int large_init(large_setup *setup, uint32_t width, uint32_t height)
+{
+    rayo_error err;
+    if (rayo_camera_init(&setup->camera, width, height, RAYO_SEED_FOV,
+                         rayo_vec3_make(0, 0, 0), &err) != RAYO_OK ||
+        rayo_scene_create(&setup->scene, &err) != RAYO_OK)
+        return -1;
+    return rayo_scene_add_sphere(setup->scene,
+                                 rayo_vec3_make(RAYO_SEED_CENTER_X,
+                                                RAYO_SEED_CENTER_Y,
+                                                RAYO_SEED_CENTER_Z),
+                                 RAYO_SEED_RADIUS, &err) == RAYO_OK
+               ? 0
+               : -1;
+}
+
+static rayo_status to_writer(void *context, const unsigned char *rows,
+                             size_t stride, uint32_t first_row,
+                             uint32_t count, rayo_error *err)
+{
+    (void)first_row;
+    return rayo_writer_write_rows(context, rows, stride, count, err);
+}
+
+/* One render to /dev/null; seconds, or -1. */
+static double render_to_null(const large_setup *setup, rayo_format format,
+                             unsigned threads)
+{
+    rayo_render_options options;
+    rayo_write_options write_options;
+    rayo_output *out;
+    rayo_writer *writer;
+    rayo_image_info info;
+    rayo_error err;
+    double start = bench_now();
+    rayo_render_options_init(&options);
+    options.threads = threads;
+    info = rayo_render_image_info(&setup->camera, &options);
+    write_options.format = format;
+    write_options.plain = 0;
+    if (rayo_output_open(&out, "/dev/null", &err) != RAYO_OK)
+        return -1;
+    if (rayo_writer_open(&writer, out, &info, &write_options, &err) !=
+        RAYO_OK) {
+        rayo_output_abort(out);
+        return -1;
+    }
+    if (rayo_render(&setup->camera, setup->scene, &options, to_writer,
+                    writer, &err) != RAYO_OK) {
+        rayo_writer_discard(writer);
+        rayo_output_abort(out);
+        return -1;
+    }
+    if (rayo_writer_finish(writer, &err) != RAYO_OK ||
+        rayo_output_commit(out, &err) != RAYO_OK)
+        return -1;
+    return bench_now() - start;
+}
+
+/* libpng alone: the frame's rows, already rendered, to /dev/null. */
+static double libpng_alone(const rayo_image *image)
+{
+    FILE *null = fopen("/dev/null", "wb");
+    png_structp png;
+    png_infop info;
+    uint32_t j;
+    double start;
+    if (null == NULL)
+        return -1;
+    start = bench_now();
+    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    info = png == NULL ? NULL : png_create_info_struct(png);
+    if (info == NULL || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        fclose(null);
+        return -1;
+    }
+    png_init_io(png, null);
+    png_set_IHDR(png, info, image->info.width, image->info.height, 1,
+                 PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    png_set_invert_mono(png);
+    for (j = 0; j < image->info.height; j++)
+        png_write_row(png, rayo_image_row(image, j));
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    fclose(null);
+    return bench_now() - start;
+}
+
+static double best_of(double a, double b)
+{
+    if (a < 0)
+        return b;
+    if (b < 0)
+        return a;
+    return a < b ? a : b;
+}
+
+static void throughput(bench_table *table, const large_setup *setup)
+{
+    unsigned all = rayo_cpu_count();
+    double pixels = (double)LARGE_WIDTH * LARGE_HEIGHT;
+    double one = -1, many = -1, png = -1, alone = -1;
+    rayo_render_options options;
+    rayo_image image;
+    rayo_error err;
+    int r;
+    rayo_render_options_init(&options);
+    if (rayo_render_image(&setup->camera, setup->scene, &options, &image,
+                          &err) != RAYO_OK) {
+        bench_add(table, "large_error", "large frame could not render", -1,
+                  "");
+        return;
+    }
+    for (r = 0; r < bench_repeats(table); r++) {
+        one = best_of(one, render_to_null(setup, RAYO_FORMAT_PBM, 1));
+        many = best_of(many, render_to_null(setup, RAYO_FORMAT_PBM, all));
+        png = best_of(png, render_to_null(setup, RAYO_FORMAT_PNG, all));
+        alone = best_of(alone, libpng_alone(&image));
+    }
+    rayo_image_free(&image);
+    bench_add(table, "p4_1thread_gpps", "16384x12288 P4, 1 thread",
+              pixels / one * 1e-9, "Gpixel/s");
+    bench_add(table, "p4_all_gpps", "16384x12288 P4, all threads",
+              pixels / many * 1e-9, "Gpixel/s");
+    bench_add(table, "p4_all_s", "16384x12288 P4, all threads, time",
+              many * 1e3, "ms");
+    bench_add(table, "png_all_s", "16384x12288 PNG, all threads", png * 1e3,
+              "ms");
+    bench_add(table, "png_libpng_s", "libpng alone, same rows", alone * 1e3,
+              "ms");
+    bench_target(table, "P4 all threads (Gpixel/s)", pixels / many * 1e-9,
+                 2.0, 0);
+    bench_target(table, "P4 speed-up, 1 to all threads", one / many, 1.8,
+                 0);
+    bench_target(table, "PNG / libpng alone", png / alone, 1.2, 1);
+}
+
+static void peak_memory(bench_table *table, const char *rayo)
+{
+    static const char *const formats[2] = {"pbm", "png"};
+    static const char *const keys[2] = {"rss_p4_kib", "rss_png_kib"};
+    static const char *const labels[2] = {
+        "16384x16384 P4, peak RSS of rayo", "16384x16384 PNG, peak RSS of rayo"};
+    int f;
+    for (f = 0; f < 2; f++) {
+        char *argv[] = {(char *)rayo, "render", "-W", RSS_SIDE, "-H",
+                        RSS_SIDE, "--format", (char *)formats[f], "--raw",
+                        "-o", "/dev/null", NULL};
+        long rss = -1;
+        if (f == 1)
+            argv[8] = NULL; /* no --raw for PNG */
+        if (bench_run_child(argv, NULL, &rss) < 0)
+            rss = -1;
+        bench_add(table, keys[f], labels[f], (double)rss / 1024.0, "MiB");
+        bench_target(table, labels[f], (double)rss / 1024.0, 64.0, 1);
+    }
+}
+
+void bench_large(bench_table *table, const char *rayo)
+{
+    large_setup setup;
+    if (large_init(&setup, LARGE_WIDTH, LARGE_HEIGHT) != 0) {
+        bench_add(table, "large_error", "large frame setup failed", -1, "");
+        return;
+    }
+    throughput(table, &setup);
+    rayo_scene_free(setup.scene);
+    if (rayo != NULL)
+        peak_memory(table, rayo);
+}

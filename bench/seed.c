@@ -1,0 +1,189 @@
+/*
+ * seed.c - the seed job (640x480, the assignment's sphere, plain PBM)
+ * against its two yardsticks, all into a pipe that a thread empties:
+ *   - the I/O floor: the same bytes, already in memory, in one write;
+ *   - the baseline: the assignment's program (baseline.c).
+ * The job is the library doing what `rayo > pipe` does: camera, scene,
+ * threaded render, P1 writer, output; thread start-up included.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bench.h"
+
+typedef struct memory_sink {
+    unsigned char *bytes;
+    size_t size;
+} memory_sink;
+
+typedef struct seed_setup {
+    rayo_camera camera;
+    rayo_scene *scene;
+} seed_setup;
+
+static int seed_init(seed_setup *setup)
+{
+    rayo_error err;
+    if (rayo_camera_init(&setup->camera, RAYO_SEED_WIDTH, RAYO_SEED_HEIGHT,
+                         RAYO_SEED_FOV, rayo_vec3_make(0, 0, 0),
+                         &err) != RAYO_OK ||
+        rayo_scene_create(&setup->scene, &err) != RAYO_OK)
+        return -1;
+    return rayo_scene_add_sphere(setup->scene,
+                                 rayo_vec3_make(RAYO_SEED_CENTER_X,
+                                                RAYO_SEED_CENTER_Y,
+                                                RAYO_SEED_CENTER_Z),
+                                 RAYO_SEED_RADIUS, &err) == RAYO_OK
+               ? 0
+               : -1;
+}
+
+static rayo_status to_writer(void *context, const unsigned char *rows,
+                             size_t stride, uint32_t first_row,
+                             uint32_t count, rayo_error *err)
+{
+    (void)first_row;
+    return rayo_writer_write_rows(context, rows, stride, count, err);
+}
+
+/* The seed job into fd; 0 on success. */
+static int seed_job(const seed_setup *setup, int fd)
+{
+    rayo_render_options options;
+    rayo_write_options write_options;
+    rayo_output *out;
+    rayo_writer *writer;
+    rayo_image_info info;
+    rayo_error err;
+    rayo_render_options_init(&options);
+    info = rayo_render_image_info(&setup->camera, &options);
+    write_options.format = RAYO_FORMAT_PBM;
+    write_options.plain = 1;
+    if (rayo_output_open_fd(&out, fd, "pipe", &err) != RAYO_OK)
+        return -1;
+    if (rayo_writer_open(&writer, out, &info, &write_options, &err) !=
+        RAYO_OK) {
+        rayo_output_abort(out);
+        return -1;
+    }
+    if (rayo_render(&setup->camera, setup->scene, &options, to_writer,
+                    writer, &err) != RAYO_OK) {
+        rayo_writer_discard(writer);
+        rayo_output_abort(out);
+        return -1;
+    }
+    if (rayo_writer_finish(writer, &err) != RAYO_OK) {
+        rayo_output_abort(out);
+        return -1;
+    }
+    return rayo_output_commit(out, &err) == RAYO_OK ? 0 : -1;
+}
+
+static int write_all(int fd, const unsigned char *bytes, size_t size)
+{
+    while (size > 0) {
+        ssize_t n = write(fd, bytes, size);
+        if (n <= 0)
+            return -1;
+        bytes += n;
+        size -= (size_t)n;
+    }
+    return 0;
+}
+
+/* What the seed job writes, in memory. */
+static int seed_bytes(const seed_setup *setup, memory_sink *sink)
+{
+    char path[] = "/tmp/rayo-bench-seed.XXXXXX";
+    int fd = mkstemp(path);
+    off_t size;
+    if (fd < 0)
+        return -1;
+    unlink(path);
+    if (seed_job(setup, dup(fd)) != 0)
+        return -1;
+    size = lseek(fd, 0, SEEK_END);
+    sink->bytes = malloc((size_t)size);
+    sink->size = (size_t)size;
+    if (sink->bytes == NULL ||
+        pread(fd, sink->bytes, sink->size, 0) != (ssize_t)size) {
+        close(fd);
+        return -1;
+    }
+    close(fd);
+    return 0;
+}
+
+typedef enum seed_kind { SEED_FLOOR, SEED_JOB, SEED_BASELINE } seed_kind;
+
+/* One timed run into a fresh drained pipe; seconds, or -1. */
+static double seed_run(const seed_setup *setup, const memory_sink *bytes,
+                       seed_kind kind)
+{
+    bench_pipe *p;
+    int fd, failed = 0;
+    double start, seconds;
+    if (bench_pipe_open(&p, &fd) != 0)
+        return -1;
+    start = bench_now();
+    switch (kind) {
+    case SEED_FLOOR:
+        failed = write_all(fd, bytes->bytes, bytes->size) != 0;
+        close(fd);
+        break;
+    case SEED_JOB:
+        failed = seed_job(setup, fd) != 0;
+        close(fd);
+        break;
+    case SEED_BASELINE:
+        bench_baseline_seed(fd); /* closes fd */
+        break;
+    }
+    bench_pipe_close(p, -1);
+    seconds = bench_now() - start;
+    return failed ? -1 : seconds;
+}
+
+static double min_positive(double a, double b)
+{
+    if (a < 0)
+        return b;
+    if (b < 0)
+        return a;
+    return a < b ? a : b;
+}
+
+void bench_seed(bench_table *table)
+{
+    seed_setup setup;
+    memory_sink bytes = {NULL, 0};
+    double best[3] = {-1, -1, -1};
+    int r, k, repeats = bench_repeats(table) * 4;
+    if (seed_init(&setup) != 0 || seed_bytes(&setup, &bytes) != 0) {
+        bench_add(table, "seed_error", "seed job could not run", -1, "");
+        return;
+    }
+    /* Interleaved, so a busy moment hurts all three alike. */
+    for (r = 0; r < repeats; r++)
+        for (k = 0; k < 3; k++)
+            best[k] = min_positive(best[k],
+                                   seed_run(&setup, &bytes, (seed_kind)k));
+    bench_add(table, "seed_bytes", "seed job output (640x480 P1)",
+              (double)bytes.size, "bytes");
+    bench_add(table, "seed_floor_s", "I/O floor: same bytes from memory",
+              best[SEED_FLOOR] * 1e3, "ms");
+    bench_add(table, "seed_job_s", "seed job, rayo (all threads)",
+              best[SEED_JOB] * 1e3, "ms");
+    bench_add(table, "seed_baseline_s",
+              "seed job, baseline (printf per pixel)",
+              best[SEED_BASELINE] * 1e3, "ms");
+    bench_target(table, "seed job / I/O floor", best[SEED_JOB] /
+                 best[SEED_FLOOR], 1.3, 1);
+    bench_target(table, "baseline / seed job", best[SEED_BASELINE] /
+                 best[SEED_JOB], 8.0, 0);
+    free(bytes.bytes);
+    rayo_scene_free(setup.scene);
+}
