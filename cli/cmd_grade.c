@@ -59,8 +59,8 @@ static void print_help(void)
         "exercises:\n");
     for (i = 0; i < count; i++)
         printf("  %-8s %s\n", exercises[i].name, exercises[i].title);
-    printf("\nThe limits stop honest mistakes (loops, runaway output); they "
-           "are not a\nsandbox: grade untrusted code in a container.\n\n"
+    printf("\nThe limits stop honest mistakes (loops, runaway output); "
+           "they are\nnot a sandbox: grade untrusted code in a container.\n\n"
            "exit status: 0 everything passed, 1 something failed, 2 bad "
            "options.\n");
 }

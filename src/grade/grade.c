@@ -72,7 +72,7 @@ static rayo_status absolute_sources(grade_context *ctx, rayo_error *err)
     for (i = 0; i < ctx->source_count; i++) {
         ctx->absolute[i] = realpath(ctx->sources[i], NULL);
         if (ctx->absolute[i] == NULL)
-            return rayo_error_set(err, RAYO_ERR_INVALID, "%s: %s",
+            return rayo_error_set(err, RAYO_ERR_IO, "%s: %s",
                                   ctx->sources[i], strerror(errno));
     }
     return RAYO_OK;
@@ -129,10 +129,7 @@ static rayo_status run_steps(grade_context *ctx, const rayo_image *reference,
                                     "image that can be read",
              err, &status);
     rayo_image_free(&image);
-    if (status == RAYO_OK && ctx->options->valgrind &&
-        !(report->items[RAYO_GRADE_RUN].result == RAYO_GRADE_FAIL &&
-          strstr(report->items[RAYO_GRADE_RUN].lines[0], "did not finish") !=
-              NULL))
+    if (status == RAYO_OK && ctx->options->valgrind && !ctx->stopped)
         status = grade_step_valgrind(ctx, err);
     return status;
 }
@@ -165,8 +162,8 @@ static void skip_the_rest(grade_context *ctx, rayo_error *err,
         skip(ctx, RAYO_GRADE_VALGRIND, "not run (--no-valgrind)", err,
              status);
     else
-        skip(ctx, RAYO_GRADE_VALGRIND, "not run: the program did not "
-                                       "finish", err, status);
+        skip(ctx, RAYO_GRADE_VALGRIND, "not run: the program was stopped "
+                                       "by a limit", err, status);
 }
 
 rayo_status rayo_grade(const rayo_grade_options *options,

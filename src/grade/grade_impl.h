@@ -102,6 +102,7 @@ typedef struct grade_context {
     char **cc;          /* the compiler command, split on spaces */
     size_t cc_words;
     char *program;      /* the compiled program */
+    int stopped;        /* the run was stopped by a limit */
     char *output;       /* what the program wrote */
     size_t output_size;
 } grade_context;

@@ -120,7 +120,9 @@ static void child(const char *program, char *const argv[],
         _exit(126);
     set_limit(RLIMIT_CORE, 0, 0);
     if (limits->cpu > 0) {
-        rlim_t cpu = (rlim_t)limits->cpu + 1;
+        rlim_t cpu = (rlim_t)limits->cpu;
+        if ((double)cpu < limits->cpu)
+            cpu++;
         set_limit(RLIMIT_CPU, cpu, cpu + 1);
     }
     if (limits->memory > 0)

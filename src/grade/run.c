@@ -66,9 +66,9 @@ static rayo_status say_ending(grade_context *ctx,
     if (outcome->ending == GRADE_SIGNALED) {
         int sig = outcome->status;
         if (sig == SIGXCPU)
-            return grade_fail(item, err, "used more than %g seconds of CPU "
-                                         "time and was stopped: an "
-                                         "infinite loop?",
+            return grade_fail(item, err, "used more than %g s of CPU time "
+                                         "and was stopped: an infinite "
+                                         "loop?",
                               o->cpu);
         if (sig == SIGXFSZ)
             return grade_fail(item, err, "wrote more than %llu bytes (the "
@@ -159,6 +159,10 @@ rayo_status grade_step_run(grade_context *ctx, rayo_error *err)
                                0, &outcome, err);
     if (status == RAYO_OK)
         status = say_ending(ctx, &outcome, err);
+    ctx->stopped = outcome.ending == GRADE_TIMED_OUT ||
+                   (outcome.ending == GRADE_SIGNALED &&
+                    (outcome.status == SIGXCPU || outcome.status == SIGXFSZ ||
+                     outcome.status == SIGKILL));
     if (status == RAYO_OK)
         status = grade_read_file(errpath, 1u << 20, &errors, &size, err);
     if (status == RAYO_OK && size > 0)

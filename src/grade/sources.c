@@ -97,7 +97,7 @@ rayo_status rayo_grade_sources(const char *path, char ***sources,
     *sources = NULL;
     *count = 0;
     if (stat(path, &st) != 0)
-        return rayo_error_set(err, RAYO_ERR_INVALID, "%s: %s", path,
+        return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
                               strerror(errno));
     if (!S_ISDIR(st.st_mode)) {
         char **one = malloc(sizeof *one);

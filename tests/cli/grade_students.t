@@ -22,9 +22,10 @@ grade() {
 
 # says PATTERN NAME: the report has a line matching PATTERN (grep -E).
 says() {
-    grep -Eq -- "$1" "$TMP/out"
-    ok $? "$2"
-    [ $? -eq 0 ] || sed 's/^/#   /' "$TMP/out"
+    found=0
+    grep -Eq -- "$1" "$TMP/out" || found=1
+    ok "$found" "$2"
+    [ "$found" -eq 0 ] || sed 's/^/#   /' "$TMP/out"
 }
 
 ALL_PASS="compile=pass functions=pass run=pass output=pass image=pass"
