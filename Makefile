@@ -45,7 +45,7 @@ LIB := $(BUILD)/librayo.a
 RAYO := $(BUILD)/rayo
 
 .PHONY: all check run install uninstall clean bench check-sanitize \
-        check-valgrind unit cli-tests
+        check-valgrind unit cli-tests fuzz fuzz-targets
 .DEFAULT_GOAL := all
 
 all: $(RAYO) $(LIB)
@@ -79,7 +79,7 @@ unit: $(UNIT_BIN)
 
 # Every test, as TAP, through prove.  Command tests find the build through
 # the environment, so `make check BUILD=build-asan` tests that build.
-check: all $(UNIT_BIN) | $(BUILD)/.deps-check
+check: all $(UNIT_BIN) $(FUZZ_REPLAY) | $(BUILD)/.deps-check
 	RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
 	RAYO_CC="$(CC)" RAYO_SOURCE=$(CURDIR) \
 	    prove -f --exec '' $(UNIT_BIN) $(sort $(wildcard tests/cli/*.t))
@@ -93,6 +93,33 @@ run: $(RAYO)
 check-sanitize:
 	$(MAKE) check CC=clang BUILD=$(BUILD)-sanitize \
 	    OPT="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
+	    LDFLAGS="-fsanitize=address,undefined"
+
+# Fuzzing (fuzz/, docs/robustness.md): each fuzz/fuzz_NAME.c is a target.
+# `make fuzz` links them with libFuzzer, ASan and UBSan (clang) as
+# $(BUILD)-fuzz/fuzz/fuzz-NAME (fuzz/run.sh runs them); `make check`
+# links them with fuzz/replay.c as $(BUILD)/fuzz/replay-NAME and replays
+# fuzz/corpus/NAME and fuzz/regression/NAME.
+FUZZ_NAMES := $(patsubst fuzz/fuzz_%.c,%,$(sort $(wildcard fuzz/fuzz_*.c)))
+FUZZ_SUPPORT_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(filter-out \
+    fuzz/fuzz_%.c fuzz/replay.c,$(sort $(wildcard fuzz/*.c)))) \
+    $(BUILD)/obj/cli/parse.o $(BUILD)/obj/cli/progress.o
+FUZZ_REPLAY := $(FUZZ_NAMES:%=$(BUILD)/fuzz/replay-%)
+
+$(BUILD)/fuzz/replay-%: $(BUILD)/obj/fuzz/fuzz_%.o $(BUILD)/obj/fuzz/replay.o \
+    $(FUZZ_SUPPORT_OBJ) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+$(BUILD)/fuzz/fuzz-%: $(BUILD)/obj/fuzz/fuzz_%.o $(FUZZ_SUPPORT_OBJ) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
+
+fuzz-targets: $(FUZZ_NAMES:%=$(BUILD)/fuzz/fuzz-%)
+
+fuzz:
+	$(MAKE) fuzz-targets CC=clang BUILD=$(BUILD)-fuzz \
+	    OPT="-O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
 	    LDFLAGS="-fsanitize=address,undefined"
 
 # Benchmarks (bench/bench.c says how to add a row): a table on stdout
@@ -109,7 +136,7 @@ bench: $(RAYO) $(BENCH_BIN)
 	RAYO_SOURCE=$(CURDIR) $(BENCH_BIN) --json $(BUILD)/bench.json
 
 # The command tests with every rayo run under valgrind memcheck.
-check-valgrind: all $(UNIT_BIN)
+check-valgrind: all $(UNIT_BIN) $(FUZZ_REPLAY)
 	RAYO_VALGRIND=1 RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
 	RAYO_CC="$(CC)" RAYO_SOURCE=$(CURDIR) \
 	    prove -f --exec '' $(sort $(wildcard tests/cli/*.t))
@@ -133,6 +160,6 @@ uninstall:
 	rm -rf $(DESTDIR)$(PREFIX)/include/rayo
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-sanitize esfera.pbm esfera.png
+	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-fuzz esfera.pbm esfera.png
 
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
