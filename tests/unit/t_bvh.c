@@ -157,6 +157,38 @@ static void compare_scenes(const rayo_scene *brute, const rayo_scene *tree,
     }
 }
 
+/* Rays along the axes (zero direction components: infinite reciprocals
+ * in the box test), from points beside random spheres, some grazing
+ * them at exactly one radius. */
+static void compare_axis_rays(const rayo_scene *brute, const rayo_scene *tree,
+                              size_t rays, uint64_t seed, tally *t)
+{
+    rayo_lcg g;
+    size_t i, n = rayo_scene_sphere_count(brute);
+    rayo_lcg_seed(&g, seed);
+    for (i = 0; i < rays && n > 0; i++) {
+        const rayo_sphere *s =
+            rayo_scene_sphere(brute, (size_t)(rayo_lcg_next(&g) * (double)n));
+        double c[3], o[3], d[3] = {0, 0, 0};
+        int axis = (int)(i % 3), other = (axis + 1) % 3, k;
+        rayo_ray r;
+        c[0] = s->center.x;
+        c[1] = s->center.y;
+        c[2] = s->center.z;
+        for (k = 0; k < 3; k++)
+            o[k] = c[k] + uniform(&g, -s->radius, s->radius);
+        if (i % 4 == 0) /* grazing: one radius off along another axis */
+            o[other] = c[other] + s->radius;
+        o[axis] = c[axis] - 30;
+        d[axis] = i % 2 ? 1.0 : -1.0;
+        if (d[axis] < 0)
+            o[axis] = c[axis] + 30;
+        r.origin = rayo_vec3_make(o[0], o[1], o[2]);
+        r.direction = rayo_vec3_make(d[0], d[1], d[2]);
+        compare_ray(brute, tree, &r, 0.0, &g, t);
+    }
+}
+
 static void check_same(const char *name, uint64_t seed, size_t spheres,
                        size_t triangles, size_t planes, size_t rays)
 {
@@ -169,11 +201,50 @@ static void check_same(const char *name, uint64_t seed, size_t spheres,
     fill_random(tree, seed, spheres, triangles, planes);
     is_int(rayo_scene_prepare(tree, &err), RAYO_OK, "%s: prepare", name);
     compare_scenes(brute, tree, rays, seed + 1, &t);
+    compare_axis_rays(brute, tree, rays / 2, seed + 2, &t);
     is_int(t.nearest_bad, 0, "%s: %lu rays, same nearest hits", name,
            (unsigned long)t.rays);
     is_int(t.occluded_bad, 0, "%s: same shadow-ray answers", name);
     ok(spheres + triangles + planes == 0 || t.hits * 4 > t.rays,
        "%s: the rays are not vacuous (%lu of %lu hit)", name,
+       (unsigned long)t.hits, (unsigned long)t.rays);
+    rayo_scene_free(brute);
+    rayo_scene_free(tree);
+}
+
+/* The same comparison on spheres scaled to 1e150 and to 1e-150. */
+static void check_scaled(double scale, const char *name)
+{
+    rayo_scene *brute, *tree;
+    rayo_error err;
+    rayo_lcg g;
+    tally t = {0, 0, 0, 0, 0};
+    size_t i;
+    rayo_scene_create(&brute, &err);
+    rayo_scene_create(&tree, &err);
+    rayo_lcg_seed(&g, 5);
+    for (i = 0; i < 300; i++) {
+        rayo_vec3 c = rayo_vec3_scale(random_point(&g, 10), scale);
+        double r = uniform(&g, 0.1, 1.0) * scale;
+        rayo_scene_add_sphere(brute, c, r, &err);
+        rayo_scene_add_sphere(tree, c, r, &err);
+    }
+    rayo_scene_prepare(tree, &err);
+    rayo_lcg_seed(&g, 6);
+    for (i = 0; i < 600; i++) {
+        const rayo_sphere *s = rayo_scene_sphere(
+            brute, (size_t)(rayo_lcg_next(&g) * 300.0));
+        rayo_ray r;
+        r.origin = rayo_vec3_scale(random_point(&g, 15), scale);
+        r.direction = rayo_vec3_normalize(rayo_vec3_sub(
+            rayo_vec3_add(s->center, rayo_vec3_scale(random_point(&g, 1),
+                                                     s->radius)),
+            r.origin));
+        compare_ray(brute, tree, &r, 0.0, &g, &t);
+    }
+    is_int(t.nearest_bad + t.occluded_bad, 0,
+           "%s: hierarchy agrees with brute force", name);
+    ok(t.hits * 2 > t.rays, "%s: most rays hit (%lu of %lu)", name,
        (unsigned long)t.hits, (unsigned long)t.rays);
     rayo_scene_free(brute);
     rayo_scene_free(tree);
@@ -292,9 +363,20 @@ static void check_bvh_alone(void)
        "bvh of one box: any-hit finds it");
     ok(!rayo_bvh_any(bvh, &r, 0, 0.5, hit_only_zero, NULL, &cost),
        "bvh of one box: t_max = 0.5 ends before the box");
+    r.origin = rayo_vec3_make(-5, 0, 1);
+    r.direction = rayo_vec3_make(1, 0, 0);
+    t = INFINITY;
+    best = UINT32_MAX;
+    rayo_bvh_nearest(bvh, &r, 0, INFINITY, hit_only_zero, NULL, &t, &best,
+                     &cost);
+    ok(t == 2 && rayo_bvh_any(bvh, &r, 0, INFINITY, hit_only_zero, NULL,
+                              &cost),
+       "bvh of one box: a ray in the plane of a face (0 x infinity in the "
+       "slab test) still reaches the primitive");
     r.origin = rayo_vec3_make(5, 0, 0);
+    cost.prim_tests = 0;
     ok(!rayo_bvh_any(bvh, &r, 0, INFINITY, hit_only_zero, NULL, &cost) &&
-           cost.prim_tests == 2,
+           cost.prim_tests == 0,
        "bvh of one box: a ray beside the box never calls the test");
     rayo_bvh_free(bvh);
 }
@@ -434,6 +516,8 @@ int main(void)
     check_same("mixed scene", 2024, 600, 150, 2, 1000);
     check_same("dense small scene", 99, 60, 20, 0, 1000);
     check_one_point();
+    check_scaled(1e150, "coordinates near 1e150");
+    check_scaled(1e-150, "coordinates near 1e-150");
     check_tiny_scenes();
     check_bvh_alone();
     check_cost();
