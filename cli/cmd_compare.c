@@ -160,6 +160,16 @@ static int compare_images(const compare_request *req,
                                                         : CLI_EXIT_OK;
 }
 
+/* An input that cannot be read, for whatever reason short of memory,
+ * is the caller's bad input: exit 2, as the manual promises. */
+static int unreadable(const rayo_error *err)
+{
+    if (err->status == RAYO_ERR_NOMEM)
+        return cli_report(err);
+    fprintf(stderr, "rayo: %s\n", err->message);
+    return CLI_EXIT_USAGE;
+}
+
 int cli_compare(int argc, char **argv)
 {
     compare_request req;
@@ -178,7 +188,7 @@ int cli_compare(int argc, char **argv)
             RAYO_OK ||
         rayo_image_read_file(req.image, &image, NULL, &err) != RAYO_OK) {
         rayo_image_free(&reference);
-        return cli_report(&err);
+        return unreadable(&err);
     }
     status = compare_images(&req, &reference, &image);
     rayo_image_free(&reference);

@@ -57,7 +57,7 @@ static rayo_status run(const cmp_pair *pair, rayo_compare_report *report,
     rayo_status s = cmp_outline_create(&outline, &pair->ref, err);
     if (s != RAYO_OK)
         return s;
-    s = cmp_measure(&pair->ref, &pair->image, &identity, outline,
+    s = cmp_measure(&pair->ref, &pair->image, &identity, outline, 1,
                     report->tolerance, &counts, err);
     if (s == RAYO_OK) {
         fill_counts(&counts, cmp_outline_has_edges(outline), report);

@@ -138,11 +138,13 @@ typedef struct cmp_counts {
 
 /*
  * Compares ref with image undone by t.  With outline NULL only the
- * counts are made (no distances, beyond = 0).
+ * counts are made (no distances, beyond = 0).  With exact 0, only
+ * `beyond` is needed, not max_distance (left at 0): small tolerances
+ * are then checked by looking around each mismatch, which is faster.
  */
 rayo_status cmp_measure(const cmp_mask *ref, const cmp_mask *image,
                         const cmp_transform *t, cmp_outline *outline,
-                        double tolerance, cmp_counts *counts,
+                        int exact, double tolerance, cmp_counts *counts,
                         rayo_error *err);
 
 /* ---- diagnose.c ---- */

@@ -67,13 +67,13 @@ static rayo_status try_candidate(const cmp_mask *ref, const cmp_mask *image,
 {
     rayo_status s;
     result->tried = 0;
-    s = cmp_measure(ref, image, t, NULL, report->tolerance, &result->counts,
+    s = cmp_measure(ref, image, t, NULL, 0, report->tolerance, &result->counts,
                     err);
     if (s != RAYO_OK)
         return s;
     if (2 * mismatches_of(&result->counts) > report->mismatches)
         return RAYO_OK;
-    s = cmp_measure(ref, image, t, outline, report->tolerance,
+    s = cmp_measure(ref, image, t, outline, 0, report->tolerance,
                     &result->counts, err);
     result->tried = s == RAYO_OK;
     return s;
@@ -106,7 +106,7 @@ static rayo_status scale_loss(const cmp_mask *ref, const cmp_mask *image,
     rayo_status st;
     t.scale = s;
     t.step = step;
-    st = cmp_measure(ref, image, &t, NULL, 0, &c, err);
+    st = cmp_measure(ref, image, &t, NULL, 0, 0, &c, err);
     *loss = 1.0 - iou_of(&c);
     return st;
 }
@@ -195,6 +195,12 @@ static rayo_status consider(chooser *ch, const cmp_mask *ref,
     return RAYO_OK;
 }
 
+/* A candidate that undoes every far mismatch ends the search. */
+static int exact_found(const chooser *ch)
+{
+    return ch->found && ch->best.counts.beyond == 0;
+}
+
 static rayo_compare_diagnosis diagnosis_of(cmp_transform_kind kind)
 {
     switch (kind) {
@@ -257,7 +263,7 @@ static rayo_status judge_close(const cmp_mask *ref, const cmp_mask *image,
     residual_offset(rs, is, report, &t.dx, &t.dy);
     if (t.dx == 0 && t.dy == 0)
         return RAYO_OK;
-    s = cmp_measure(ref, image, &t, NULL, 0, &c, err);
+    s = cmp_measure(ref, image, &t, NULL, 0, 0, &c, err);
     if (s != RAYO_OK || 2 * mismatches_of(&c) > report->mismatches)
         return s;
     report->verdict = RAYO_VERDICT_INCONSISTENT;
@@ -303,13 +309,15 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
     cmp_transform t = {CMP_IDENTITY, 0, 0, 1, 1};
     rayo_status s = RAYO_OK;
     size_t i;
-    for (i = 0; i < sizeof plain / sizeof plain[0] && s == RAYO_OK; i++) {
+    for (i = 0; i < sizeof plain / sizeof plain[0] && s == RAYO_OK &&
+                !exact_found(ch);
+         i++) {
         t.kind = plain[i];
         if ((t.kind != CMP_TRANSPOSE || ref->width == ref->height) &&
             centroid_agrees(ref, rs, is, t.kind))
             s = consider(ch, ref, image, outline, report, &t, err);
     }
-    if (s != RAYO_OK || !report->shapes_measured)
+    if (s != RAYO_OK || !report->shapes_measured || exact_found(ch))
         return s;
     t.kind = CMP_SHIFT;
     t.dx = round_offset(report->offset_x);
@@ -317,6 +325,8 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
     if ((t.dx != 0 || t.dy != 0) &&
         (s = consider(ch, ref, image, outline, report, &t, err)) != RAYO_OK)
         return s;
+    if (exact_found(ch))
+        return RAYO_OK;
     t.kind = CMP_SCALE;
     t.dx = t.dy = 0;
     if ((s = search_scale(ref, image, rs, is, report->scale, &t.scale,
@@ -354,7 +364,8 @@ static rayo_status diagnose_size(const cmp_mask *ref, const cmp_mask *image,
     report->diagnosis = RAYO_DIAGNOSIS_DIFFERENT_SIZE;
     if (image->width != ref->height || image->height != ref->width)
         return RAYO_OK;
-    s = cmp_measure(ref, image, &t, outline, report->tolerance, &c, err);
+    s = cmp_measure(ref, image, &t, outline, 0, report->tolerance, &c,
+                    err);
     if (s != RAYO_OK)
         return s;
     if (c.beyond == 0 || iou_of(&c) >= CLOSE_IOU) {

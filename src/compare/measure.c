@@ -68,8 +68,66 @@ static void row_distances(cmp_outline *outline, uint32_t y, int colour,
     }
 }
 
+/* Tolerances up to this are checked by looking around each mismatch
+ * (at most (2 * 8 + 1)^2 pixels) when the exact distance is not needed. */
+#define LOCAL_TOLERANCE 8.0
+
+/* Whether a reference pixel of colour `colour` lies within tolerance of
+ * (x, y). */
+static int near_colour(const cmp_mask *ref, uint32_t x, uint32_t y,
+                       int colour, double tolerance)
+{
+    int64_t r = (int64_t)floor(tolerance), dx, dy;
+    double t2 = tolerance * tolerance;
+    for (dy = -r; dy <= r; dy++) {
+        int64_t j = (int64_t)y + dy;
+        const unsigned char *row;
+        if (j < 0 || j >= ref->height)
+            continue;
+        row = cmp_mask_row(ref, (uint32_t)j);
+        for (dx = -r; dx <= r; dx++) {
+            int64_t i = (int64_t)x + dx;
+            if (i < 0 || i >= ref->width || (double)(dx * dx + dy * dy) > t2)
+                continue;
+            if (rayo_bit_get(row, (uint32_t)i) == colour)
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* Counts the mismatches (bits of diff, reference colour `colour`) with
+ * no pixel of the other colour within tolerance. */
+static void row_beyond(const cmp_mask *ref, uint32_t y, int colour,
+                       const unsigned char *diff, double tolerance,
+                       cmp_counts *c)
+{
+    size_t n = cmp_row_bytes(ref->width), k;
+    unsigned bit;
+    for (k = 0; k < n; k++)
+        if (diff[k] != 0)
+            for (bit = 0; bit < 8; bit++)
+                if (((diff[k] >> (7 - bit)) & 1u) &&
+                    !near_colour(ref, (uint32_t)(k * 8 + bit), y, !colour,
+                                 tolerance))
+                    c->beyond++;
+}
+
+static void row_mismatch_distances(const cmp_mask *ref, uint32_t y,
+                                   int colour, const unsigned char *diff,
+                                   cmp_outline *outline, int exact,
+                                   double tolerance, int64_t *d2,
+                                   cmp_counts *c)
+{
+    if (!exact && tolerance <= LOCAL_TOLERANCE)
+        row_beyond(ref, y, colour, diff, tolerance, c);
+    else
+        row_distances(outline, y, colour, diff, ref->width, tolerance, d2,
+                      c);
+}
+
 static void measure_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
-                        int all_known, cmp_outline *outline,
+                        int all_known, cmp_outline *outline, int exact,
                         double tolerance, cmp_counts *c)
 {
     const unsigned char *a = cmp_mask_row(ref, y);
@@ -94,16 +152,16 @@ static void measure_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
     if (outline == NULL)
         return;
     if (ref_only)
-        row_distances(outline, y, 1, r->diff, ref->width, tolerance, r->d2,
-                      c);
+        row_mismatch_distances(ref, y, 1, r->diff, outline, exact, tolerance,
+                               r->d2, c);
     if (img_only)
-        row_distances(outline, y, 0, r->tmp, ref->width, tolerance, r->d2,
-                      c);
+        row_mismatch_distances(ref, y, 0, r->tmp, outline, exact, tolerance,
+                               r->d2, c);
 }
 
 rayo_status cmp_measure(const cmp_mask *ref, const cmp_mask *image,
                         const cmp_transform *t, cmp_outline *outline,
-                        double tolerance, cmp_counts *counts,
+                        int exact, double tolerance, cmp_counts *counts,
                         rayo_error *err)
 {
     measure_rows r;
@@ -123,7 +181,7 @@ rayo_status cmp_measure(const cmp_mask *ref, const cmp_mask *image,
         counts->known += all ? ref->width
                              : cmp_popcount(r.known,
                                             cmp_row_bytes(ref->width));
-        measure_row(ref, y, &r, all, outline, tolerance, counts);
+        measure_row(ref, y, &r, all, outline, exact, tolerance, counts);
     }
     free(r.img);
     free(r.d2);

@@ -131,6 +131,9 @@ static int permuted_row(const cmp_transform *t, const cmp_mask *image,
     return 1;
 }
 
+/* Larger than any |s x| a frame can produce (scales stay far below 2^20). */
+#define FLOOR_BIAS 68719476736.0 /* 2^36 */
+
 /* out(x, y) = image(round(s x), round(s y)) in centred coordinates. */
 static int scaled_row(const cmp_transform *t, const cmp_mask *image,
                       uint32_t width, uint32_t height, uint32_t y,
@@ -143,8 +146,11 @@ static int scaled_row(const cmp_transform *t, const cmp_mask *image,
         return -1;
     memset(known, 0, cmp_row_bytes(width));
     for (i = 0; i < width; i += step) {
+        /* floor(v) as a truncation of a positive number: no libm call in
+           the innermost loop */
         double xr = (double)i - (double)(width / 2);
-        int64_t ii = (int64_t)floor(t->scale * xr + 0.5) + image->width / 2;
+        int64_t ii = (int64_t)(t->scale * xr + 0.5 + FLOOR_BIAS) -
+                     (int64_t)FLOOR_BIAS + image->width / 2;
         int b = image_bit(image, ii, j);
         if (b < 0)
             continue;
