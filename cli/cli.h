@@ -33,6 +33,12 @@ unsigned cli_terminal_columns(void);
 int cli_print_preview(const rayo_image *image,
                       const rayo_preview_options *options, FILE *stream);
 
+/* compare, view: an input that cannot be read is bad input (exit 2;
+ * memory excepted); text output flushed and checked (a closed pipe ends
+ * quietly, other failures exit 1). */
+int cli_unreadable(const rayo_error *err);
+int cli_flush_text(FILE *stream, const char *name);
+
 /* Prints "rayo: MESSAGE" on stderr; returns CLI_EXIT_USAGE. */
 int cli_usage_error(const char *format, ...)
 #if defined(__GNUC__) || defined(__clang__)

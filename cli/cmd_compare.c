@@ -154,20 +154,10 @@ static int compare_images(const compare_request *req,
         return status;
     if ((status = print_report(&report, req->json)) != CLI_EXIT_OK)
         return status;
-    if (fflush(stdout) != 0)
-        return cli_usage_error("standard output: write failed");
+    if ((status = cli_flush_text(stdout, "standard output")) != CLI_EXIT_OK)
+        return status;
     return report.verdict == RAYO_VERDICT_INCONSISTENT ? CLI_EXIT_FAILURE
                                                         : CLI_EXIT_OK;
-}
-
-/* An input that cannot be read, for whatever reason short of memory,
- * is the caller's bad input: exit 2, as the manual promises. */
-static int unreadable(const rayo_error *err)
-{
-    if (err->status == RAYO_ERR_NOMEM)
-        return cli_report(err);
-    fprintf(stderr, "rayo: %s\n", err->message);
-    return CLI_EXIT_USAGE;
 }
 
 int cli_compare(int argc, char **argv)
@@ -188,7 +178,7 @@ int cli_compare(int argc, char **argv)
             RAYO_OK ||
         rayo_image_read_file(req.image, &image, NULL, &err) != RAYO_OK) {
         rayo_image_free(&reference);
-        return unreadable(&err);
+        return cli_unreadable(&err);
     }
     status = compare_images(&req, &reference, &image);
     rayo_image_free(&reference);

@@ -58,11 +58,8 @@ int cli_print_preview(const rayo_image *image,
         return cli_report(&err);
     fwrite(text, 1, length, stream);
     free(text);
-    if (fflush(stream) != 0 || ferror(stream))
-        return cli_usage_error("%s: write failed",
-                               stream == stdout ? "standard output"
-                                                : "standard error");
-    return CLI_EXIT_OK;
+    return cli_flush_text(stream, stream == stdout ? "standard output"
+                                                   : "standard error");
 }
 
 static int parse_options(int argc, char **argv,
@@ -121,7 +118,7 @@ int cli_view(int argc, char **argv)
     rayo_error_clear(&err);
     memset(&image, 0, sizeof image);
     if (rayo_image_read_file(file, &image, NULL, &err) != RAYO_OK)
-        return cli_report(&err);
+        return cli_unreadable(&err);
     status = cli_print_preview(&image, &options, stdout);
     rayo_image_free(&image);
     return status;
