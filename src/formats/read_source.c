@@ -21,6 +21,11 @@
 void rayo_source_open_memory(rayo_source *src, const void *data, size_t size,
                              const char *name)
 {
+    static const unsigned char nothing[1];
+    if (data == NULL || size == 0) {
+        data = nothing; /* no arithmetic on a null pointer */
+        size = 0;
+    }
     memset(src, 0, sizeof *src);
     src->name = name;
     src->fd = -1;
