@@ -462,6 +462,19 @@ static void test_errors(void)
     }
 }
 
+static void test_empty_memory(void)
+{
+    rayo_image image;
+    rayo_error err;
+    rayo_status status =
+        rayo_image_read_memory(NULL, 0, "nothing", &image, NULL, &err);
+    is_int(status, RAYO_ERR_FORMAT, "NULL, 0 is an empty input");
+    ok(status != RAYO_OK && strstr(err.message, "nothing: byte 0: found an "
+                                                "empty file") != NULL,
+       "empty input: named, at byte 0");
+    ok(image.pixels == NULL, "empty input: nothing allocated");
+}
+
 /* Reads a whole (small) file; returns its size, or 0. */
 static size_t slurp(const char *path, unsigned char *data, size_t capacity)
 {
@@ -523,6 +536,7 @@ int main(void)
     test_raw_pbm_padding();
     test_gray_and_colour();
     test_errors();
+    test_empty_memory();
     test_png_every_type();
     test_corpus_from_memory();
     return tap_done();
