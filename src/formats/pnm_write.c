@@ -9,9 +9,10 @@
  * with the padding bits of the last byte zero; raw samples are bytes, or
  * two bytes big-endian when maxval > 255.  Each row is formatted into a
  * scratch buffer and handed to the output in one call; plain PBM rows are
- * spelled out eight digits per byte from a table.  Raw rows that need no
- * change (bytes, or bits whose padding is already zero) go to the output
- * straight from the caller's memory, a whole block of rows in one call.
+ * spelled out eight digits per byte from a table, then cut into lines.
+ * Raw rows that need no change (bytes, or bits whose padding is already
+ * zero) go to the output straight from the caller's memory, a whole block
+ * of rows in one call.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,7 +25,8 @@
 typedef struct pnm_state {
     unsigned char *scratch;
     size_t scratch_size;
-    char bits_table[256 * 8 + 8]; /* eight ASCII digits for each byte */
+    char *digits; /* plain PBM: one row's digits, a multiple of 8 long */
+    char bits_table[256 * 8]; /* eight ASCII digits for each byte */
 } pnm_state;
 
 static int magic_number(const rayo_writer *writer)
@@ -70,8 +72,8 @@ static size_t scratch_bytes(const rayo_writer *writer)
     size_t samples = (size_t)info->width * info->channels;
     if (!writer->options.plain)
         return rayo_image_info_row_bytes(info);
-    if (info->sample == RAYO_SAMPLE_BIT) /* + 16: format_plain_bits */
-        return samples + samples / PLAIN_LINE_MAX + 2 + 16;
+    if (info->sample == RAYO_SAMPLE_BIT)
+        return samples + samples / PLAIN_LINE_MAX + 2;
     /* "65535 " per sample, and a newline at worst every 11 samples. */
     return samples * 6 + samples / 11 + 2;
 }
@@ -82,7 +84,6 @@ static void fill_bits_table(char *table)
     for (byte = 0; byte < 256; byte++)
         for (bit = 0; bit < 8; bit++)
             table[byte * 8 + bit] = (char)('0' + ((byte >> (7 - bit)) & 1));
-    memset(table + 256 * 8, '0', 8);
 }
 
 static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
@@ -98,7 +99,11 @@ static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     state->scratch_size = scratch_bytes(writer);
     state->scratch = malloc(state->scratch_size);
-    if (state->scratch == NULL) {
+    /* width <= RAYO_MAX_DIMENSION: no overflow. */
+    state->digits = malloc(((size_t)writer->info.width + 7) & ~(size_t)7);
+    if (state->scratch == NULL || state->digits == NULL) {
+        free(state->scratch);
+        free(state->digits);
         free(state);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     }
@@ -118,41 +123,37 @@ static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
     status = rayo_output_write(writer->out, header, (size_t)length, err);
     if (status != RAYO_OK) {
         free(state->scratch);
+        free(state->digits);
         free(state);
     }
     return status;
 }
 
 /*
- * Eight digits per byte from the table, written where they belong with a
- * newline after every PLAIN_LINE_MAX digits and at the end of the row.
+ * The row's digits, eight per byte from the table, into digits (a
+ * multiple of 8 long), then cut into lines: whole lines are copies of a
+ * constant size, which compilers turn into a few vector moves.
  */
 static size_t format_plain_bits(const rayo_writer *writer,
                                 const unsigned char *row, unsigned char *out)
 {
-    const char *table = ((const pnm_state *)writer->state)->bits_table;
+    const pnm_state *state = writer->state;
+    const char *table = state->bits_table; /* locals: no reloads after */
+    char *digits = state->digits;          /* each store */
     uint32_t width = writer->info.width;
-    size_t bytes = ((size_t)width + 7) / 8, i, n = 0, column = 0;
-    for (i = 0; i < bytes; i++) {
-        const char *digits = table + 8 * row[i];
-        size_t count = width - 8 * i < 8 ? width - 8 * i : 8;
-        size_t room = PLAIN_LINE_MAX - column;
-        /* Whole 8-byte copies, which compile to single moves: the
-         * scratch and the table have 8 bytes to spare. */
-        memcpy(out + n, digits, 8);
-        if (count < room) {
-            n += count;
-            column += count;
-            continue;
-        }
-        n += room;
+    size_t bytes = ((size_t)width + 7) / 8, i, x = 0, n = 0;
+    for (i = 0; i < bytes; i++)
+        memcpy(digits + 8 * i, table + 8 * row[i], 8);
+    for (; width - x >= PLAIN_LINE_MAX; x += PLAIN_LINE_MAX) {
+        memcpy(out + n, digits + x, PLAIN_LINE_MAX);
+        n += PLAIN_LINE_MAX;
         out[n++] = '\n';
-        memcpy(out + n, digits + room, 8);
-        n += count - room;
-        column = count - room;
     }
-    if (column > 0)
+    if (x < width) {
+        memcpy(out + n, digits + x, width - x);
+        n += width - x;
         out[n++] = '\n';
+    }
     return n;
 }
 
@@ -275,6 +276,7 @@ static void pnm_discard(rayo_writer *writer)
     pnm_state *state = writer->state;
     if (state != NULL) {
         free(state->scratch);
+        free(state->digits);
         free(state);
         writer->state = NULL;
     }

@@ -8,7 +8,10 @@
  * to the sink, and frees its slot for a later band.  A band's pixels
  * depend only on its rows, never on which thread rendered it, so the
  * output is identical for any thread count.  With one thread nothing is
- * spawned.
+ * spawned, and nothing either when the first band, rendered on the
+ * calling thread as a probe, shows the whole frame would take less than
+ * SERIAL_BELOW_SECONDS (the seed job takes tens of microseconds with the
+ * span fast path; starting threads would cost more than they save).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -17,6 +20,7 @@
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "rayo/limits.h"
@@ -27,6 +31,8 @@
 #define BANDS_PER_THREAD 8u
 /* Slots per thread in the ring of band buffers. */
 #define SLOTS_PER_THREAD 3u
+/* Frames the probe band says are quicker than this stay on one thread. */
+#define SERIAL_BELOW_SECONDS 0.003
 
 typedef struct band_job {
     const rayo_camera *camera;
@@ -126,11 +132,12 @@ static rayo_status deliver(band_job *job, uint32_t band, rayo_row_sink sink,
     return RAYO_OK;
 }
 
-static rayo_status run_serial(band_job *job, rayo_row_sink sink,
-                              void *context, rayo_error *err)
+/* Renders and delivers the bands from `band` on, on this thread. */
+static rayo_status run_serial(band_job *job, uint32_t band,
+                              rayo_row_sink sink, void *context,
+                              rayo_error *err)
 {
-    uint32_t band;
-    for (band = 0; band < job->band_count; band++) {
+    for (; band < job->band_count; band++) {
         rayo_status status;
         render_band(job, band);
         status = deliver(job, band, sink, context, err);
@@ -159,7 +166,7 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
         started++;
     }
     if (started == 0) {
-        status = run_serial(job, sink, context, err);
+        status = run_serial(job, 0, sink, context, err);
     } else {
         for (band = 0; band < job->band_count && status == RAYO_OK; band++) {
             uint32_t slot = band % job->slot_count;
@@ -186,6 +193,34 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     pthread_mutex_destroy(&job->lock);
     free(workers);
     return status;
+}
+
+static double seconds_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/*
+ * Renders band 0 here and times it: a cheap frame continues serially,
+ * any other starts the workers with band 0 already in its slot.
+ */
+static rayo_status run_probed(band_job *job, unsigned threads,
+                              rayo_row_sink sink, void *context,
+                              rayo_error *err)
+{
+    double start = seconds_now();
+    rayo_status status;
+    render_band(job, 0);
+    if ((seconds_now() - start) * job->band_count < SERIAL_BELOW_SECONDS) {
+        status = deliver(job, 0, sink, context, err);
+        return status != RAYO_OK ? status
+                                 : run_serial(job, 1, sink, context, err);
+    }
+    job->slot_band[0] = 0;
+    job->next_band = 1;
+    return run_parallel(job, threads, sink, context, err);
 }
 
 rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
@@ -232,8 +267,8 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
     for (i = 0; i < job.slot_count; i++)
         job.slot_band[i] = UINT32_MAX;
     status = threads == 1
-                 ? run_serial(&job, sink, sink_context, err)
-                 : run_parallel(&job, threads, sink, sink_context, err);
+                 ? run_serial(&job, 0, sink, sink_context, err)
+                 : run_probed(&job, threads, sink, sink_context, err);
     free(job.slots);
     free(job.slot_band);
     return status;
