@@ -15,6 +15,7 @@
 
 #include "cli.h"
 #include "progress.h"
+#include "render_preview.h"
 
 #define MAX_SPHERES_ON_COMMAND_LINE 4096
 
@@ -29,6 +30,7 @@ typedef struct render_request {
     int raw;
     unsigned long threads;
     int quiet; /* --quiet: no progress bar */
+    int preview; /* --preview: the image in the terminal afterwards */
     const char *scene_path; /* SCENE argument, or NULL */
     rayo_scene_file file;   /* what it holds, once loaded */
     int width_given, height_given, fov_given, origin_given;
@@ -104,6 +106,11 @@ static void print_help(void)
         "terminal's\n"
         "                         stderr for renders longer than a "
         "second)\n"
+        "      --preview          then show the image in the terminal, "
+        "as 'rayo view'\n"
+        "                         does: on stdout, or on stderr when the "
+        "image itself\n"
+        "                         goes to stdout\n"
         "  -h, --help             this help\n"
         "  -V, --version          the version\n\n"
         "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
@@ -126,6 +133,7 @@ static int parse_request(int argc, char **argv, render_request *req)
         {"raw", no_argument, NULL, 'r'},
         {"threads", required_argument, NULL, 'j'},
         {"quiet", no_argument, NULL, 'q'},
+        {"preview", no_argument, NULL, 'P'},
         {"shade", required_argument, NULL, 'S'},
         {"samples", required_argument, NULL, 'N'},
         {"depth", required_argument, NULL, 'D'},
@@ -214,6 +222,9 @@ static int parse_request(int argc, char **argv, render_request *req)
             break;
         case 'q':
             req->quiet = 1;
+            break;
+        case 'P':
+            req->preview = 1;
             break;
         case 'h':
             print_help();
@@ -385,7 +396,7 @@ static rayo_status render_to(rayo_output *out, const rayo_camera *camera,
                              const rayo_scene *scene,
                              const rayo_render_options *options,
                              const rayo_write_options *write_options,
-                             rayo_error *err)
+                             cli_preview *preview, rayo_error *err)
 {
     rayo_image_info info = rayo_render_image_info(camera, options);
     rayo_writer *writer;
@@ -393,7 +404,11 @@ static rayo_status render_to(rayo_output *out, const rayo_camera *camera,
         rayo_writer_open(&writer, out, &info, write_options, err);
     if (status != RAYO_OK)
         return status;
-    status = rayo_render(camera, scene, options, write_rows, writer, err);
+    if (preview != NULL) /* rows pass through the preview's copy */
+        cli_preview_forward(preview, write_rows, writer);
+    status = rayo_render(camera, scene, options,
+                         preview ? cli_preview_rows : write_rows,
+                         preview ? (void *)preview : (void *)writer, err);
     if (status != RAYO_OK) {
         rayo_writer_discard(writer);
         return status;
@@ -430,6 +445,7 @@ int cli_render(int argc, char **argv)
     rayo_output *out = NULL;
     rayo_error err;
     cli_progress progress;
+    cli_preview *preview = NULL;
     int exit_status;
 
     if (req == NULL)
@@ -467,14 +483,31 @@ int cli_render(int argc, char **argv)
     options.progress_context = &progress;
     catch_interrupts();
 
-    if (rayo_output_open(&out, req->output, &err) == RAYO_OK) {
+    if (req->preview) {
+        rayo_image_info info = rayo_render_image_info(&camera, &options);
+        cli_preview_create(&preview, &info, &err);
+    }
+    if (err.status == RAYO_OK &&
+        rayo_output_open(&out, req->output, &err) == RAYO_OK) {
         if (render_to(out, &camera, scene, &options, &write_options,
-                      &err) == RAYO_OK)
+                      preview, &err) == RAYO_OK)
             rayo_output_commit(out, &err);
         else
             rayo_output_abort(out);
     }
     cli_progress_finish(&progress);
+    if (preview != NULL && err.status == RAYO_OK && interrupted_by == 0) {
+        /* The image on stdout keeps stdout to itself. */
+        exit_status = cli_preview_print(
+            preview, strcmp(req->output, "-") == 0 ? stderr : stdout);
+        if (exit_status != CLI_EXIT_OK) {
+            cli_preview_free(preview);
+            rayo_scene_free(scene);
+            free(req);
+            return exit_status;
+        }
+    }
+    cli_preview_free(preview);
     rayo_scene_free(scene);
     free(req);
     if (interrupted_by != 0)

@@ -69,6 +69,24 @@ rayo view - --cols 40 <"$D" >"$TMP/stdin"
 cmp -s "$TMP/stdin" "$TMP/out"
 ok $? "'-' reads standard input"
 
+# rayo render --preview: the same picture as rayo view of the file;
+# beside a file on stdout, beside an image on stdout on stderr.
+COLUMNS=40 rayo render --preview -o "$TMP/p.pbm" >"$TMP/pv" 2>"$TMP/pverr"
+cmp -s "$TMP/pv" "$TMP/out"
+ok $? "render --preview -o FILE: the picture on stdout, as view draws the file"
+is "$(wc -c <"$TMP/pverr" | tr -d ' ')" 0 "  nothing on stderr"
+cmp -s "$TMP/p.pbm" "$D"
+ok $? "  and the file is the usual image"
+COLUMNS=40 rayo render --preview >"$TMP/p2.pbm" 2>"$TMP/p2err"
+cmp -s "$TMP/p2.pbm" "$D"
+ok $? "render --preview to stdout: stdout holds only the image"
+cmp -s "$TMP/p2err" "$TMP/out"
+ok $? "  and the picture goes to stderr"
+COLUMNS=30 rayo render --shade course-gray --preview -o "$TMP/g.pgm" >"$TMP/gv"
+rayo view --cols 30 "$TMP/g.pgm" >"$TMP/gv2"
+cmp -s "$TMP/gv" "$TMP/gv2"
+ok $? "a shaded (gray) render previews as view shows its file"
+
 expect_usage_error "no file" "expected one FILE" view
 expect_usage_error "zero columns" "--cols" view --cols 0 "$D"
 expect_usage_error "missing file" "nope\.pbm" view "$TMP/nope.pbm"
