@@ -24,6 +24,19 @@ rayo() {
     fi
 }
 
+# rayo_start ARGS...: the same, in the background, so that a test can
+# signal it: its process id (valgrind's, which is rayo's) is $rayo_pid.
+rayo_start() {
+    if [ "${RAYO_VALGRIND:-0}" = 1 ]; then
+        valgrind -q --error-exitcode=99 --leak-check=full \
+            --show-leak-kinds=definite,indirect,possible \
+            --errors-for-leak-kinds=definite,indirect,possible "$RAYO" "$@" &
+    else
+        "$RAYO" "$@" &
+    fi
+    rayo_pid=$!
+}
+
 ok() { # ok CONDITION-STATUS NAME
     tap_n=$((tap_n + 1))
     if [ "$1" -eq 0 ]; then
