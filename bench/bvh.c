@@ -33,8 +33,10 @@ static rayo_scene *bvh_scene(bvh_layout layout, size_t count, int prepare,
 {
     rayo_scene *scene;
     rayo_error err;
-    rayo_light sun = {RAYO_LIGHT_DIRECTIONAL, {0.4, 1.0, -0.5}, {0.7, 0.7, 0.7}};
-    rayo_light lamp = {RAYO_LIGHT_POINT, {-10.0, 20.0, 20.0}, {0.5, 0.5, 0.4}};
+    rayo_light sun = {RAYO_LIGHT_DIRECTIONAL, {0.4, 1.0, -0.5},
+                      {0.7, 0.7, 0.7}};
+    rayo_light lamp = {RAYO_LIGHT_POINT, {-10.0, 20.0, 20.0},
+                       {0.5, 0.5, 0.4}};
     rayo_status status;
     double start;
     if (rayo_scene_create(&scene, &err) != RAYO_OK)

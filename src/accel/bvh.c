@@ -317,11 +317,13 @@ void rayo_bvh_free(rayo_bvh *bvh)
     free(bvh);
 }
 
-/* A ray with what every box test needs precomputed: for each axis, the
- * corner whose slab plane the ray meets first (near) and last. */
+/* A ray with what every box test needs precomputed: the reciprocal
+ * direction, and for each axis where in a node's bounds (as 6 floats:
+ * low x y z, high x y z) the slab plane the ray meets first (near) and
+ * last (far) lies. */
 typedef struct box_ray {
     double origin[3], inv[3];
-    int near[3];
+    int near[3], far[3];
 } box_ray;
 
 static void box_ray_init(box_ray *r, const rayo_ray *ray)
@@ -335,29 +337,43 @@ static void box_ray_init(box_ray *r, const rayo_ray *ray)
     r->origin[1] = ray->origin.y;
     r->origin[2] = ray->origin.z;
     for (a = 0; a < 3; a++) {
+        int negative = signbit(d[a]) != 0;
         r->inv[a] = 1.0 / d[a];
-        r->near[a] = signbit(d[a]) != 0;
+        r->near[a] = 3 * negative + a;
+        r->far[a] = 3 * (1 - negative) + a;
     }
 }
 
-/* Where the ray enters the node's box within [t_min, t_max], or
- * INFINITY when it misses.  A NaN slab (0 * infinity) narrows nothing. */
-static double box_entry(const bvh_node *n, const box_ray *r, double t_min,
-                        double t_max)
+/* One slab: narrows [*tn, *tf].  A NaN (0 * infinity: the ray parallel
+ * to the slab, starting on its plane) narrows nothing. */
+static inline void slab(const float *bounds, const box_ray *r, int a,
+                        double *tn, double *tf)
 {
+    double t0 = ((double)bounds[r->near[a]] - r->origin[a]) * r->inv[a];
+    double t1 = ((double)bounds[r->far[a]] - r->origin[a]) * r->inv[a];
+    if (t0 > *tn)
+        *tn = t0;
+    if (t1 < *tf)
+        *tf = t1;
+}
+
+/* Where the ray enters the node's box within [t_min, t_max], or
+ * INFINITY when it misses. */
+static inline double box_entry(const bvh_node *n, const box_ray *r,
+                               double t_min, double t_max)
+{
+    const float *bounds = &n->bounds[0][0];
     double tn = t_min, tf = t_max;
-    int a;
-    for (a = 0; a < 3; a++) {
-        double t0 =
-            ((double)n->bounds[r->near[a]][a] - r->origin[a]) * r->inv[a];
-        double t1 =
-            ((double)n->bounds[1 - r->near[a]][a] - r->origin[a]) * r->inv[a];
-        if (t0 > tn)
-            tn = t0;
-        if (t1 < tf)
-            tf = t1;
-    }
+    slab(bounds, r, 0, &tn, &tf);
+    slab(bounds, r, 1, &tn, &tf);
+    slab(bounds, r, 2, &tn, &tf);
     return tn <= tf ? tn : INFINITY;
+}
+
+/* The smaller of two distances (fmin, without a library call). */
+static inline double closer(double a, double b)
+{
+    return a < b ? a : b;
 }
 
 typedef struct stack_entry {
@@ -396,7 +412,7 @@ void rayo_bvh_nearest(const rayo_bvh *bvh, const rayo_ray *ray, double t_min,
         return;
     box_ray_init(&r, ray);
     cost->node_tests++;
-    if (box_entry(&bvh->nodes[0], &r, t_min, fmin(t_max, *best_t)) ==
+    if (box_entry(&bvh->nodes[0], &r, t_min, closer(*best_t, t_max)) ==
         INFINITY)
         return;
     for (;;) {
@@ -405,7 +421,7 @@ void rayo_bvh_nearest(const rayo_bvh *bvh, const rayo_ray *ray, double t_min,
             test_leaf(bvh, n, ray, t_min, t_max, test, context, best_t,
                       best_id, cost);
         } else {
-            double limit = fmin(t_max, *best_t);
+            double limit = closer(*best_t, t_max);
             double tl = box_entry(&bvh->nodes[n->first], &r, t_min, limit);
             double tr =
                 box_entry(&bvh->nodes[n->first + 1], &r, t_min, limit);

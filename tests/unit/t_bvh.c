@@ -127,9 +127,10 @@ static rayo_vec3 near_object(const rayo_scene *s, size_t k, rayo_lcg *g)
     } else {
         const rayo_triangle *tr = &s->triangles[k - s->sphere_count].shape;
         double u = rayo_lcg_next(g), v = rayo_lcg_next(g) * (1.1 - u);
-        return rayo_vec3_add(
-            tr->a, rayo_vec3_add(rayo_vec3_scale(rayo_vec3_sub(tr->b, tr->a), u),
-                                 rayo_vec3_scale(rayo_vec3_sub(tr->c, tr->a), v)));
+        rayo_vec3 e1 = rayo_vec3_sub(tr->b, tr->a);
+        rayo_vec3 e2 = rayo_vec3_sub(tr->c, tr->a);
+        return rayo_vec3_add(tr->a, rayo_vec3_add(rayo_vec3_scale(e1, u),
+                                                  rayo_vec3_scale(e2, v)));
     }
 }
 

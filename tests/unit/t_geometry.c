@@ -34,7 +34,8 @@ static void test_plane(void)
     is_double(rayo_plane_intersect(&p, &r, 0, INFINITY), 5.0, 0,
               "plane z=5, ray along z: t = 5");
     n = rayo_plane_facing_normal(&p, &r);
-    ok(n.x == 0 && n.y == 0 && n.z == -1, "plane normal turned to face the ray");
+    ok(n.x == 0 && n.y == 0 && n.z == -1,
+       "plane normal turned to face the ray");
     r = ray_make(0, 0, 10, 0, 0, -1);
     n = rayo_plane_facing_normal(&p, &r);
     ok(n.z == 1, "from the other side the normal is kept");
