@@ -83,6 +83,15 @@ void bench_target(bench_table *table, const char *label, double value,
     t->at_most = at_most;
 }
 
+double bench_value(const bench_table *table, const char *key)
+{
+    size_t i;
+    for (i = 0; i < table->figure_count; i++)
+        if (strcmp(table->figures[i].key, key) == 0)
+            return table->figures[i].value;
+    return -1;
+}
+
 int bench_repeats(const bench_table *table)
 {
     return table->repeats;

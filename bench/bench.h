@@ -33,6 +33,9 @@ void bench_add(bench_table *table, const char *key, const char *label,
 void bench_target(bench_table *table, const char *label, double value,
                   double limit, int at_most);
 
+/* The value of the figure with this key; -1 when there is none. */
+double bench_value(const bench_table *table, const char *key);
+
 /* The number of runs each figure takes the best of. */
 int bench_repeats(const bench_table *table);
 

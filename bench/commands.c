@@ -2,8 +2,13 @@
  * commands.c - benchmark rows that are shell commands, read from
  * bench/commands.tsv, so a row can be added without writing C.
  *
- * Each line is KEY<TAB>LABEL<TAB>COMMAND, or "setup<TAB>COMMAND" (run
- * once, untimed, before the rows that follow it); '#' starts a comment.
+ * Lines ('#' starts a comment):
+ *   KEY<TAB>LABEL<TAB>COMMAND[<TAB>RUNS]   a row: best of RUNS runs
+ *                                          (default: 3 x --repeat)
+ *   setup<TAB>COMMAND                      run once, untimed
+ *   target<TAB>LABEL<TAB>KEY_A<TAB>KEY_B<TAB><=|>=<TAB>LIMIT
+ *                                          the ratio of two rows' times
+ *                                          (KEY_A_s / KEY_B_s) as a target
  * Commands run under /bin/sh with $RAYO (the command under test),
  * $RAYO_BUILD (its build folder), $RAYO_SOURCE (the repository) and
  * $BENCH_TMP (a scratch folder, removed afterwards) in the environment,
@@ -19,14 +24,14 @@
 #define LINE_MAX_BYTES 4096
 
 static void run_row(bench_table *table, const char *key, const char *label,
-                    const char *command)
+                    const char *command, int runs)
 {
     char key_time[LINE_MAX_BYTES + 8], key_rss[LINE_MAX_BYTES + 8];
     char label_rss[LINE_MAX_BYTES + 16];
     double best = -1;
     long rss_max = -1;
     int r;
-    for (r = 0; r < bench_repeats(table); r++) {
+    for (r = 0; r < runs; r++) {
         long rss = -1;
         double seconds = bench_run_child(NULL, command, &rss);
         if (seconds < 0) {
@@ -49,14 +54,16 @@ static void run_row(bench_table *table, const char *key, const char *label,
     bench_add(table, key_rss, label_rss, (double)rss_max / 1024.0, "MiB");
 }
 
-/* Splits line at tabs into at most 3 fields; returns how many. */
-static int split(char *line, char *fields[3])
+#define MAX_FIELDS 6
+
+/* Splits line at tabs into at most MAX_FIELDS fields; returns how many. */
+static int split(char *line, char *fields[MAX_FIELDS])
 {
     int n = 0;
     char *p = line;
     line[strcspn(line, "\r\n")] = '\0';
-    while (n < 3) {
-        char *tab = n < 2 ? strchr(p, '\t') : NULL;
+    while (n < MAX_FIELDS) {
+        char *tab = n < MAX_FIELDS - 1 ? strchr(p, '\t') : NULL;
         fields[n++] = p;
         if (tab == NULL)
             break;
@@ -64,6 +71,19 @@ static int split(char *line, char *fields[3])
         p = tab + 1;
     }
     return n;
+}
+
+/* target LABEL KEY_A KEY_B <=|>= LIMIT: KEY_A_s / KEY_B_s. */
+static void ratio_target(bench_table *table, char *fields[MAX_FIELDS])
+{
+    char key_a[LINE_MAX_BYTES + 8], key_b[LINE_MAX_BYTES + 8];
+    double a, b;
+    snprintf(key_a, sizeof key_a, "%s_s", fields[2]);
+    snprintf(key_b, sizeof key_b, "%s_s", fields[3]);
+    a = bench_value(table, key_a);
+    b = bench_value(table, key_b);
+    bench_target(table, fields[1], a > 0 && b > 0 ? a / b : -1,
+                 atof(fields[5]), strcmp(fields[4], "<=") == 0);
 }
 
 void bench_commands(bench_table *table, const char *rows_file)
@@ -75,7 +95,7 @@ void bench_commands(bench_table *table, const char *rows_file)
         return;
     }
     while (fgets(line, sizeof line, rows) != NULL) {
-        char *fields[3];
+        char *fields[MAX_FIELDS];
         int n;
         if (line[0] == '#' || line[0] == '\n')
             continue;
@@ -84,8 +104,12 @@ void bench_commands(bench_table *table, const char *rows_file)
             long rss;
             if (bench_run_child(NULL, fields[1], &rss) < 0)
                 bench_add(table, "setup_error", fields[1], -1, "failed");
-        } else if (n == 3) {
-            run_row(table, fields[0], fields[1], fields[2]);
+        } else if (n == 6 && strcmp(fields[0], "target") == 0) {
+            ratio_target(table, fields);
+        } else if (n == 3 || n == 4) {
+            int runs = n == 4 ? atoi(fields[3]) : 3 * bench_repeats(table);
+            run_row(table, fields[0], fields[1], fields[2],
+                    runs > 0 ? runs : 1);
         }
     }
     fclose(rows);

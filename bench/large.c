@@ -5,7 +5,11 @@
  *
  * Output goes to /dev/null (through rayo_output, as `-o /dev/null`
  * would), so the figures measure rendering, formatting and compression,
- * not the disk.  "libpng alone" is the rows already rendered in memory
+ * not the disk.  With the span fast path a hit-mode frame of spheres is
+ * bound by memory and output, not arithmetic, and the renderer keeps
+ * such a frame on one thread; so thread scaling is also measured on the
+ * per-pixel loop, by adding to the scene a plane behind the camera (it
+ * changes no pixel, but spans only take sphere-only scenes).  "libpng alone" is the rows already rendered in memory
  * and handed to libpng with the settings png_write.c uses; keep the two in
  * step when either changes.
  */
@@ -19,18 +23,26 @@
 #define LARGE_WIDTH 16384u
 #define LARGE_HEIGHT 12288u
 #define RSS_SIDE "16384"
+#define LOOP_WIDTH 4096u /* the per-pixel loop's frame */
+#define LOOP_HEIGHT 3072u
 
 typedef struct large_setup {
     rayo_camera camera;
     rayo_scene *scene;
 } large_setup;
 
-static int large_init(large_setup *setup, uint32_t width, uint32_t height)
+/* The seed's sphere; with plane_behind, also the plane z = -1000. */
+static int large_init(large_setup *setup, uint32_t width, uint32_t height,
+                      int plane_behind)
 {
     rayo_error err;
     if (rayo_camera_init(&setup->camera, width, height, RAYO_SEED_FOV,
                          rayo_vec3_make(0, 0, 0), &err) != RAYO_OK ||
         rayo_scene_create(&setup->scene, &err) != RAYO_OK)
+        return -1;
+    if (plane_behind &&
+        rayo_scene_add_plane(setup->scene, rayo_vec3_make(0, 0, -1000),
+                             rayo_vec3_make(0, 0, 1), 0, &err) != RAYO_OK)
         return -1;
     return rayo_scene_add_sphere(setup->scene,
                                  rayo_vec3_make(RAYO_SEED_CENTER_X,
@@ -186,15 +198,42 @@ static void peak_memory(bench_table *table, const char *rayo)
     }
 }
 
+/* Thread scaling where rendering is arithmetic: the per-pixel loop. */
+static void loop_scaling(bench_table *table)
+{
+    large_setup setup;
+    unsigned all = rayo_cpu_count();
+    double pixels = (double)LOOP_WIDTH * LOOP_HEIGHT, one = -1, many = -1;
+    int r;
+    if (large_init(&setup, LOOP_WIDTH, LOOP_HEIGHT, 1) != 0) {
+        bench_add(table, "loop_error", "per-pixel setup failed", -1, "");
+        return;
+    }
+    for (r = 0; r < bench_repeats(table); r++) {
+        one = best_of(one, render_to_null(&setup, RAYO_FORMAT_PBM, 1));
+        many = best_of(many, render_to_null(&setup, RAYO_FORMAT_PBM, all));
+    }
+    rayo_scene_free(setup.scene);
+    bench_add(table, "loop_1thread_gpps",
+              "4096x3072 P4, per-pixel loop, 1 thread", pixels / one * 1e-9,
+              "Gpixel/s");
+    bench_add(table, "loop_all_gpps",
+              "4096x3072 P4, per-pixel loop, all threads",
+              pixels / many * 1e-9, "Gpixel/s");
+    bench_target(table, "per-pixel loop speed-up, 1 to all threads",
+                 one / many, 1.8, 0);
+}
+
 void bench_large(bench_table *table, const char *rayo)
 {
     large_setup setup;
-    if (large_init(&setup, LARGE_WIDTH, LARGE_HEIGHT) != 0) {
+    if (large_init(&setup, LARGE_WIDTH, LARGE_HEIGHT, 0) != 0) {
         bench_add(table, "large_error", "large frame setup failed", -1, "");
         return;
     }
     throughput(table, &setup);
     rayo_scene_free(setup.scene);
+    loop_scaling(table);
     if (rayo != NULL)
         peak_memory(table, rayo);
 }

@@ -141,12 +141,15 @@ static int surely_outside(const row_frame *f, const sphere_row *s,
     return !front || g < s->surely_missed;
 }
 
-/* 1 when the exact test is proven to hit pixel i. */
-static int surely_inside(const row_frame *f, const sphere_row *s, int64_t i)
+/* 1: the exact test surely hits pixel i; -1: i is surely outside M;
+ * 0: only the exact test can tell. */
+static int classify(const row_frame *f, const sphere_row *s, int64_t i)
 {
     int front;
     double g = estimate(f, s, i, &front);
-    return front && g > s->surely_hit;
+    if (!front || g < s->surely_missed)
+        return -1;
+    return g > s->surely_hit ? 1 : 0;
 }
 
 /*
@@ -270,24 +273,30 @@ static int64_t walk_out(const row_frame *f, const sphere_row *s,
 }
 
 /*
- * Pixels strictly between left and right may hit: trace inwards from both
- * ends until a pixel surely hits, and fill between the two found.
+ * Pixels strictly between left and right may hit: go inwards from both
+ * ends until a pixel surely hits, and fill between the two found.  On the
+ * way, pixels proven outside M are misses; the rest get the exact test.
  */
 static void resolve_between(const row_frame *f, const sphere_row *s,
                             int64_t left, int64_t right)
 {
     int64_t i, j;
+    int verdict = 0;
     for (i = left + 1; i < right; i++) {
-        if (surely_inside(f, s, i))
+        verdict = classify(f, s, i);
+        if (verdict > 0)
             break;
-        exact_test(f, s->sphere, i);
+        if (verdict == 0)
+            exact_test(f, s->sphere, i);
     }
     if (i >= right)
         return;
     for (j = right - 1; j > i; j--) {
-        if (surely_inside(f, s, j))
+        verdict = classify(f, s, j);
+        if (verdict > 0)
             break;
-        exact_test(f, s->sphere, j);
+        if (verdict == 0)
+            exact_test(f, s->sphere, j);
     }
     fill_span(f->out, i, j);
 }
