@@ -14,6 +14,7 @@
  * step when either changes.
  */
 #include <png.h>
+#include <zlib.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -115,6 +116,7 @@ static double libpng_alone(const rayo_image *image)
         return -1;
     }
     png_init_io(png, null);
+    png_set_compression_strategy(png, Z_RLE); /* as png_write.c */
     png_set_IHDR(png, info, image->info.width, image->info.height, 1,
                  PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
