@@ -66,7 +66,7 @@ void bench_add(bench_table *table, const char *key, const char *label,
     copy(f->label, sizeof f->label, label);
     copy(f->unit, sizeof f->unit, unit);
     f->value = value;
-    printf("  %-44s %12.3f %s\n", label, value, unit);
+    printf("  %-52s %12.3f %s\n", label, value, unit);
     fflush(stdout);
 }
 
@@ -109,7 +109,7 @@ static void print_targets(const bench_table *table)
     printf("\ntargets (ratios from the figures above):\n");
     for (i = 0; i < table->target_count; i++) {
         const target *t = &table->targets[i];
-        printf("  %-44s %9.3f  %s %-7g %s\n", t->label, t->value,
+        printf("  %-52s %9.3f  %s %-7g %s\n", t->label, t->value,
                t->at_most ? "<=" : ">=", t->limit,
                target_met(t) ? "pass" : "FAIL");
     }
