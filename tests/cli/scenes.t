@@ -24,6 +24,17 @@ rayo -W 80 -H 60 --origin 0,0,-1 >"$TMP/b.pbm"
 cmp -s "$TMP/a.pbm" "$TMP/b.pbm"
 ok $? "--origin overrides the scene's origin"
 
+# A camera aimed at a point keeps looking at it from an overriding origin.
+printf 'shade hit\ncamera size 80 60 origin 0 0 -5 look-at 0.5 0.75 1.9\nsphere 0.5 0.75 1.9 0.8\n' >"$TMP/far.scene"
+printf 'shade hit\ncamera size 80 60 origin 1 2 -3 look-at 0.5 0.75 1.9\nsphere 0.5 0.75 1.9 0.8\n' >"$TMP/near.scene"
+rayo render "$TMP/far.scene" --origin 1,2,-3 >"$TMP/a.pbm"
+rayo render "$TMP/near.scene" >"$TMP/b.pbm"
+cmp -s "$TMP/a.pbm" "$TMP/b.pbm"
+ok $? "--origin on an aimed camera keeps its look-at point"
+rayo render "$TMP/far.scene" >"$TMP/c.pbm"
+cmp -s "$TMP/a.pbm" "$TMP/c.pbm"
+ok "$([ $? -ne 0 ]; echo $?)" "... and the picture does change"
+
 # --shade overrides the scene's mode: scene 2 in hit mode is its spheres
 # given on the command line.
 rayo render "$EX/ej2.scene" --shade hit >"$TMP/a.pbm"
