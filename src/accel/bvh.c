@@ -1,9 +1,10 @@
 /*
  * bvh.c - building and walking the bounding volume hierarchy (bvh.h).
  *
- * Build: top-down.  A node's primitives are sorted into BINS bins by
- * their box centres along each axis in turn, and the split between bins
- * that minimises the surface area heuristic
+ * Build: top-down.  A node's primitives are sorted into BINS bins (as
+ * many as it has primitives, when fewer) by their box centres along each
+ * axis in turn, and the split between bins that minimises the surface
+ * area heuristic
  *     cost = 1 + (A_left N_left + A_right N_right) / A_node
  * is taken when it beats making a leaf (cost N).  Nodes whose centres all
  * coincide, and nodes deeper than SAH_DEPTH_LIMIT, are cut in two halves
@@ -67,14 +68,14 @@ static void box_empty(rayo_box *b)
     }
 }
 
+/* Written as selections so that compilers make them min and max
+ * instructions; a NaN in other changes nothing. */
 static void box_grow(rayo_box *b, const rayo_box *other)
 {
     int a;
     for (a = 0; a < 3; a++) {
-        if (other->lo[a] < b->lo[a])
-            b->lo[a] = other->lo[a];
-        if (other->hi[a] > b->hi[a])
-            b->hi[a] = other->hi[a];
+        b->lo[a] = other->lo[a] < b->lo[a] ? other->lo[a] : b->lo[a];
+        b->hi[a] = other->hi[a] > b->hi[a] ? other->hi[a] : b->hi[a];
     }
 }
 
@@ -119,43 +120,62 @@ static float float_above(double v)
     return f;
 }
 
-/* The bin of a centre c, for centres spanning [lo, lo + extent]. */
-static size_t bin_of(double c, double lo, double extent)
+/* How one node's centres are sorted into bins along one axis. */
+typedef struct binning {
+    int axis;
+    size_t count;   /* bins: BINS, or fewer for a node of few primitives */
+    double lo;      /* the lowest centre */
+    double scale;   /* bins per unit of length */
+} binning;
+
+static binning binning_make(int axis, double lo, double extent,
+                            size_t primitives)
 {
-    double f = (c - lo) * (double)BINS / extent;
+    binning g;
+    g.axis = axis;
+    g.count = primitives < BINS ? (primitives < 2 ? 2 : primitives) : BINS;
+    g.lo = lo;
+    g.scale = (double)g.count / extent;
+    return g;
+}
+
+/* The bin of a box, by its centre. */
+static size_t bin_of(const binning *g, const rayo_box *box)
+{
+    double f = (centre(box, g->axis) - g->lo) * g->scale;
     if (!(f >= 0.0))
         return 0;
-    if (f >= (double)(BINS - 1))
-        return BINS - 1;
+    if (f >= (double)(g->count - 1))
+        return g->count - 1;
     return (size_t)f;
 }
 
 typedef struct split {
-    int axis;        /* -1: no useful split found */
+    binning along;   /* along.axis < 0: no useful split found */
     size_t bin;      /* primitives in bins < bin go left */
     double cost;
 } split;
 
-static void try_axis(const builder *b, size_t begin, size_t end, int axis,
-                     double lo, double extent, double area, split *best)
+static void try_axis(const builder *b, size_t begin, size_t end,
+                     const binning *g, double area, split *best)
 {
     bin bins[BINS];
     rayo_box right_box[BINS];
     size_t right_count[BINS];
     rayo_box acc;
     size_t i, n = 0;
-    for (i = 0; i < BINS; i++) {
+    for (i = 0; i < g->count; i++) {
         box_empty(&bins[i].box);
         bins[i].count = 0;
     }
     for (i = begin; i < end; i++) {
         const rayo_box *box = &b->boxes[b->order[i]];
-        size_t k = bin_of(centre(box, axis), lo, extent);
+        size_t k = bin_of(g, box);
         box_grow(&bins[k].box, box);
         bins[k].count++;
     }
     box_empty(&acc);
-    for (i = BINS; i-- > 1;) {
+    for (i = g->count; i-- > 1;) {
         box_grow(&acc, &bins[i].box);
         n += bins[i].count;
         right_box[i] = acc;
@@ -163,7 +183,7 @@ static void try_axis(const builder *b, size_t begin, size_t end, int axis,
     }
     box_empty(&acc);
     n = 0;
-    for (i = 1; i < BINS; i++) {
+    for (i = 1; i < g->count; i++) {
         double cost;
         box_grow(&acc, &bins[i - 1].box);
         n += bins[i - 1].count;
@@ -174,20 +194,19 @@ static void try_axis(const builder *b, size_t begin, size_t end, int axis,
                          area;
         if (cost < best->cost) {
             best->cost = cost;
-            best->axis = axis;
+            best->along = *g;
             best->bin = i;
         }
     }
 }
 
 /* Moves the primitives going left to the front; returns the boundary. */
-static size_t partition(builder *b, size_t begin, size_t end, int axis,
-                        size_t split_bin, double lo, double extent)
+static size_t partition(builder *b, size_t begin, size_t end,
+                        const split *s)
 {
     size_t i = begin, j = end;
     while (i < j) {
-        const rayo_box *box = &b->boxes[b->order[i]];
-        if (bin_of(centre(box, axis), lo, extent) < split_bin) {
+        if (bin_of(&s->along, &b->boxes[b->order[i]]) < s->bin) {
             i++;
         } else {
             uint32_t tmp = b->order[i];
@@ -230,26 +249,25 @@ static void build_node(builder *b, size_t index, size_t begin, size_t end,
         make_leaf(node, begin, end);
         return;
     }
-    best.axis = -1;
+    best.along.axis = -1;
     best.bin = 0;
     best.cost = INFINITY;
     if (depth < SAH_DEPTH_LIMIT) {
         double area = box_area(&bounds);
         for (a = 0; a < 3; a++) {
             double extent = centres.hi[a] - centres.lo[a];
-            if (extent > 0.0 && isfinite(extent) && area > 0.0)
-                try_axis(b, begin, end, a, centres.lo[a], extent, area,
-                         &best);
+            if (extent > 0.0 && isfinite(extent) && area > 0.0) {
+                binning g = binning_make(a, centres.lo[a], extent, count);
+                try_axis(b, begin, end, &g, area, &best);
+            }
         }
     }
     if (count <= MAX_LEAF && !(best.cost < (double)count)) {
         make_leaf(node, begin, end);
         return;
     }
-    if (best.axis >= 0) {
-        size_t m = partition(b, begin, end, best.axis, best.bin,
-                             centres.lo[best.axis],
-                             centres.hi[best.axis] - centres.lo[best.axis]);
+    if (best.along.axis >= 0) {
+        size_t m = partition(b, begin, end, &best);
         if (m > begin && m < end)
             mid = m;
     }
