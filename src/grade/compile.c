@@ -67,10 +67,6 @@ static rayo_status explain_failure(grade_context *ctx, const char *errors,
     if (outcome->ending == GRADE_TIMED_OUT)
         status = grade_fail(item, err, "the compiler did not finish in "
                                        "%.0f seconds", COMPILE_SECONDS);
-    else if (outcome->ending == GRADE_EXITED && outcome->status == 127 &&
-             errors[0] == '\0')
-        status = grade_fail(item, err, "could not run the compiler '%s' "
-                                       "(set CC or --cc)", ctx->cc[0]);
     else
         status = grade_fail(item, err, "does not compile with the course's "
                                        "flags; the compiler says:");
@@ -100,6 +96,21 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
     grade_outcome outcome;
     rayo_status status = RAYO_ERR_NOMEM;
 
+    {
+        /* Found before forking: a failed exec looks different under
+           debuggers and valgrind. */
+        char *found = grade_which(ctx->cc[0]);
+        if (found == NULL) {
+            free(words);
+            free(out);
+            free(errpath);
+            return grade_fail(item, err, "could not run the compiler '%s': "
+                                         "not found or not executable (set "
+                                         "CC or --cc)",
+                              ctx->cc[0]);
+        }
+        free(found);
+    }
     ctx->program = grade_path_join(ctx->dir, "programa");
     if (words == NULL || out == NULL || errpath == NULL ||
         ctx->program == NULL) {
