@@ -14,7 +14,6 @@
 #include <string.h>
 
 #include "cli.h"
-#include "rayo/grade.h"
 
 typedef struct grade_request {
     rayo_grade_options options;

@@ -36,4 +36,7 @@
 #include "rayo/compare.h"
 #include "rayo/preview.h"
 
+#include "rayo/grade.h"
+#include "rayo/pbm_check.h"
+
 #endif
