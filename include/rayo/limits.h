@@ -14,6 +14,14 @@
 /* Largest number of pixels in one image (2^30). */
 #define RAYO_MAX_PIXELS (1ul << 30)
 
+/*
+ * Largest image file the readers read, in bytes (8 GiB: above the raw
+ * raster of the largest image, 2^30 pixels of 16-bit RGB).  A regular
+ * file is refused before a byte is read; a pipe once it has delivered
+ * more, so endless input (trailing bytes, comments) cannot hang rayo.
+ */
+#define RAYO_MAX_INPUT_BYTES (1ull << 33)
+
 /* Largest number of objects in one scene. */
 #define RAYO_MAX_OBJECTS (1ul << 24)
 

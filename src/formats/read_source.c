@@ -10,6 +10,8 @@
 
 #include "read_source.h"
 
+#include "rayo/limits.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -34,6 +36,16 @@ void rayo_source_open_memory(rayo_source *src, const void *data, size_t size,
     src->start = data;
     src->next = src->start;
     src->end = src->start + size;
+    src->limit = RAYO_MAX_INPUT_BYTES;
+}
+
+static rayo_status over_limit(const rayo_source *src, rayo_error *err)
+{
+    return rayo_error_set(err, RAYO_ERR_LIMIT,
+                          "%s: byte %llu: found more data; expected an input "
+                          "of at most %llu bytes",
+                          src->name, (unsigned long long)src->limit,
+                          (unsigned long long)src->limit);
 }
 
 static rayo_status open_descriptor(rayo_source *src, const char *path,
@@ -59,6 +71,7 @@ rayo_status rayo_source_open_file(rayo_source *src, const char *path,
     rayo_status status;
     memset(src, 0, sizeof *src);
     src->name = path;
+    src->limit = RAYO_MAX_INPUT_BYTES;
     status = open_descriptor(src, path, err);
     if (status != RAYO_OK)
         return status;
@@ -72,6 +85,14 @@ rayo_status rayo_source_open_file(rayo_source *src, const char *path,
         if (here >= 0 && here <= st.st_size) {
             src->size_known = 1;
             src->size = (uint64_t)(st.st_size - here);
+        }
+        if (src->size_known && src->size > src->limit) {
+            rayo_source_close(src);
+            return rayo_error_set(err, RAYO_ERR_LIMIT,
+                                  "%s: the file is %llu bytes; expected at "
+                                  "most %llu",
+                                  src->name, (unsigned long long)src->size,
+                                  (unsigned long long)src->limit);
         }
     }
     src->buffer = malloc(RAYO_SOURCE_BUFFER_SIZE);
@@ -98,6 +119,7 @@ void rayo_source_close(rayo_source *src)
 int rayo_source_refill(rayo_source *src)
 {
     ssize_t n;
+    size_t wanted = RAYO_SOURCE_BUFFER_SIZE;
     if (src->next != src->end)
         return 1;
     if (src->buffer == NULL || src->read_errno != 0)
@@ -106,11 +128,21 @@ int rayo_source_refill(rayo_source *src)
     src->start = src->buffer;
     src->next = src->buffer;
     src->end = src->buffer;
+    /* Up to the limit; at the limit, one byte more tells an input of
+       exactly limit bytes (accepted) from a longer one (refused). */
+    if (src->limit - src->base < wanted)
+        wanted = src->base < src->limit ? (size_t)(src->limit - src->base)
+                                        : 1;
     do
-        n = read(src->fd, src->buffer, RAYO_SOURCE_BUFFER_SIZE);
+        n = read(src->fd, src->buffer, wanted);
     while (n < 0 && errno == EINTR);
     if (n < 0) {
         src->read_errno = errno;
+        return 0;
+    }
+    if (n > 0 && src->base >= src->limit) {
+        src->over_limit = 1;
+        src->read_errno = EFBIG;
         return 0;
     }
     src->end = src->buffer + n;
@@ -146,13 +178,22 @@ void rayo_source_read(rayo_source *src, void *dst, size_t size, size_t *got)
 rayo_status rayo_source_count_rest(rayo_source *src, uint64_t *count,
                                    rayo_error *err)
 {
+    uint64_t remaining;
     *count = 0;
+    /* A regular file's size says how much follows; it need not be read. */
+    if (src->fd >= 0 && rayo_source_remaining(src, &remaining)) {
+        *count = remaining;
+        src->next = src->end;
+        return RAYO_OK;
+    }
     for (;;) {
         if (src->next == src->end && !rayo_source_refill(src))
             break;
         *count += (uint64_t)(src->end - src->next);
         src->next = src->end;
     }
+    if (src->over_limit)
+        return over_limit(src, err);
     if (src->read_errno != 0)
         return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", src->name,
                               strerror(src->read_errno));
@@ -162,6 +203,8 @@ rayo_status rayo_source_count_rest(rayo_source *src, uint64_t *count,
 rayo_status rayo_source_end_error(const rayo_source *src, const char *what,
                                   rayo_error *err)
 {
+    if (src->over_limit)
+        return over_limit(src, err);
     if (src->read_errno != 0)
         return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", src->name,
                               strerror(src->read_errno));

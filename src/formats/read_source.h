@@ -31,6 +31,9 @@ typedef struct rayo_source {
     const unsigned char *next;   /* next unread byte in the window */
     const unsigned char *end;    /* end of the window */
     uint64_t base;               /* offset of start in the stream */
+    uint64_t limit;              /* most bytes read (RAYO_MAX_INPUT_BYTES) */
+    int over_limit;              /* more than limit bytes were offered;
+                                    read_errno is then EFBIG */
 } rayo_source;
 
 /* Reads from memory; nothing is copied, data must outlive the source. */
