@@ -97,8 +97,13 @@ rayo_status cmp_outline_create(cmp_outline **outline, const cmp_mask *ref,
                                rayo_error *err);
 void cmp_outline_free(cmp_outline *outline);
 
-/* Starts again from row 0 (rows must then be asked in increasing order). */
-void cmp_outline_rewind(cmp_outline *outline);
+/* Starts again from row y (rows must then be asked in increasing order). */
+void cmp_outline_rewind(cmp_outline *outline, uint32_t y);
+
+/* Another reader of the same outline, with cursors of its own, for a
+ * thread working on other rows; free it before the outline. */
+rayo_status cmp_outline_fork(const cmp_outline *base, cmp_outline **fork,
+                             rayo_error *err);
 
 /* 1 when the reference has both colours (so distances are finite). */
 int cmp_outline_has_edges(const cmp_outline *outline);

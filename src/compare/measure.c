@@ -6,12 +6,18 @@
  *
  * Rows are packed bits, so agreement is counted a byte at a time with
  * XOR, AND and OR; distances are computed only for rows that have
- * mismatches, and only for the colour those mismatches need.  The
- * verdict and the diagnosis are not made here.
+ * mismatches, and only for the colour those mismatches need.  Large
+ * frames are cut into bands of rows measured by one thread each (one per
+ * CPU), each with its own cursors on the outline; the counts are summed
+ * afterwards, so the result does not depend on the number of threads.
+ * The verdict and the diagnosis are not made here.
  */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "rayo/render.h"
 
 #include "compare_impl.h"
 
@@ -159,31 +165,129 @@ static void measure_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
                                r->d2, c);
 }
 
+/* One band of rows, measured by one thread. */
+typedef struct band {
+    const cmp_mask *ref, *image;
+    const cmp_transform *t;
+    cmp_outline *outline;  /* this band's own cursors, or NULL */
+    int exact;
+    double tolerance;
+    uint32_t y0, y1;
+    cmp_counts counts;
+    rayo_status status;
+    rayo_error err;
+} band;
+
+static void *measure_band(void *context)
+{
+    band *b = context;
+    measure_rows r;
+    uint32_t y, w = b->ref->width;
+    memset(&b->counts, 0, sizeof b->counts);
+    b->status = rows_alloc(&r, w, b->outline != NULL, &b->err);
+    if (b->status != RAYO_OK)
+        return NULL;
+    if (b->outline != NULL)
+        cmp_outline_rewind(b->outline, b->y0);
+    for (y = b->y0; y < b->y1; y++) {
+        int all = cmp_transform_row(b->t, b->image, w, b->ref->height, y,
+                                    r.img, r.known);
+        if (all < 0)
+            continue;
+        b->counts.known += all ? w : cmp_popcount(r.known, cmp_row_bytes(w));
+        measure_row(b->ref, y, &r, all, b->outline, b->exact, b->tolerance,
+                    &b->counts);
+    }
+    free(r.img);
+    free(r.d2);
+    return NULL;
+}
+
+static void merge(cmp_counts *into, const cmp_counts *c)
+{
+    into->known += c->known;
+    into->reference_only += c->reference_only;
+    into->image_only += c->image_only;
+    into->both += c->both;
+    into->either += c->either;
+    into->beyond += c->beyond;
+    if (c->max_distance > into->max_distance)
+        into->max_distance = c->max_distance;
+}
+
+/* Threads for a frame: one per CPU, at most MAX_BANDS, and none for
+ * fewer than BAND_MIN_PIXELS each (small images are not worth it). */
+#define MAX_BANDS 8u
+#define BAND_MIN_PIXELS (1u << 20)
+
+static unsigned band_count(const cmp_mask *ref)
+{
+    uint64_t pixels = (uint64_t)ref->width * ref->height;
+    unsigned n = rayo_cpu_count();
+    if (n > MAX_BANDS)
+        n = MAX_BANDS;
+    if (pixels / BAND_MIN_PIXELS < n)
+        n = (unsigned)(pixels / BAND_MIN_PIXELS);
+    if (n > ref->height)
+        n = ref->height;
+    return n ? n : 1;
+}
+
+/* Runs bands 1..n-1 on threads of their own and band 0 here; a band
+ * whose thread cannot start runs here too. */
+static void run_bands(band *bands, unsigned n)
+{
+    pthread_t threads[MAX_BANDS];
+    int started[MAX_BANDS];
+    unsigned i;
+    for (i = 1; i < n; i++)
+        started[i] = pthread_create(&threads[i], NULL, measure_band,
+                                    &bands[i]) == 0;
+    measure_band(&bands[0]);
+    for (i = 1; i < n; i++) {
+        if (started[i])
+            pthread_join(threads[i], NULL);
+        else
+            measure_band(&bands[i]);
+    }
+}
+
 rayo_status cmp_measure(const cmp_mask *ref, const cmp_mask *image,
                         const cmp_transform *t, cmp_outline *outline,
                         int exact, double tolerance, cmp_counts *counts,
                         rayo_error *err)
 {
-    measure_rows r;
-    uint32_t y;
-    rayo_status s = rows_alloc(&r, ref->width, outline != NULL, err);
+    band bands[MAX_BANDS];
+    unsigned n = band_count(ref), i;
+    rayo_status s = RAYO_OK;
     memset(counts, 0, sizeof *counts);
-    counts->max_distance = outline != NULL ? 0 : -1;
-    if (s != RAYO_OK)
-        return s;
-    if (outline != NULL)
-        cmp_outline_rewind(outline);
-    for (y = 0; y < ref->height; y++) {
-        int all = cmp_transform_row(t, image, ref->width, ref->height, y,
-                                    r.img, r.known);
-        if (all < 0)
-            continue;
-        counts->known += all ? ref->width
-                             : cmp_popcount(r.known,
-                                            cmp_row_bytes(ref->width));
-        measure_row(ref, y, &r, all, outline, exact, tolerance, counts);
+    memset(bands, 0, sizeof bands);
+    for (i = 0; i < n; i++) {
+        bands[i].ref = ref;
+        bands[i].image = image;
+        bands[i].t = t;
+        bands[i].exact = exact;
+        bands[i].tolerance = tolerance;
+        bands[i].y0 = (uint32_t)((uint64_t)ref->height * i / n);
+        bands[i].y1 = (uint32_t)((uint64_t)ref->height * (i + 1) / n);
+        if (outline != NULL && s == RAYO_OK)
+            s = i == 0 ? RAYO_OK
+                       : cmp_outline_fork(outline, &bands[i].outline, err);
     }
-    free(r.img);
-    free(r.d2);
-    return RAYO_OK;
+    if (outline != NULL)
+        bands[0].outline = outline;
+    if (s == RAYO_OK)
+        run_bands(bands, n);
+    for (i = 0; i < n; i++) {
+        if (s == RAYO_OK && bands[i].status != RAYO_OK) {
+            s = bands[i].status;
+            if (err != NULL)
+                *err = bands[i].err;
+        }
+        merge(counts, &bands[i].counts);
+        if (i > 0)
+            cmp_outline_free(bands[i].outline);
+    }
+    counts->max_distance = outline != NULL ? counts->max_distance : -1;
+    return s;
 }

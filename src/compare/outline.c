@@ -31,9 +31,9 @@ struct cmp_outline {
     size_t *cursor;        /* first change of column x below the row */
     int64_t *f;            /* squared vertical distances of one row */
     uint32_t *hull;        /* envelope: columns of its parabolas */
-    double *bound;         /* envelope: where each parabola starts */
     uint32_t row;          /* the row the cursors are at */
     int has_black, has_white;
+    int owns_index;        /* start and change are this one's to free */
 };
 
 static rayo_status alloc_array(void **p, size_t count, size_t size,
@@ -120,6 +120,7 @@ rayo_status cmp_outline_create(cmp_outline **outline, const cmp_mask *ref,
     if (o == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "compare: out of memory");
     o->ref = ref;
+    o->owns_index = 1;
     if ((s = alloc_array((void **)&o->start, w + 1, sizeof *o->start,
                          err)) != RAYO_OK ||
         (s = alloc_array((void **)&o->cursor, w, sizeof *o->cursor, err)) !=
@@ -127,15 +128,40 @@ rayo_status cmp_outline_create(cmp_outline **outline, const cmp_mask *ref,
         (s = alloc_array((void **)&o->f, w, sizeof *o->f, err)) != RAYO_OK ||
         (s = alloc_array((void **)&o->hull, w, sizeof *o->hull, err)) !=
             RAYO_OK ||
-        (s = alloc_array((void **)&o->bound, w + 1, sizeof *o->bound,
-                         err)) != RAYO_OK ||
         (s = index_changes(o, err)) != RAYO_OK) {
         cmp_outline_free(o);
         return s;
     }
     find_colours(o);
-    cmp_outline_rewind(o);
+    cmp_outline_rewind(o, 0);
     *outline = o;
+    return RAYO_OK;
+}
+
+rayo_status cmp_outline_fork(const cmp_outline *base, cmp_outline **fork,
+                             rayo_error *err)
+{
+    size_t w = base->ref->width;
+    rayo_status s;
+    cmp_outline *o = calloc(1, sizeof *o);
+    *fork = NULL;
+    if (o == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "compare: out of memory");
+    *o = *base;
+    o->owns_index = 0;
+    o->cursor = NULL;
+    o->f = NULL;
+    o->hull = NULL;
+    if ((s = alloc_array((void **)&o->cursor, w, sizeof *o->cursor, err)) !=
+            RAYO_OK ||
+        (s = alloc_array((void **)&o->f, w, sizeof *o->f, err)) != RAYO_OK ||
+        (s = alloc_array((void **)&o->hull, w, sizeof *o->hull, err)) !=
+            RAYO_OK) {
+        cmp_outline_free(o);
+        return s;
+    }
+    cmp_outline_rewind(o, 0);
+    *fork = o;
     return RAYO_OK;
 }
 
@@ -143,19 +169,31 @@ void cmp_outline_free(cmp_outline *o)
 {
     if (o == NULL)
         return;
-    free(o->start);
-    free(o->change);
+    if (o->owns_index) {
+        free(o->start);
+        free(o->change);
+    }
     free(o->cursor);
     free(o->f);
     free(o->hull);
-    free(o->bound);
     free(o);
 }
 
-void cmp_outline_rewind(cmp_outline *o)
+void cmp_outline_rewind(cmp_outline *o, uint32_t y)
 {
-    memcpy(o->cursor, o->start, (size_t)o->ref->width * sizeof *o->cursor);
-    o->row = 0;
+    uint32_t x;
+    for (x = 0; x < o->ref->width; x++) { /* first change below y */
+        size_t lo = o->start[x], hi = o->start[x + 1];
+        while (lo < hi) {
+            size_t mid = lo + (hi - lo) / 2;
+            if (o->change[mid] <= y)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        o->cursor[x] = lo;
+    }
+    o->row = y;
 }
 
 int cmp_outline_has_edges(const cmp_outline *o)
@@ -167,7 +205,7 @@ int cmp_outline_has_edges(const cmp_outline *o)
 static void seek(cmp_outline *o, uint32_t y)
 {
     uint32_t x;
-    if (y == o->row && y != 0)
+    if (y == o->row)
         return;
     for (x = 0; x < o->ref->width; x++) {
         size_t c = o->cursor[x];
@@ -198,12 +236,27 @@ static int64_t vertical(const cmp_outline *o, const unsigned char *row,
     return best;
 }
 
-/* Where the parabolas of columns p and q (p < q) cross. */
-static double crossing(const int64_t *f, uint32_t p, uint32_t q)
+/* The parabolas of columns p < q, y = (x - p)^2 + f[p] and likewise for
+ * q, cross at s(p, q) = (F[q] - F[p]) / (2 (q - p)) with F[c] = f[c] +
+ * c^2.  Everything stays in integers: F < 2^34 and column differences
+ * < 2^17, so the cross products below fit in 64 bits. */
+static int64_t big_f(const int64_t *f, uint32_t c)
 {
-    double fp = (double)f[p] + (double)p * p;
-    double fq = (double)f[q] + (double)q * q;
-    return (fq - fp) / (2.0 * ((double)q - p));
+    return f[c] + (int64_t)c * c;
+}
+
+/* s(r, p) >= s(p, q): p's parabola is nowhere the lowest (r < p < q). */
+static int hidden(const int64_t *f, uint32_t r, uint32_t p, uint32_t q)
+{
+    return (big_f(f, q) - big_f(f, p)) * ((int64_t)p - r) <=
+           (big_f(f, p) - big_f(f, r)) * ((int64_t)q - p);
+}
+
+/* s(p, q) < x: past x, q's parabola is below p's. */
+static int crossed_before(const int64_t *f, uint32_t p, uint32_t q,
+                          uint32_t x)
+{
+    return big_f(f, q) - big_f(f, p) < 2 * (int64_t)x * ((int64_t)q - p);
 }
 
 void cmp_outline_distances(cmp_outline *o, uint32_t y, int colour,
@@ -216,9 +269,8 @@ void cmp_outline_distances(cmp_outline *o, uint32_t y, int colour,
         o->f[x] = vertical(o, row, x, y, colour);
         if (o->f[x] == INT64_MAX)
             continue;
-        while (n > 0 && crossing(o->f, o->hull[n - 1], x) <= o->bound[n - 1])
+        while (n > 1 && hidden(o->f, o->hull[n - 2], o->hull[n - 1], x))
             n--;
-        o->bound[n] = n == 0 ? -1e300 : crossing(o->f, o->hull[n - 1], x);
         o->hull[n++] = x;
     }
     for (x = 0; x < w; x++) {
@@ -227,7 +279,8 @@ void cmp_outline_distances(cmp_outline *o, uint32_t y, int colour,
             d2[x] = INT64_MAX;
             continue;
         }
-        while (k + 1 < n && o->bound[k + 1] < (double)x)
+        while (k + 1 < n && crossed_before(o->f, o->hull[k], o->hull[k + 1],
+                                           x))
             k++;
         dx = (int64_t)x - o->hull[k];
         d2[x] = dx * dx + o->f[o->hull[k]];

@@ -116,6 +116,15 @@ expect "--width 800" inconsistent different-size "$TMP/w800.pbm"
 grep -q '"text": "the image is 800x480 but the reference is 640x480' "$TMP/out"
 ok $? "  the sizes are named"
 
+# A frame large enough to be measured in bands by several threads (more
+# than 2^21 pixels): the counts still agree with Netpbm's.
+rayo -W 1600 -H 1400 --sphere 0.4,0.5,2,0.8 -o "$TMP/big.pbm"
+pamflip -tb "$TMP/big.pbm" >"$TMP/bigtb.pbm"
+run_capture compare "$TMP/big.pbm" "$TMP/bigtb.pbm" --json
+is "$(json .verdict)/$(json .diagnosis.kind)" "inconsistent/flipped-vertically" "1600x1400 flipped: flipped vertically"
+is "$(json .mismatches)" "$(pamarith -xor "$TMP/big.pbm" "$TMP/bigtb.pbm" | pamtopnm | white /dev/stdin)" \
+   "  mismatches as Netpbm counts them"
+
 # The text names the mistake for a student.
 rayo compare "$REF" "$TMP/tb.pbm" >"$TMP/text"
 grep -q '^diagnosis: the image is upside down (flipped vertically)' "$TMP/text"
