@@ -36,7 +36,8 @@ static rayo_status say_scaled(rayo_grade_item *item,
     if (status == RAYO_OK && fabs(r->scale_found - wrong) < 0.03)
         status = grade_say(item, err, "that is exactly what tan() of FOV "
                                       "in degrees gives: tan() takes "
-                                      "radians, fov * M_PI / 180");
+                                      "radians, FOV * PI / 180 (define PI "
+                                      "yourself: M_PI is not C99)");
     return status;
 }
 
