@@ -12,7 +12,6 @@
  */
 #include "rayo/scene_file.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -77,7 +76,8 @@ static int word_to_double(const scene_word *word, double *value)
         return 0;
     memcpy(buffer, word->text, word->length);
     buffer[word->length] = '\0';
-    errno = 0;
+    if (strspn(buffer, "0123456789+-.eE") < word->length)
+        return 0; /* decimal only: no hex, inf or nan spellings */
     *value = strtod(buffer, &end);
     return *end == '\0' && end != buffer && isfinite(*value);
 }
@@ -97,7 +97,7 @@ static rayo_status need_number(parser *p, const char *what, double *value,
         *column = word.column;
     if (!word_to_double(&word, value))
         return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
-                                "%s; expected %s (a finite number)",
+                                "%s; expected %s (a finite decimal number)",
                                 found(&word, 1, text, sizeof text), what);
     if (fabs(*value) > RAYO_SCENE_MAX_NUMBER)
         return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_LIMIT,

@@ -23,10 +23,12 @@ bad "missing number" "1:13: found the end of the line; expected the sphere's rad
     'sphere 0 0 1\n'
 bad "missing number before a comment" "1:14: found the end of the line; expected the sphere's radius" \
     'sphere 0 0 1 # r?\n'
-bad "word for a number" "1:12: found 'abc'; expected the z of the sphere's centre \\(a finite number\\)$" \
+bad "word for a number" "1:12: found 'abc'; expected the z of the sphere's centre \\(a finite decimal number\\)$" \
     'sphere 0 0 abc 1\n'
-bad "NaN radius" "1:14: found 'nan'; expected the sphere's radius \\(a finite number\\)$" \
+bad "NaN radius" "1:14: found 'nan'; expected the sphere's radius \\(a finite decimal number\\)$" \
     'sphere 0 0 1 nan\n'
+bad "hexadecimal number" "1:8: found '0x1p1'; expected the x of the sphere's centre \\(a finite decimal number\\)$" \
+    'sphere 0x1p1 0 3 1\n'
 bad "negative radius" "1:14: radius -1 is not accepted; expected a number > 0$" \
     'sphere 0 0 1 -1\n'
 bad "zero radius on line 2" "2:14: radius 0 is not accepted" \
