@@ -47,9 +47,11 @@ void bench_pipe_close(bench_pipe *pipe, int write_fd);
 
 /*
  * Runs argv (argv[0] a path) with stdout on /dev/null, or `sh -c
- * command` when argv is NULL; returns the wall time in seconds and puts
- * the peak resident set of the child and its descendants, in KiB, in
- * *max_rss_kib.  Returns a negative number when the child fails.
+ * command` when argv is NULL; returns the wall time in seconds, or a
+ * negative number when the child fails.  With max_rss_kib not NULL it
+ * runs under /usr/bin/time instead and puts there the peak resident set
+ * of the child and its descendants, in KiB (process.c says why); the
+ * time then includes GNU time's own start.
  */
 double bench_run_child(char *const argv[], const char *command,
                        long *max_rss_kib);

@@ -4,7 +4,8 @@
  *
  * Lines ('#' starts a comment):
  *   KEY<TAB>LABEL<TAB>COMMAND[<TAB>RUNS]   a row: best of RUNS runs
- *                                          (default: 3 x --repeat)
+ *                                          (default: 3 x --repeat), and
+ *                                          one more for peak memory
  *   setup<TAB>COMMAND                      run once, untimed
  *   target<TAB>LABEL<TAB>KEY_A<TAB>KEY_B<TAB><=|>=<TAB>LIMIT
  *                                          the ratio of two rows' times
@@ -32,17 +33,16 @@ static void run_row(bench_table *table, const char *key, const char *label,
     long rss_max = -1;
     int r;
     for (r = 0; r < runs; r++) {
-        long rss = -1;
-        double seconds = bench_run_child(NULL, command, &rss);
+        double seconds = bench_run_child(NULL, command, NULL);
         if (seconds < 0) {
             best = -1;
             break;
         }
         if (best < 0 || seconds < best)
             best = seconds;
-        if (rss > rss_max)
-            rss_max = rss;
     }
+    if (best >= 0 && bench_run_child(NULL, command, &rss_max) < 0)
+        rss_max = -1;
     snprintf(key_time, sizeof key_time, "%s_s", key);
     snprintf(key_rss, sizeof key_rss, "%s_rss_kib", key);
     snprintf(label_rss, sizeof label_rss, "%s, peak RSS", label);
@@ -101,8 +101,7 @@ void bench_commands(bench_table *table, const char *rows_file)
             continue;
         n = split(line, fields);
         if (n == 2 && strcmp(fields[0], "setup") == 0) {
-            long rss;
-            if (bench_run_child(NULL, fields[1], &rss) < 0)
+            if (bench_run_child(NULL, fields[1], NULL) < 0)
                 bench_add(table, "setup_error", fields[1], -1, "failed");
         } else if (n == 6 && strcmp(fields[0], "target") == 0) {
             ratio_target(table, fields);

@@ -1,7 +1,13 @@
 /*
  * process.c - the benchmark's contact with the operating system: the
  * clock, pipes emptied by a reader thread (the far end of "rayo | cmd"),
- * and child processes timed and measured for peak memory with wait4.
+ * and child processes, timed, or measured for peak memory.
+ *
+ * Peak memory cannot come from our own wait4: Linux folds the resident
+ * size a process had before exec into its maximum, and a child forked
+ * from this benchmark starts as a copy of it (tens of MiB by the time the
+ * frames have been rendered).  So memory is measured by GNU time
+ * (/usr/bin/time -f %M), whose children are copies of a small process.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE
@@ -9,8 +15,7 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <stdlib.h>
-#include <sys/resource.h>
-#include <sys/time.h>
+#include <stdio.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -67,29 +72,76 @@ void bench_pipe_close(bench_pipe *p, int write_fd)
     free(p);
 }
 
+#define MAX_ARGS 64
+
+/* The child's argv: the command (argv, or sh -c command), behind GNU
+ * time writing %M to rss_file when rss_file is not NULL. */
+static void build_argv(char *const argv[], const char *command,
+                       const char *rss_file, char *out[MAX_ARGS])
+{
+    int n = 0, i;
+    if (rss_file != NULL) {
+        out[n++] = "/usr/bin/time";
+        out[n++] = "-f";
+        out[n++] = "%M";
+        out[n++] = "-o";
+        out[n++] = (char *)rss_file;
+    }
+    if (argv == NULL) {
+        out[n++] = "/bin/sh";
+        out[n++] = "-c";
+        out[n++] = (char *)command;
+    }
+    for (i = 0; argv != NULL && argv[i] != NULL && n < MAX_ARGS - 1; i++)
+        out[n++] = argv[i];
+    out[n] = NULL;
+}
+
+static long read_rss(const char *rss_file)
+{
+    FILE *in = fopen(rss_file, "r");
+    long kib = -1;
+    if (in == NULL)
+        return -1;
+    if (fscanf(in, "%ld", &kib) != 1)
+        kib = -1;
+    fclose(in);
+    return kib;
+}
+
 double bench_run_child(char *const argv[], const char *command,
                        long *max_rss_kib)
 {
-    struct rusage usage;
-    int status;
-    double start = bench_now(), seconds;
-    pid_t pid = fork();
+    char rss_file[] = "/tmp/rayo-bench-rss.XXXXXX";
+    char *child_argv[MAX_ARGS];
+    int status, fd = -1;
+    double start, seconds;
+    pid_t pid;
+    if (max_rss_kib != NULL) {
+        fd = mkstemp(rss_file);
+        if (fd < 0)
+            return -1;
+        close(fd);
+    }
+    build_argv(argv, command, max_rss_kib ? rss_file : NULL, child_argv);
+    start = bench_now();
+    pid = fork();
     if (pid < 0)
         return -1;
     if (pid == 0) {
         int null = open("/dev/null", O_WRONLY);
         if (null >= 0)
             dup2(null, STDOUT_FILENO);
-        if (argv != NULL)
-            execv(argv[0], argv);
-        else
-            execl("/bin/sh", "sh", "-c", command, (char *)NULL);
+        execv(child_argv[0], child_argv);
         _exit(127);
     }
-    if (wait4(pid, &status, 0, &usage) != pid)
+    if (waitpid(pid, &status, 0) != pid)
         return -1;
     seconds = bench_now() - start;
-    *max_rss_kib = usage.ru_maxrss;
+    if (max_rss_kib != NULL) {
+        *max_rss_kib = read_rss(rss_file);
+        unlink(rss_file);
+    }
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         return -1;
     return seconds;
