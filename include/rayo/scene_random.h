@@ -8,11 +8,13 @@
  * seed gives the same scene on every machine.  Not for anything that
  * needs good randomness.
  *
- * Both layouts are made for the default camera (origin, looking down +z,
- * 90 degrees, 16:9 such as 1920x1080) and scale the radii with the count,
- * so that 10 or 100000 spheres cover about the same part of the picture:
- * a scene of ten and a scene of 100000 are the same picture in coarse and
- * fine grain, and their times per pixel can be compared.
+ * Both layouts scale the radii with the count, so that 10 or 100000
+ * spheres cover about the same share of the ground (field) or of the
+ * default camera's view (cloud): a scene of ten and a scene of 100000 are
+ * the same picture in coarse and fine grain, and their times per pixel
+ * can be compared.  The default camera (origin, looking down +z) sees the
+ * field as a band below the horizon; a camera at (0, 5, -10) looking at
+ * (0, -1, 35) sees it fill most of the picture.
  */
 #ifndef RAYO_SCENE_RANDOM_H
 #define RAYO_SCENE_RANDOM_H
