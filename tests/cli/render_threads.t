@@ -62,7 +62,7 @@ rayo render -W 64 -H 48 >"$TMP/loud" 2>/dev/null
 cmp -s "$TMP/out" "$TMP/loud"
 ok $? "--quiet writes the same image"
 is "$(wc -c <"$TMP/err" | tr -d ' ')" 0 "--quiet: nothing on stderr"
-run_capture render -q -W 2000 -H 2000 --raw -j 2 -o "$TMP/big.pbm"
+run_capture render -q -W 1000 -H 1000 --raw -j 2 -o "$TMP/big.pbm"
 is "$(wc -c <"$TMP/err" | tr -d ' ')" 0 "stderr not a terminal: no bar"
 
 done_testing
