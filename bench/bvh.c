@@ -14,12 +14,15 @@
  * scene tests every object) is too slow for a whole frame at 100,000
  * spheres, so both are timed on the same grid of primary rays, one in
  * every 40x40 pixels.  The cloud (rayo_scene_random_cloud) is the
- * hierarchy's hard case: a ray that misses crosses all of it.  Not a
- * test: it prints, it checks nothing.
+ * hierarchy's hard case: a ray that misses crosses all of it.  With
+ * RAYO_BENCH_PICTURE=FILE it also writes the above view as a PNG (the
+ * picture in docs/geometry.md).  Not a test: it prints, it checks
+ * nothing.
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <time.h>
 
 #include "bench.h"
@@ -262,12 +265,56 @@ static void bvh_cloud(bench_table *table, int repeats)
     rayo_scene_free(cloud);
 }
 
+/* The above view of the 100,000 spheres at 640x360, phong, to a PNG
+ * file: docs/geometry.md shows it. */
+static void bvh_picture(const char *path)
+{
+    rayo_scene *scene = bvh_scene(BVH_FIELD, BVH_MANY, 1, NULL);
+    rayo_camera camera;
+    rayo_render_options options;
+    rayo_write_options write = {RAYO_FORMAT_PNG, 0};
+    rayo_image image;
+    rayo_output *out;
+    rayo_error err;
+    rayo_status status;
+    if (scene == NULL)
+        return;
+    rayo_render_options_init(&options);
+    options.shade = RAYO_SHADE_PHONG;
+    status = rayo_camera_init(&camera, 640, 360, 60.0,
+                              rayo_vec3_make(0, 5, -10), &err);
+    if (status == RAYO_OK)
+        status = rayo_camera_look_at(&camera, rayo_vec3_make(0, -1, 35),
+                                     rayo_vec3_make(0, 1, 0), &err);
+    if (status == RAYO_OK)
+        status = rayo_render_image(&camera, scene, &options, &image, &err);
+    if (status == RAYO_OK) {
+        status = rayo_output_open(&out, path, &err);
+        if (status == RAYO_OK) {
+            status = rayo_image_write(&image, out, &write, &err);
+            if (status == RAYO_OK)
+                status = rayo_output_commit(out, &err);
+            else
+                rayo_output_abort(out);
+        }
+        rayo_image_free(&image);
+    }
+    if (status != RAYO_OK)
+        fprintf(stderr, "bench bvh: %s\n", err.message);
+    else
+        printf("  wrote %s\n", path);
+    rayo_scene_free(scene);
+}
+
 void bench_bvh(bench_table *table)
 {
     int repeats = bench_repeats(table);
+    const char *picture = getenv("RAYO_BENCH_PICTURE");
     printf("scale: %ux%u, 10 and 100000 spheres (seed %u)\n", BVH_WIDTH,
            BVH_HEIGHT, BVH_SEED);
     bvh_frames(table, repeats);
     bvh_brute(table, repeats);
     bvh_cloud(table, repeats);
+    if (picture != NULL)
+        bvh_picture(picture);
 }
