@@ -109,12 +109,14 @@ rayo_status cmp_outline_fork(const cmp_outline *base, cmp_outline **fork,
 int cmp_outline_has_edges(const cmp_outline *outline);
 
 /*
- * For row y: d2[x] = squared distance from (x, y) to the nearest
- * reference pixel of colour `colour` (0 white, 1 black), or INT64_MAX if
- * there is none.  d2 has room for the reference's width.
+ * For the pixels x of row y set in diff (a packed row): d2[x] = squared
+ * distance from (x, y) to the nearest reference pixel of colour `colour`
+ * (0 white, 1 black), or INT64_MAX if there is none.  Other entries of d2
+ * (room for the reference's width) may be written too.
  */
-void cmp_outline_distances(cmp_outline *outline, uint32_t y, int colour,
-                           int64_t *d2);
+void cmp_outline_mismatch_distances(cmp_outline *outline, uint32_t y,
+                                    int colour, const unsigned char *diff,
+                                    int64_t *d2);
 
 /* ---- shape.c ---- */
 

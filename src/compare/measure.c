@@ -55,7 +55,7 @@ static void row_distances(cmp_outline *outline, uint32_t y, int colour,
 {
     size_t n = cmp_row_bytes(width), k;
     double tol2 = tolerance * tolerance;
-    cmp_outline_distances(outline, y, !colour, d2);
+    cmp_outline_mismatch_distances(outline, y, !colour, diff, d2);
     for (k = 0; k < n; k++) {
         unsigned bit;
         if (diff[k] == 0)

@@ -13,11 +13,15 @@
  * two changes a column; memory is two bytes a change (rows fit in 16
  * bits, since heights are at most 65536), so even a worst-case noise
  * image costs no more than a 16-bit map.  The second (horizontal) pass is
- * the lower envelope of parabolas over one row.
+ * the lower envelope of parabolas over a row, or rather over the stretches
+ * of it near mismatches (a run of mismatches is widened by a bound on its
+ * distances: the vertical distance, and the horizontal one to the nearest
+ * pixel of the other colour beside the run).
  *
  * Not a general distance-transform library: one reference, rows in
  * order, distances only to "the other colour".
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -259,13 +263,12 @@ static int crossed_before(const int64_t *f, uint32_t p, uint32_t q,
     return big_f(f, q) - big_f(f, p) < 2 * (int64_t)x * ((int64_t)q - p);
 }
 
-void cmp_outline_distances(cmp_outline *o, uint32_t y, int colour,
-                           int64_t *d2)
+/* The envelope over columns lo..hi only: d2[x] for x in lo..hi. */
+static void envelope(cmp_outline *o, const unsigned char *row, uint32_t y,
+                     int colour, uint32_t lo, uint32_t hi, int64_t *d2)
 {
-    const unsigned char *row = cmp_mask_row(o->ref, y);
-    uint32_t w = o->ref->width, x, k = 0, n = 0;
-    seek(o, y);
-    for (x = 0; x < w; x++) {
+    uint32_t x, k = 0, n = 0;
+    for (x = lo; x <= hi; x++) {
         o->f[x] = vertical(o, row, x, y, colour);
         if (o->f[x] == INT64_MAX)
             continue;
@@ -273,7 +276,7 @@ void cmp_outline_distances(cmp_outline *o, uint32_t y, int colour,
             n--;
         o->hull[n++] = x;
     }
-    for (x = 0; x < w; x++) {
+    for (x = lo; x <= hi; x++) {
         int64_t dx;
         if (n == 0) {
             d2[x] = INT64_MAX;
@@ -285,4 +288,99 @@ void cmp_outline_distances(cmp_outline *o, uint32_t y, int colour,
         dx = (int64_t)x - o->hull[k];
         d2[x] = dx * dx + o->f[o->hull[k]];
     }
+}
+
+/* The nearest column of this row at or beyond x (step -1 or +1) whose
+ * pixel has the colour, or -1 when there is none; whole bytes without
+ * it are skipped. */
+static int64_t scan(const unsigned char *row, uint32_t width, int64_t x,
+                    int step, int colour)
+{
+    unsigned none = colour ? 0x00u : 0xFFu;
+    while (x >= 0 && x < (int64_t)width) {
+        if ((x & 7) == (step > 0 ? 0 : 7) && row[x >> 3] == none &&
+            (step < 0 || x + 8 <= (int64_t)width)) {
+            x += 8 * step;
+            continue;
+        }
+        if (rayo_bit_get(row, (uint32_t)x) == colour)
+            return x;
+        x += step;
+    }
+    return -1;
+}
+
+/* The run of mismatches a..b needs the envelope only over a..b widened
+ * by its largest distance bound: for each x, the vertical distance to
+ * the colour and the horizontal distance to the nearest pixel of the
+ * colour outside the run, both upper bounds on the true distance. */
+static uint32_t run_reach(cmp_outline *o, const unsigned char *row,
+                          uint32_t y, int colour, uint32_t a, uint32_t b)
+{
+    uint32_t w = o->ref->width, x, reach = 0;
+    int64_t left = scan(row, w, (int64_t)a - 1, -1, colour);
+    int64_t right = scan(row, w, (int64_t)b + 1, 1, colour);
+    for (x = a; x <= b; x++) {
+        int64_t bound = vertical(o, row, x, y, colour), h = INT64_MAX;
+        if (left >= 0)
+            h = (int64_t)x - left;
+        if (right >= 0 && right - (int64_t)x < h)
+            h = right - (int64_t)x;
+        if (h != INT64_MAX && h * h < bound)
+            bound = h * h;
+        if (bound == INT64_MAX || bound >= (int64_t)w * w)
+            return w;
+        if ((int64_t)reach * reach < bound) {
+            reach = (uint32_t)sqrt((double)bound);
+            while ((int64_t)reach * reach < bound) /* sqrt rounded down */
+                reach++;
+        }
+    }
+    return reach;
+}
+
+/* The next run of set bits of diff at or after x: *a..*b; 0 if none. */
+static int next_run(const unsigned char *diff, uint32_t width, uint32_t x,
+                    uint32_t *a, uint32_t *b)
+{
+    while (x < width && !rayo_bit_get(diff, x)) {
+        if ((x & 7) == 0 && diff[x >> 3] == 0)
+            x += 8;
+        else
+            x++;
+    }
+    if (x >= width)
+        return 0;
+    *a = x;
+    while (x + 1 < width && rayo_bit_get(diff, x + 1))
+        x++;
+    *b = x;
+    return 1;
+}
+
+void cmp_outline_mismatch_distances(cmp_outline *o, uint32_t y, int colour,
+                                    const unsigned char *diff, int64_t *d2)
+{
+    const unsigned char *row = cmp_mask_row(o->ref, y);
+    uint32_t w = o->ref->width, a, b, x = 0, lo = 0, hi = 0;
+    int open = 0;
+    seek(o, y);
+    while (next_run(diff, w, x, &a, &b)) {
+        uint32_t reach = run_reach(o, row, y, colour, a, b);
+        uint32_t rlo = a > reach ? a - reach : 0;
+        uint32_t rhi = w - 1 - b > reach ? b + reach : w - 1;
+        if (open && rlo <= hi + 1) {
+            if (rhi > hi)
+                hi = rhi;
+        } else {
+            if (open)
+                envelope(o, row, y, colour, lo, hi, d2);
+            lo = rlo;
+            hi = rhi;
+            open = 1;
+        }
+        x = b + 1;
+    }
+    if (open)
+        envelope(o, row, y, colour, lo, hi, d2);
 }
