@@ -75,7 +75,14 @@ typedef struct cmp_transform {
     int32_t dx, dy;
     double scale;
     uint32_t step; /* CMP_SCALE search: sample every step-th pixel only */
+    const int32_t *columns; /* CMP_SCALE, step 1: the image column of each
+                               reference column (-1: outside), or NULL */
 } cmp_transform;
+
+/* The column map of a CMP_SCALE transform (columns has room for
+ * ref_width entries). */
+void cmp_transform_columns(const cmp_transform *t, uint32_t ref_width,
+                           uint32_t image_width, int32_t *columns);
 
 /*
  * The image's row y undone by t, in the reference's frame (width

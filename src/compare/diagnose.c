@@ -101,7 +101,7 @@ static rayo_status scale_loss(const cmp_mask *ref, const cmp_mask *image,
                               double s, uint32_t step, double *loss,
                               rayo_error *err)
 {
-    cmp_transform t = {CMP_SCALE, 0, 0, 0, 0};
+    cmp_transform t = {CMP_SCALE, 0, 0, 0, 0, NULL};
     cmp_counts c;
     rayo_status st;
     t.scale = s;
@@ -195,6 +195,29 @@ static rayo_status consider(chooser *ch, const cmp_mask *ref,
     return RAYO_OK;
 }
 
+/* The scale candidate at full resolution, through a column map. */
+static rayo_status consider_scaled(chooser *ch, const cmp_mask *ref,
+                                   const cmp_mask *image,
+                                   cmp_outline *outline,
+                                   const rayo_compare_report *report,
+                                   cmp_transform *t, rayo_error *err)
+{
+    int32_t *columns = malloc((size_t)ref->width * sizeof *columns);
+    rayo_status s;
+    if (columns == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM,
+                              "compare: out of memory for a column map");
+    cmp_transform_columns(t, ref->width, image->width, columns);
+    t->columns = columns;
+    t->step = 1;
+    s = consider(ch, ref, image, outline, report, t, err);
+    t->columns = NULL; /* the chooser may keep a copy of t */
+    if (ch->found && ch->transform.columns == columns)
+        ch->transform.columns = NULL;
+    free(columns);
+    return s;
+}
+
 /* A candidate that undoes every far mismatch ends the search. */
 static int exact_found(const chooser *ch)
 {
@@ -254,7 +277,7 @@ static rayo_status judge_close(const cmp_mask *ref, const cmp_mask *image,
                                const cmp_shape *rs, const cmp_shape *is,
                                rayo_compare_report *report, rayo_error *err)
 {
-    cmp_transform t = {CMP_SHIFT, 0, 0, 1, 1};
+    cmp_transform t = {CMP_SHIFT, 0, 0, 1, 1, NULL};
     cmp_counts c;
     rayo_status s;
     report->verdict = RAYO_VERDICT_CONSISTENT;
@@ -306,7 +329,7 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
 {
     static const cmp_transform_kind plain[] = {
         CMP_INVERT, CMP_FLIP_V, CMP_FLIP_H, CMP_FLIP_BOTH, CMP_TRANSPOSE};
-    cmp_transform t = {CMP_IDENTITY, 0, 0, 1, 1};
+    cmp_transform t = {CMP_IDENTITY, 0, 0, 1, 1, NULL};
     rayo_status s = RAYO_OK;
     size_t i;
     for (i = 0; i < sizeof plain / sizeof plain[0] && s == RAYO_OK &&
@@ -334,7 +357,7 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
         return s;
     if (fabs(t.scale - 1) < SCALE_EPSILON)
         return RAYO_OK;
-    return consider(ch, ref, image, outline, report, &t, err);
+    return consider_scaled(ch, ref, image, outline, report, &t, err);
 }
 
 static void judge_shape(const cmp_mask *image, const cmp_shape *is,
@@ -357,7 +380,7 @@ static rayo_status diagnose_size(const cmp_mask *ref, const cmp_mask *image,
                                  rayo_compare_report *report,
                                  rayo_error *err)
 {
-    cmp_transform t = {CMP_TRANSPOSE, 0, 0, 1, 1};
+    cmp_transform t = {CMP_TRANSPOSE, 0, 0, 1, 1, NULL};
     cmp_counts c;
     rayo_status s;
     report->verdict = RAYO_VERDICT_INCONSISTENT;

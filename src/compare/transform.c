@@ -134,6 +134,47 @@ static int permuted_row(const cmp_transform *t, const cmp_mask *image,
 /* Larger than any |s x| a frame can produce (scales stay far below 2^20). */
 #define FLOOR_BIAS 68719476736.0 /* 2^36 */
 
+static int64_t scaled_column(double scale, uint32_t i, uint32_t width,
+                             uint32_t image_width)
+{
+    /* floor(v) as a truncation of a positive number: no libm call in the
+       innermost loop */
+    double xr = (double)i - (double)(width / 2);
+    return (int64_t)(scale * xr + 0.5 + FLOOR_BIAS) - (int64_t)FLOOR_BIAS +
+           image_width / 2;
+}
+
+void cmp_transform_columns(const cmp_transform *t, uint32_t ref_width,
+                           uint32_t image_width, int32_t *columns)
+{
+    uint32_t i;
+    for (i = 0; i < ref_width; i++) {
+        int64_t ii = scaled_column(t->scale, i, ref_width, image_width);
+        columns[i] = ii >= 0 && ii < image_width ? (int32_t)ii : -1;
+    }
+}
+
+/* A scaled row through the column map, eight pixels a byte. */
+static void mapped_row(const int32_t *columns, const unsigned char *src,
+                       uint32_t width, unsigned char *out,
+                       unsigned char *known)
+{
+    size_t n = cmp_row_bytes(width), k;
+    for (k = 0; k < n; k++) {
+        unsigned v = 0, kn = 0, bit;
+        for (bit = 0; bit < 8 && k * 8 + bit < width; bit++) {
+            int32_t ii = columns[k * 8 + bit];
+            if (ii < 0)
+                continue;
+            kn |= 0x80u >> bit;
+            if (rayo_bit_get(src, (uint32_t)ii))
+                v |= 0x80u >> bit;
+        }
+        out[k] = (unsigned char)v;
+        known[k] = (unsigned char)kn;
+    }
+}
+
 /* out(x, y) = image(round(s x), round(s y)) in centred coordinates. */
 static int scaled_row(const cmp_transform *t, const cmp_mask *image,
                       uint32_t width, uint32_t height, uint32_t y,
@@ -142,15 +183,16 @@ static int scaled_row(const cmp_transform *t, const cmp_mask *image,
     uint32_t i, step = t->step ? t->step : 1;
     double yr = (double)y - (double)(height / 2);
     int64_t j = (int64_t)floor(t->scale * yr + 0.5) + image->height / 2;
-    if (y % step != 0)
+    if (y % step != 0 || j < 0 || j >= image->height)
         return -1;
+    if (t->columns != NULL && step == 1) {
+        mapped_row(t->columns, cmp_mask_row(image, (uint32_t)j), width, out,
+                   known);
+        return 0;
+    }
     memset(known, 0, cmp_row_bytes(width));
     for (i = 0; i < width; i += step) {
-        /* floor(v) as a truncation of a positive number: no libm call in
-           the innermost loop */
-        double xr = (double)i - (double)(width / 2);
-        int64_t ii = (int64_t)(t->scale * xr + 0.5 + FLOOR_BIAS) -
-                     (int64_t)FLOOR_BIAS + image->width / 2;
+        int64_t ii = scaled_column(t->scale, i, width, image->width);
         int b = image_bit(image, ii, j);
         if (b < 0)
             continue;
