@@ -11,6 +11,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <getopt.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -160,11 +161,44 @@ static int compare_images(const compare_request *req,
                                                         : CLI_EXIT_OK;
 }
 
+/* One input read on a thread of its own, so both files are read at
+ * once (two plain 4096x4096 PBMs are 34 MB of text). */
+typedef struct input {
+    const char *path;
+    rayo_image image;
+    rayo_error err;
+    rayo_status status;
+} input;
+
+static void *read_input(void *context)
+{
+    input *in = context;
+    rayo_error_clear(&in->err);
+    in->status = rayo_image_read_file(in->path, &in->image, NULL, &in->err);
+    return NULL;
+}
+
+/* Reads both; on failure reports the reference's error first. */
+static int read_both(input *ref, input *img)
+{
+    pthread_t thread;
+    int threaded = pthread_create(&thread, NULL, read_input, ref) == 0;
+    if (!threaded)
+        read_input(ref);
+    read_input(img);
+    if (threaded)
+        pthread_join(thread, NULL);
+    if (ref->status == RAYO_OK && img->status == RAYO_OK)
+        return CLI_EXIT_OK;
+    rayo_image_free(&ref->image);
+    rayo_image_free(&img->image);
+    return cli_unreadable(ref->status != RAYO_OK ? &ref->err : &img->err);
+}
+
 int cli_compare(int argc, char **argv)
 {
     compare_request req;
-    rayo_image reference, image;
-    rayo_error err;
+    input reference, image;
     int status;
     memset(&req, 0, sizeof req);
     memset(&reference, 0, sizeof reference);
@@ -173,15 +207,12 @@ int cli_compare(int argc, char **argv)
     status = parse_request(argc, argv, &req);
     if (status != CLI_EXIT_OK)
         return status < 0 ? CLI_EXIT_OK : status;
-    rayo_error_clear(&err);
-    if (rayo_image_read_file(req.reference, &reference, NULL, &err) !=
-            RAYO_OK ||
-        rayo_image_read_file(req.image, &image, NULL, &err) != RAYO_OK) {
-        rayo_image_free(&reference);
-        return cli_unreadable(&err);
-    }
-    status = compare_images(&req, &reference, &image);
-    rayo_image_free(&reference);
-    rayo_image_free(&image);
+    reference.path = req.reference;
+    image.path = req.image;
+    if ((status = read_both(&reference, &image)) != CLI_EXIT_OK)
+        return status;
+    status = compare_images(&req, &reference.image, &image.image);
+    rayo_image_free(&reference.image);
+    rayo_image_free(&image.image);
     return status;
 }
