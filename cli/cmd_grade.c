@@ -10,6 +10,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <getopt.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,6 +20,41 @@ typedef struct grade_request {
     rayo_grade_options options;
     int json, each;
 } grade_request;
+
+/* Set by SIGINT/SIGTERM: the grading stops, kills the running program
+   and removes its temporary directory, then we die of the signal. */
+static volatile sig_atomic_t interrupted_by;
+
+static void on_interrupt(int signal_number)
+{
+    interrupted_by = signal_number;
+}
+
+static int stop_requested(void *context)
+{
+    (void)context;
+    return interrupted_by != 0;
+}
+
+static void catch_interrupts(void)
+{
+    struct sigaction action;
+    memset(&action, 0, sizeof action);
+    action.sa_handler = on_interrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, NULL);
+    sigaction(SIGTERM, &action, NULL);
+}
+
+/* After a cancelled grading: die of the signal that asked for it. */
+static int exit_for_interrupt(void)
+{
+    int number = interrupted_by;
+    fflush(stdout);
+    signal(number, SIG_DFL);
+    raise(number);
+    return 128 + number;
+}
 
 static void print_help(void)
 {
@@ -302,12 +338,14 @@ static int grade_single(int argc, char **argv, int first, grade_request *req)
     rayo_error_clear(&err);
     if (first + 1 == argc) {
         if (!grade_one(argv[first], NULL, req, &report, &err))
-            return cli_report(&err);
+            return err.status == RAYO_ERR_CANCELLED ? CLI_EXIT_FAILURE
+                                                    : cli_report(&err);
     } else {
         req->options.sources = (const char *const *)(argv + first);
         req->options.source_count = (size_t)(argc - first);
         if (rayo_grade(&req->options, &report, &err) != RAYO_OK)
-            return cli_report(&err);
+            return err.status == RAYO_ERR_CANCELLED ? CLI_EXIT_FAILURE
+                                                    : cli_report(&err);
         if (req->json)
             print_json(NULL, &req->options, &report);
     }
@@ -363,13 +401,15 @@ static int grade_each(const char *dir, grade_request *req)
         printf("[");
     else
         print_table_header();
-    for (i = 0; i < count; i++) {
+    for (i = 0; i < count && interrupted_by == 0; i++) {
         rayo_grade_report report;
         const char *student = base_name(folders[i]);
         if (req->json && i > 0)
             printf(",\n ");
         rayo_error_clear(&err);
         if (!grade_one(folders[i], student, req, &report, &err)) {
+            if (err.status == RAYO_ERR_CANCELLED)
+                break;
             /* One bad folder does not stop the class. */
             if (req->json) {
                 printf("{\"student\": ");
@@ -406,7 +446,11 @@ int cli_grade(int argc, char **argv)
     status = parse_request(argc, argv, &req);
     if (status != CLI_EXIT_OK)
         return status < 0 ? CLI_EXIT_OK : status;
-    if (req.each)
-        return grade_each(argv[optind], &req);
-    return grade_single(argc, argv, optind, &req);
+    req.options.cancelled = stop_requested;
+    catch_interrupts();
+    status = req.each ? grade_each(argv[optind], &req)
+                      : grade_single(argc, argv, optind, &req);
+    if (interrupted_by != 0)
+        return exit_for_interrupt();
+    return status;
 }

@@ -93,6 +93,10 @@ typedef struct rayo_grade_options {
     uint64_t output_limit;       /* file size, bytes (64 MiB) */
     unsigned long processes;     /* process count (64) */
     int valgrind;                /* run memcheck when installed */
+    /* Polled while a program runs (may be NULL): nonzero stops the
+       grading, kills what runs and fails with RAYO_ERR_CANCELLED. */
+    int (*cancelled)(void *context);
+    void *cancel_context;
 } rayo_grade_options;
 
 /* The defaults above, for exercise ej1 and no sources. */

@@ -92,7 +92,8 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
     char **argv = NULL;
     char *errors = NULL;
     size_t size;
-    grade_limits limits = {COMPILE_SECONDS, 0, 0, 0, 0};
+    grade_limits limits = grade_compiler_limits(ctx->options,
+                                                COMPILE_SECONDS);
     grade_outcome outcome;
     rayo_status status = RAYO_ERR_NOMEM;
 

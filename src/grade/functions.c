@@ -149,7 +149,8 @@ static rayo_status run_cc(grade_context *ctx, const char *const *words,
     char **argv = grade_cc_argv(ctx, words, count);
     char *out = grade_path_join(ctx->dir, "probe.out");
     char *errpath = grade_path_join(ctx->dir, "probe.err");
-    grade_limits limits = {COMPILE_SECONDS, 0, 0, 0, 0};
+    grade_limits limits = grade_compiler_limits(ctx->options,
+                                                COMPILE_SECONDS);
     grade_outcome outcome;
     size_t size;
     rayo_status status;

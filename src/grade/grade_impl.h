@@ -56,12 +56,15 @@ typedef struct grade_limits {
     uint64_t memory;      /* address space bytes; 0 = no limit */
     uint64_t file_size;   /* bytes; 0 = no limit */
     unsigned long processes; /* 0 = no limit */
+    int (*cancelled)(void *context); /* may be NULL */
+    void *cancel_context;
 } grade_limits;
 
 typedef enum grade_ending {
     GRADE_EXITED,     /* status holds the exit status */
     GRADE_SIGNALED,   /* status holds the signal */
-    GRADE_TIMED_OUT   /* killed by the grader after limits.wall seconds */
+    GRADE_TIMED_OUT,  /* killed by the grader after limits.wall seconds */
+    GRADE_CANCELLED   /* killed because limits.cancelled said so */
 } grade_ending;
 
 typedef struct grade_outcome {
@@ -84,6 +87,9 @@ rayo_status grade_process_run(char *const argv[], char *const env[],
 
 /* The limits a student's program runs under (run.c). */
 grade_limits grade_run_limits(const rayo_grade_options *options);
+/* Only a wall clock, for the (trusted) compiler. */
+grade_limits grade_compiler_limits(const rayo_grade_options *options,
+                                   double seconds);
 
 /* The full path of a program on PATH, allocated; NULL when none. */
 char *grade_which(const char *name);

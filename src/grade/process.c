@@ -5,8 +5,9 @@
  *
  * Everything the child needs (paths, environment, the limits) is worked
  * out before fork(), so the child only calls async-signal-safe functions
- * (setpgid, open, dup2, chdir, setrlimit, execve, _exit) and is safe to
- * fork from a threaded program.  The limits are resource limits, not a
+ * (setpgid, prctl, open, dup2, chdir, setrlimit, execve, _exit) and is
+ * safe to fork from a threaded program.  On Linux the child also dies
+ * with the grader (PR_SET_PDEATHSIG).  The limits are resource limits, not a
  * sandbox: see grade.h.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -21,6 +22,9 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
 #include "grade_impl.h"
 
@@ -105,6 +109,10 @@ static void child(const char *program, char *const argv[],
     int fd;
     long i;
     setpgid(0, 0);
+#ifdef __linux__
+    /* If the grader dies (killed, not cancelled), so does the program. */
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+#endif
     fd = open("/dev/null", O_RDONLY);
     if (fd < 0 || dup2(fd, 0) < 0)
         _exit(126);
@@ -140,17 +148,22 @@ static void child(const char *program, char *const argv[],
     _exit(127);
 }
 
-/* Waits for pid, killing its process group after wall seconds. */
-static void wait_for(pid_t pid, double wall, grade_outcome *outcome)
+/* Waits for pid, killing its process group after limits->wall seconds
+   or when limits->cancelled says so. */
+static void wait_for(pid_t pid, const grade_limits *limits,
+                     grade_outcome *outcome)
 {
     double start = now_seconds();
     int status = 0;
-    int timed_out = 0;
+    int timed_out = 0, cancelled = 0;
     for (;;) {
         pid_t done = waitpid(pid, &status, WNOHANG);
         if (done == pid || (done < 0 && errno != EINTR))
             break;
-        if (now_seconds() - start > wall) {
+        if (limits->cancelled != NULL &&
+            limits->cancelled(limits->cancel_context))
+            cancelled = 1;
+        if (cancelled || now_seconds() - start > limits->wall) {
             kill(-pid, SIGKILL);
             kill(pid, SIGKILL);
             while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
@@ -166,7 +179,10 @@ static void wait_for(pid_t pid, double wall, grade_outcome *outcome)
     /* Whatever it left behind in its group goes too. */
     kill(-pid, SIGKILL);
     outcome->seconds = now_seconds() - start;
-    if (timed_out) {
+    if (cancelled) {
+        outcome->ending = GRADE_CANCELLED;
+        outcome->status = SIGKILL;
+    } else if (timed_out) {
         outcome->ending = GRADE_TIMED_OUT;
         outcome->status = SIGKILL;
     } else if (WIFSIGNALED(status)) {
@@ -213,7 +229,10 @@ rayo_status grade_process_run(char *const argv[], char *const env[],
                   stdout_path, stderr_path, limits, max_fd);
         } else {
             setpgid(pid, pid);
-            wait_for(pid, limits->wall, outcome);
+            wait_for(pid, limits, outcome);
+            if (outcome->ending == GRADE_CANCELLED)
+                status = rayo_error_set(err, RAYO_ERR_CANCELLED,
+                                        "grade: cancelled");
         }
     }
     free(home_var);

@@ -126,10 +126,20 @@ static rayo_status collect_output(grade_context *ctx, rayo_error *err)
     return status;
 }
 
-grade_limits grade_run_limits(const rayo_grade_options *o)
+grade_limits grade_compiler_limits(const rayo_grade_options *o,
+                                   double seconds)
 {
     grade_limits limits;
-    limits.wall = o->timeout;
+    memset(&limits, 0, sizeof limits);
+    limits.wall = seconds;
+    limits.cancelled = o->cancelled;
+    limits.cancel_context = o->cancel_context;
+    return limits;
+}
+
+grade_limits grade_run_limits(const rayo_grade_options *o)
+{
+    grade_limits limits = grade_compiler_limits(o, o->timeout);
     limits.cpu = o->cpu;
     limits.memory = o->memory;
     limits.file_size = o->output_limit;

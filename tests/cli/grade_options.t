@@ -147,6 +147,21 @@ pgrep -f "$TMP/scratch" >/dev/null 2>&1
 is "$?" 1 "orphan: no process of the submission is left"
 is "$(ls -A "$TMP/scratch")" "" "orphan: the temporary directory is removed"
 
+# SIGTERM while the program runs: rayo kills it, removes its temporary
+# directory and dies of the signal.
+mkdir "$TMP/scratch2"
+TMPDIR="$TMP/scratch2" "$RAYO" grade $NV --timeout 60 "$TMP/orphan.c" \
+    >"$TMP/out" 2>"$TMP/err" &
+pid=$!
+sleep 1
+kill -TERM "$pid"
+status=0
+wait "$pid" || status=$?
+is "$status" 143 "SIGTERM: rayo dies of the signal"
+pgrep -f "$TMP/scratch2" >/dev/null 2>&1
+is "$?" 1 "SIGTERM: no process of the submission is left"
+is "$(ls -A "$TMP/scratch2")" "" "SIGTERM: the temporary directory is removed"
+
 cat >"$TMP/three.c" <<'C'
 int main(void)
 {
