@@ -8,9 +8,8 @@
  * PGM and PPM samples separated by spaces).  Raw PBM rows are packed bits
  * with the padding bits of the last byte zero; raw samples are bytes, or
  * two bytes big-endian when maxval > 255.  Each row is formatted into a
- * scratch buffer and handed to the output in one call; plain PBM rows are
- * spelled out eight digits per byte from a table, then cut into lines.
- * Raw rows that need no change (bytes, or bits whose padding is already
+ * scratch buffer and handed to the output in one call; plain PBM rows
+ * come from pbm_plain.c.  Raw rows that need no change (bytes, or bits whose padding is already
  * zero) go to the output straight from the caller's memory, a whole block
  * of rows in one call.
  */
@@ -18,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "pbm_plain.h"
 #include "writer_impl.h"
 
 #define PLAIN_LINE_MAX 70
@@ -25,8 +25,7 @@
 typedef struct pnm_state {
     unsigned char *scratch;
     size_t scratch_size;
-    char *digits; /* plain PBM: one row's digits, a multiple of 8 long */
-    char bits_table[256 * 8]; /* eight ASCII digits for each byte */
+    rayo_pbm_plain *plain_bits; /* plain PBM only */
 } pnm_state;
 
 static int magic_number(const rayo_writer *writer)
@@ -73,17 +72,9 @@ static size_t scratch_bytes(const rayo_writer *writer)
     if (!writer->options.plain)
         return rayo_image_info_row_bytes(info);
     if (info->sample == RAYO_SAMPLE_BIT)
-        return samples + samples / PLAIN_LINE_MAX + 2;
+        return rayo_pbm_plain_row_size(info->width);
     /* "65535 " per sample, and a newline at worst every 11 samples. */
     return samples * 6 + samples / 11 + 2;
-}
-
-static void fill_bits_table(char *table)
-{
-    int byte, bit;
-    for (byte = 0; byte < 256; byte++)
-        for (bit = 0; bit < 8; bit++)
-            table[byte * 8 + bit] = (char)('0' + ((byte >> (7 - bit)) & 1));
 }
 
 static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
@@ -99,15 +90,17 @@ static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     state->scratch_size = scratch_bytes(writer);
     state->scratch = malloc(state->scratch_size);
-    /* width <= RAYO_MAX_DIMENSION: no overflow. */
-    state->digits = malloc(((size_t)writer->info.width + 7) & ~(size_t)7);
-    if (state->scratch == NULL || state->digits == NULL) {
+    state->plain_bits = writer->options.plain &&
+                                writer->info.sample == RAYO_SAMPLE_BIT
+                            ? rayo_pbm_plain_new(writer->info.width)
+                            : NULL;
+    if (state->scratch == NULL ||
+        (state->plain_bits == NULL && writer->options.plain &&
+         writer->info.sample == RAYO_SAMPLE_BIT)) {
         free(state->scratch);
-        free(state->digits);
         free(state);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     }
-    fill_bits_table(state->bits_table);
     writer->state = state;
     if (writer->options.format == RAYO_FORMAT_PBM)
         length = snprintf(header, sizeof header, "P%d\n%lu %lu\n",
@@ -123,38 +116,10 @@ static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
     status = rayo_output_write(writer->out, header, (size_t)length, err);
     if (status != RAYO_OK) {
         free(state->scratch);
-        free(state->digits);
+        rayo_pbm_plain_free(state->plain_bits);
         free(state);
     }
     return status;
-}
-
-/*
- * The row's digits, eight per byte from the table, into digits (a
- * multiple of 8 long), then cut into lines: whole lines are copies of a
- * constant size, which compilers turn into a few vector moves.
- */
-static size_t format_plain_bits(const rayo_writer *writer,
-                                const unsigned char *row, unsigned char *out)
-{
-    const pnm_state *state = writer->state;
-    const char *table = state->bits_table; /* locals: no reloads after */
-    char *digits = state->digits;          /* each store */
-    uint32_t width = writer->info.width;
-    size_t bytes = ((size_t)width + 7) / 8, i, x = 0, n = 0;
-    for (i = 0; i < bytes; i++)
-        memcpy(digits + 8 * i, table + 8 * row[i], 8);
-    for (; width - x >= PLAIN_LINE_MAX; x += PLAIN_LINE_MAX) {
-        memcpy(out + n, digits + x, PLAIN_LINE_MAX);
-        n += PLAIN_LINE_MAX;
-        out[n++] = '\n';
-    }
-    if (x < width) {
-        memcpy(out + n, digits + x, width - x);
-        n += width - x;
-        out[n++] = '\n';
-    }
-    return n;
 }
 
 static unsigned sample_at(const rayo_image_info *info,
@@ -261,7 +226,7 @@ static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
         if (!writer->options.plain)
             n = format_raw(writer, row, state->scratch);
         else if (writer->info.sample == RAYO_SAMPLE_BIT)
-            n = format_plain_bits(writer, row, state->scratch);
+            n = rayo_pbm_plain_row(state->plain_bits, row, state->scratch);
         else
             n = format_plain_samples(writer, row, state->scratch);
         status = rayo_output_write(writer->out, state->scratch, n, err);
@@ -276,7 +241,7 @@ static void pnm_discard(rayo_writer *writer)
     pnm_state *state = writer->state;
     if (state != NULL) {
         free(state->scratch);
-        free(state->digits);
+        rayo_pbm_plain_free(state->plain_bits);
         free(state);
         writer->state = NULL;
     }

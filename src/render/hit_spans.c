@@ -74,6 +74,8 @@ typedef struct sphere_row {
     double p, q, k;        /* l.a, l.b, l.l - R^2 */
     double surely_hit;     /* E + T */
     double surely_missed;  /* -(E + 3T) */
+    double hit_level;      /* k + surely_hit */
+    double miss_level;     /* k + surely_missed */
 } sphere_row;
 
 static int bit_set(const unsigned char *out, int64_t i)
@@ -121,35 +123,28 @@ static void exact_range(const row_frame *f, const rayo_sphere *sphere,
         exact_test(f, sphere, i);
 }
 
-/* Our estimate of g at pixel i; *front gets the sign of l.d. */
-static double estimate(const row_frame *f, const sphere_row *s, int64_t i,
-                       int *front)
+/*
+ * Our estimate of g at pixel i against a threshold, without dividing:
+ * g > t  <=>  (p x + q)^2 > (k + t) |d|^2.  Returns -1 when pixel i is
+ * behind (l.d <= 0) or its g is below s->surely_missed, 1 when above
+ * s->surely_hit, else 0.
+ */
+static int classify(const row_frame *f, const sphere_row *s, int64_t i)
 {
     double x = (double)i - f->half_width;
     double num = s->p * x + s->q;
     double den = (f->a2 * x + 2.0 * f->ab) * x + f->b2;
-    *front = num > 0.0;
-    return num * num / den - s->k;
+    double square = num * num;
+    if (!(num > 0.0) || square < s->miss_level * den)
+        return -1;
+    return square > s->hit_level * den ? 1 : 0;
 }
 
 /* 1 when pixel i is proven outside M (see the top of the file). */
 static int surely_outside(const row_frame *f, const sphere_row *s,
                           int64_t i)
 {
-    int front;
-    double g = estimate(f, s, i, &front);
-    return !front || g < s->surely_missed;
-}
-
-/* 1: the exact test surely hits pixel i; -1: i is surely outside M;
- * 0: only the exact test can tell. */
-static int classify(const row_frame *f, const sphere_row *s, int64_t i)
-{
-    int front;
-    double g = estimate(f, s, i, &front);
-    if (!front || g < s->surely_missed)
-        return -1;
-    return g > s->surely_hit ? 1 : 0;
+    return classify(f, s, i) < 0;
 }
 
 /*
@@ -159,9 +154,8 @@ static int classify(const row_frame *f, const sphere_row *s, int64_t i)
 static int row_misses(const row_frame *f, const sphere_row *s)
 {
     double p = s->p, q = s->q;
-    double h2 = (p * p * f->b2 - 2.0 * p * q * f->ab + q * q * f->a2) /
-                f->gram;
-    return h2 < s->k + s->surely_missed;
+    double h2_gram = p * p * f->b2 - 2.0 * p * q * f->ab + q * q * f->a2;
+    return h2_gram < s->miss_level * f->gram;
 }
 
 /*
@@ -191,7 +185,7 @@ static int peak_window(const row_frame *f, const sphere_row *s, double *lo,
     if (d < 0.0) {
         /* A minimum: the supremum is |p|/|a|, towards the end where p x
          * grows. */
-        if (p * p / f->a2 < s->k + s->surely_missed)
+        if (p * p < s->miss_level * f->a2)
             return 0;
         *lo = *hi = p > 0.0 ? INFINITY : -INFINITY;
         return 1;
@@ -350,6 +344,8 @@ static int trace_sphere(const row_frame *f, const rayo_sphere *sphere)
     s.k = ll - rr;
     s.surely_hit = e + t;
     s.surely_missed = -(e + 3.0 * t);
+    s.hit_level = s.k + s.surely_hit;
+    s.miss_level = s.k + s.surely_missed;
     if (s.k < -margin) {
         fill_span(f->out, 0, f->width - 1);
         return 1;

@@ -1,0 +1,147 @@
+/*
+ * pbm_plain.c - plain PBM rows from two templates.
+ *
+ * A formatted row has its newlines in the same places whatever the
+ * pixels, so the formatter keeps the row spelled out all white and all
+ * black.  A row starts as a copy of the white one; each run of black
+ * bytes (0xFF) is copied from the black one, newlines included; only the
+ * bytes that mix black and white are spelled out, eight digits at a time
+ * from a table (digit by digit where a line break falls inside the
+ * byte).  Rendered rows are long runs of one colour, so a row costs a
+ * few copies instead of one store per eight pixels; a row of noise costs
+ * what spelling out every byte does.
+ */
+#include "pbm_plain.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define LINE_MAX_DIGITS 70
+
+struct rayo_pbm_plain {
+    uint32_t width;
+    size_t size;          /* bytes of a formatted row */
+    unsigned char *white; /* the row of all 0 digits */
+    unsigned char *black; /* the row of all 1 digits */
+    char table[256 * 8];  /* eight digits for each byte */
+};
+
+/* Where digit x of a row goes: one newline after every full line. */
+static size_t position(size_t x)
+{
+    return x + x / LINE_MAX_DIGITS;
+}
+
+size_t rayo_pbm_plain_row_size(uint32_t width)
+{
+    return (size_t)width + ((size_t)width + LINE_MAX_DIGITS - 1) /
+                               LINE_MAX_DIGITS;
+}
+
+static void fill_template(unsigned char *row, uint32_t width, char digit)
+{
+    size_t x;
+    for (x = 0; x < width; x++) {
+        row[position(x)] = (unsigned char)digit;
+        if ((x + 1) % LINE_MAX_DIGITS == 0 || x + 1 == width)
+            row[position(x) + 1] = '\n';
+    }
+}
+
+rayo_pbm_plain *rayo_pbm_plain_new(uint32_t width)
+{
+    rayo_pbm_plain *plain = malloc(sizeof *plain);
+    int byte, bit;
+    if (plain == NULL)
+        return NULL;
+    plain->width = width;
+    plain->size = rayo_pbm_plain_row_size(width);
+    plain->white = malloc(plain->size);
+    plain->black = malloc(plain->size);
+    if (plain->white == NULL || plain->black == NULL) {
+        rayo_pbm_plain_free(plain);
+        return NULL;
+    }
+    fill_template(plain->white, width, '0');
+    fill_template(plain->black, width, '1');
+    for (byte = 0; byte < 256; byte++)
+        for (bit = 0; bit < 8; bit++)
+            plain->table[byte * 8 + bit] =
+                (char)('0' + ((byte >> (7 - bit)) & 1));
+    return plain;
+}
+
+void rayo_pbm_plain_free(rayo_pbm_plain *plain)
+{
+    if (plain == NULL)
+        return;
+    free(plain->white);
+    free(plain->black);
+    free(plain);
+}
+
+/* Digits first..last (inclusive) from the black template. */
+static void copy_black(const rayo_pbm_plain *plain, unsigned char *out,
+                       size_t first, size_t last)
+{
+    size_t from = position(first), to = position(last) + 1;
+    memcpy(out + from, plain->black + from, to - from);
+}
+
+/* The digits of byte k, which holds both colours. */
+static void spell_byte(const rayo_pbm_plain *plain, unsigned char *out,
+                       size_t k, unsigned byte)
+{
+    size_t x = 8 * k;
+    size_t count = plain->width - x < 8 ? plain->width - x : 8;
+    size_t d;
+    if (count == 8 && x % LINE_MAX_DIGITS <= LINE_MAX_DIGITS - 8) {
+        memcpy(out + position(x), plain->table + 8 * byte, 8);
+        return;
+    }
+    for (d = 0; d < count; d++)
+        out[position(x + d)] = (unsigned char)('0' + ((byte >> (7 - d)) & 1));
+}
+
+/* The first k at or after start where row[k] is not 0, or bytes. */
+static size_t skip_white(const unsigned char *row, size_t start,
+                         size_t bytes)
+{
+    size_t k = start;
+    for (;;) {
+        uint64_t word;
+        if (bytes - k < 8)
+            break;
+        memcpy(&word, row + k, 8);
+        if (word != 0)
+            break;
+        k += 8;
+    }
+    while (k < bytes && row[k] == 0)
+        k++;
+    return k;
+}
+
+size_t rayo_pbm_plain_row(const rayo_pbm_plain *plain,
+                          const unsigned char *row, unsigned char *out)
+{
+    size_t bytes = ((size_t)plain->width + 7) / 8, k = 0;
+    memcpy(out, plain->white, plain->size);
+    for (;;) {
+        k = skip_white(row, k, bytes);
+        if (k == bytes)
+            break;
+        if (row[k] == 0xFF) {
+            size_t j = k + 1, end;
+            while (j < bytes && row[j] == 0xFF)
+                j++;
+            end = 8 * j < plain->width ? 8 * j : plain->width;
+            copy_black(plain, out, 8 * k, end - 1);
+            k = j;
+        } else {
+            spell_byte(plain, out, k, row[k]);
+            k++;
+        }
+    }
+    return plain->size;
+}

@@ -1,0 +1,31 @@
+/*
+ * pbm_plain.h - spelling out rows of bits as plain PBM text ("0"/"1"
+ * digits, lines of at most 70, a newline after each row).  Private to
+ * pnm_write.c, which owns the header, the output and every other format;
+ * this file exists because the seed job spends most of its time here.
+ */
+#ifndef RAYO_PBM_PLAIN_H
+#define RAYO_PBM_PLAIN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct rayo_pbm_plain rayo_pbm_plain;
+
+/* Bytes one formatted row of this width takes, newlines included. */
+size_t rayo_pbm_plain_row_size(uint32_t width);
+
+/* A formatter for rows of width pixels (1..RAYO_MAX_DIMENSION); NULL
+ * when out of memory. */
+rayo_pbm_plain *rayo_pbm_plain_new(uint32_t width);
+
+void rayo_pbm_plain_free(rayo_pbm_plain *plain);
+
+/*
+ * Formats row (packed bits, most significant first; padding bits
+ * ignored) into out, rayo_pbm_plain_row_size() bytes, which it returns.
+ */
+size_t rayo_pbm_plain_row(const rayo_pbm_plain *plain,
+                          const unsigned char *row, unsigned char *out);
+
+#endif
