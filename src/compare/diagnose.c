@@ -299,15 +299,20 @@ static rayo_status judge_close(const cmp_mask *ref, const cmp_mask *image,
 
 /* Whether the reference's centroid, moved as the mistake would move it,
  * lands near the image's: a cheap test that spares most candidates a
- * full pass.  Inversion moves the centroid unpredictably: always tried. */
+ * full pass.  Inversion, which moves the centroid unpredictably, is
+ * judged by the number of mismatches instead. */
 static int centroid_agrees(const cmp_mask *ref, const cmp_shape *rs,
-                           const cmp_shape *is, cmp_transform_kind kind)
+                           const cmp_shape *is, double mismatches,
+                           cmp_transform_kind kind)
 {
     double w = ref->width, h = ref->height;
     double mx = rs->cx + floor(w / 2), my = rs->cy + floor(h / 2), t;
     double slack = fmax(CENTROID_SLACK_MIN,
                         CENTROID_SLACK * sqrt((double)rs->black));
-    if (kind == CMP_INVERT || rs->black == 0 || is->black == 0)
+    if (kind == CMP_INVERT) /* leaves known - m of m mismatches: it can
+                               halve them only if m >= 2/3 of the frame */
+        return 3 * mismatches >= 2 * (double)ref->width * ref->height;
+    if (rs->black == 0 || is->black == 0)
         return 1;
     if (kind == CMP_FLIP_V || kind == CMP_FLIP_BOTH)
         my = h - 1 - my;
@@ -337,7 +342,7 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
          i++) {
         t.kind = plain[i];
         if ((t.kind != CMP_TRANSPOSE || ref->width == ref->height) &&
-            centroid_agrees(ref, rs, is, t.kind))
+            centroid_agrees(ref, rs, is, (double)report->mismatches, t.kind))
             s = consider(ch, ref, image, outline, report, &t, err);
     }
     if (s != RAYO_OK || !report->shapes_measured || exact_found(ch))
