@@ -11,6 +11,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -29,11 +30,16 @@ static const char *const course_flags[] = {"-std=c99", "-Wall", "-Werror",
 static rayo_status say_command(grade_context *ctx, rayo_grade_item *item,
                                rayo_error *err)
 {
-    const char *sources = ctx->source_count == 1 ? ctx->sources[0]
-                                                 : "SOURCES.c";
+    char sources[400];
+    size_t i, n = 0;
+    sources[0] = '\0';
+    for (i = 0; i < ctx->source_count && n < sizeof sources; i++)
+        n += (size_t)snprintf(sources + n, sizeof sources - n, "%s%s",
+                              i > 0 ? " " : "", ctx->sources[i]);
     return grade_say(item, err, "%s -std=c99 -Wall -Werror -pedantic -o "
-                                "programa %s -lm",
-                     ctx->cc[0], sources);
+                                "programa %s%s -lm",
+                     ctx->cc[0], sources,
+                     n >= sizeof sources ? "..." : "");
 }
 
 /* The text after "error: " on the first line that has it, or NULL. */
