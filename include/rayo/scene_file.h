@@ -55,7 +55,8 @@ rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
                                   rayo_error *err);
 
 /*
- * Reads and parses the file at path (at most RAYO_SCENE_MAX_BYTES).
+ * Reads and parses the file at path (at most RAYO_SCENE_MAX_BYTES);
+ * "-" is standard input, called "standard input" in messages.
  * RAYO_ERR_IO, naming the path and the system's reason, when it cannot
  * be read.
  */

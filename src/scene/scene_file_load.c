@@ -2,9 +2,10 @@
  * scene_file_load.c - reading a scene file from disk into memory and
  * handing it to the parser (scene_file.c).
  *
- * The whole file is read, up to RAYO_SCENE_MAX_BYTES: a regular file
- * larger than that is refused before a byte is read; a pipe is refused
- * once it has delivered that much.  Failures name the path and the
+ * The whole file ("-": standard input, named so in messages) is read,
+ * up to RAYO_SCENE_MAX_BYTES: a regular file larger than that is refused
+ * before a byte is read; a pipe is refused once it has delivered that
+ * much.  Failures name the path and the
  * system's reason.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -85,21 +86,23 @@ rayo_status rayo_scene_file_load(rayo_scene_file *file, const char *path,
     char *text = NULL;
     size_t length = 0;
     rayo_status status;
-    FILE *in = fopen(path, "rb");
+    int from_stdin = strcmp(path, "-") == 0;
+    const char *name = from_stdin ? "standard input" : path;
+    FILE *in = from_stdin ? stdin : fopen(path, "rb");
     file->scene = NULL;
     if (in == NULL)
         return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
                               strerror(errno));
     if (fstat(fileno(in), &info) == 0 && S_ISREG(info.st_mode) &&
-        (unsigned long long)info.st_size > RAYO_SCENE_MAX_BYTES) {
+        (unsigned long long)info.st_size > RAYO_SCENE_MAX_BYTES)
+        status = too_large(name, err);
+    else
+        status = read_all(in, name, &text, &length, err);
+    if (!from_stdin)
         fclose(in);
-        return too_large(path, err);
-    }
-    status = read_all(in, path, &text, &length, err);
-    fclose(in);
     if (status != RAYO_OK)
         return status;
-    status = rayo_scene_file_parse(file, path, text, length, err);
+    status = rayo_scene_file_parse(file, name, text, length, err);
     free(text);
     return status;
 }

@@ -13,6 +13,13 @@ cmp -s "$TMP/default.pbm" "$TMP/out"
 ok $? "ej1.scene is byte for byte the default render"
 is "$(wc -c <"$TMP/err" | tr -d ' ')" 0 "nothing on stderr"
 
+# "-" reads the scene from standard input, named so in messages.
+rayo render - <"$EX/ej1.scene" >"$TMP/stdin.pbm"
+cmp -s "$TMP/default.pbm" "$TMP/stdin.pbm"
+ok $? "render - reads the scene from standard input"
+printf 'sphere 0 0 1 -1\n' >"$TMP/neg.scene"
+expect_usage_error "an error on standard input" "^rayo: standard input:1:14: radius -1" render - <"$TMP/neg.scene"
+
 # Camera options override the scene's: ej1.scene at another size and field
 # of view is the default sphere at that size and field of view.
 rayo render "$EX/ej1.scene" -W 97 -H 61 --fov 60 >"$TMP/a.pbm"
