@@ -360,7 +360,9 @@ rayo_status rayo_pbm_check(const void *data, size_t size, uint32_t width,
                  "write the image there (./programa > imagen.pbm)");
         return s.status;
     }
-    if (check_magic(&s) && check_dimensions(&s, width, height, &w, &h)) {
+    if (!check_magic(&s))
+        return s.status; /* not text PBM: line lengths mean nothing */
+    if (check_dimensions(&s, width, height, &w, &h)) {
         rayo_image_info info = rayo_image_info_bit((uint32_t)w,
                                                    (uint32_t)h);
         rayo_status status = rayo_image_create(image, &info, err);

@@ -163,6 +163,12 @@ static void test_formats(void)
                 "'hola mundo\\n'"),
        "text: quoted");
     release(&o);
+
+    check("P6\n4 2\n255\n0000000000000000000000000000000000000000000000"
+          "000000000000000000000000000000000000000000000000\n", 4, 2, &o);
+    is_int(o.item.line_count, 1, "P6: no line-length warning on binary "
+                                 "data");
+    release(&o);
 }
 
 static void test_raster(void)
