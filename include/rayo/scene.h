@@ -14,7 +14,11 @@
  * answers every query by testing every object in turn: correct, slow on
  * big scenes.  Benchmarks compare the two this way.
  *
- * Conventions (b2 and the shading code rely on these):
+ * Scenes of at most 12 spheres and triangles get no hierarchy (testing
+ * each is faster) but count as prepared.  docs/geometry.md explains the
+ * shapes' arithmetic and the hierarchy.
+ *
+ * Conventions (the shading code relies on these):
  *   - object indices count every object in insertion order, whatever its
  *     kind: the first sphere, plane or triangle added is object 0;
  *   - material 0 exists in every scene: white, ka = kd = 1, ks = 0,
@@ -164,7 +168,7 @@ const rayo_material *rayo_scene_material(const rayo_scene *scene,
  */
 rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err);
 
-/* 1 when rayo_scene_prepare built a hierarchy that is still current. */
+/* 1 when rayo_scene_prepare ran after the last add. */
 int rayo_scene_is_prepared(const rayo_scene *scene);
 
 /*
