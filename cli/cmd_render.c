@@ -12,6 +12,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli.h"
 #include "progress.h"
@@ -284,6 +285,13 @@ static const char *upper_name(rayo_format format)
     return names[format];
 }
 
+/* 1 for a regular file or a path that does not exist yet. */
+static int is_regular_or_new(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) != 0 || S_ISREG(st.st_mode);
+}
+
 static int choose_format(const render_request *req, rayo_format *format)
 {
     rayo_error err;
@@ -297,7 +305,9 @@ static int choose_format(const render_request *req, rayo_format *format)
                                    "%s or png for a %s render",
                                    req->format, ext,
                                    rayo_shade_mode_name(mode));
-    } else if (strcmp(req->output, "-") == 0) {
+    } else if (strcmp(req->output, "-") == 0 ||
+               !is_regular_or_new(req->output)) {
+        /* Standard output, devices and pipes: the mode's Netpbm format. */
         *format = netpbm;
     } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
         return cli_usage_error("--output: cannot tell the format of '%s' "
