@@ -105,8 +105,8 @@ FUZZ_SUPPORT_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(filter-out \
     fuzz/fuzz_%.c fuzz/replay.c,$(sort $(wildcard fuzz/*.c)))) \
     $(filter-out $(BUILD)/obj/cli/main.o $(BUILD)/obj/cli/cmd_%.o,$(CLI_OBJ))
 FUZZ_REPLAY := $(FUZZ_NAMES:%=$(BUILD)/fuzz/replay-%)
-# Defined after the check rule read its prerequisites, so named here.
-check: $(FUZZ_REPLAY)
+# Defined after the check rules read their prerequisites, so named here.
+check check-valgrind: $(FUZZ_REPLAY)
 
 $(BUILD)/fuzz/replay-%: $(BUILD)/obj/fuzz/fuzz_%.o $(BUILD)/obj/fuzz/replay.o \
     $(FUZZ_SUPPORT_OBJ) $(LIB)
