@@ -29,7 +29,9 @@ typedef struct parser {
     scene_lexer lx;
     rayo_scene_file *file;
     material_name *names;
-    size_t name_count, name_capacity, last_found;
+    size_t name_count, name_capacity;
+    size_t *slots; /* hash table of names: position + 1, 0 when empty */
+    size_t slot_capacity; /* a power of two, at least twice name_count */
     unsigned long camera_line, shade_line, samples_line, depth_line;
     unsigned long ambient_line, background_line;
 } parser;
@@ -482,30 +484,75 @@ static int valid_name(const scene_word *word)
     return 1;
 }
 
+/* FNV-1a over a name's bytes.  Names are looked up in a hash table, so
+   2^20 materials and 2^24 objects naming them parse in linear time. */
+static size_t name_hash(const char *text, size_t length)
+{
+    unsigned long long h = 14695981039346656037ull;
+    size_t i;
+    for (i = 0; i < length; i++) {
+        h ^= (unsigned char)text[i];
+        h *= 1099511628211ull;
+    }
+    return (size_t)h;
+}
+
+/* The slot that holds the name, or the empty slot where it would go. */
+static size_t *name_slot(const parser *p, const char *text, size_t length)
+{
+    size_t mask = p->slot_capacity - 1;
+    size_t i = name_hash(text, length) & mask;
+    for (;; i = (i + 1) & mask) {
+        const material_name *m;
+        if (p->slots[i] == 0)
+            return &p->slots[i];
+        m = &p->names[p->slots[i] - 1];
+        if (strlen(m->text) == length && memcmp(m->text, text, length) == 0)
+            return &p->slots[i];
+    }
+}
+
+/* Doubles the table (rehashing every name) when one more name would
+   fill it past half; 0 when out of memory. */
+static int reserve_slot(parser *p)
+{
+    size_t capacity = p->slot_capacity ? 2 * p->slot_capacity : 64;
+    size_t *old = p->slots;
+    size_t i;
+    if (2 * (p->name_count + 1) <= p->slot_capacity)
+        return 1;
+    if (capacity > (size_t)-1 / sizeof *p->slots)
+        return 0;
+    p->slots = calloc(capacity, sizeof *p->slots);
+    if (p->slots == NULL) {
+        p->slots = old;
+        return 0;
+    }
+    p->slot_capacity = capacity;
+    for (i = 0; i < p->name_count; i++) {
+        const material_name *m = &p->names[i];
+        *name_slot(p, m->text, strlen(m->text)) = i + 1;
+    }
+    free(old);
+    return 1;
+}
+
 static material_name *find_name(parser *p, const scene_word *word)
 {
-    size_t i;
-    if (p->last_found < p->name_count) {
-        material_name *m = &p->names[p->last_found];
-        if (strlen(m->text) == word->length &&
-            memcmp(m->text, word->text, word->length) == 0)
-            return m;
-    }
-    for (i = 0; i < p->name_count; i++) {
-        material_name *m = &p->names[i];
-        if (strlen(m->text) == word->length &&
-            memcmp(m->text, word->text, word->length) == 0) {
-            p->last_found = i;
-            return m;
-        }
-    }
-    return NULL;
+    size_t *slot;
+    if (p->slot_capacity == 0)
+        return NULL;
+    slot = name_slot(p, word->text, word->length);
+    return *slot ? &p->names[*slot - 1] : NULL;
 }
 
 static rayo_status remember_name(parser *p, const scene_word *word,
                                  unsigned id)
 {
     material_name *m;
+    if (!reserve_slot(p))
+        return scene_lexer_fail(&p->lx, 1, RAYO_ERR_NOMEM,
+                                "out of memory for material names");
     if (p->name_count == p->name_capacity) {
         size_t capacity = p->name_capacity ? 2 * p->name_capacity : 16;
         material_name *grown;
@@ -524,6 +571,7 @@ static rayo_status remember_name(parser *p, const scene_word *word,
     m->text[word->length] = '\0';
     m->id = id;
     m->line = p->lx.line;
+    *name_slot(p, m->text, word->length) = p->name_count;
     return RAYO_OK;
 }
 
@@ -770,6 +818,7 @@ rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
     if (status == RAYO_OK)
         status = rayo_scene_prepare(file->scene, err);
     free(p.names);
+    free(p.slots);
     if (status != RAYO_OK)
         rayo_scene_file_free(file);
     return status;
