@@ -8,7 +8,7 @@
 set -u
 : "${RAYO:?run through make check}"
 : "${RAYO_SOURCE:=$(pwd)}"
-SEED="$RAYO_SOURCE/../shared/seed"
+SEED="$RAYO_SOURCE/tests/data/seed"
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/rayo-test.XXXXXX")
 trap 'rm -rf "$TMP"' EXIT
 tap_n=0
