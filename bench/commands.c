@@ -8,8 +8,10 @@
  *                                          one more for peak memory
  *   setup<TAB>COMMAND                      run once, untimed
  *   target<TAB>LABEL<TAB>KEY_A<TAB>KEY_B<TAB><=|>=<TAB>LIMIT
- *                                          the ratio of two rows' times
- *                                          (KEY_A_s / KEY_B_s) as a target
+ *                                          the ratio of two figures
+ *                                          (KEY_A / KEY_B) as a target;
+ *                                          a row KEY has figures KEY_s
+ *                                          (time) and KEY_rss_kib
  * Commands run under /bin/sh with $RAYO (the command under test),
  * $RAYO_BUILD (its build folder), $RAYO_SOURCE (the repository) and
  * $BENCH_TMP (a scratch folder, removed afterwards) in the environment,
@@ -73,15 +75,11 @@ static int split(char *line, char *fields[MAX_FIELDS])
     return n;
 }
 
-/* target LABEL KEY_A KEY_B <=|>= LIMIT: KEY_A_s / KEY_B_s. */
+/* target LABEL KEY_A KEY_B <=|>= LIMIT: figure KEY_A / figure KEY_B. */
 static void ratio_target(bench_table *table, char *fields[MAX_FIELDS])
 {
-    char key_a[LINE_MAX_BYTES + 8], key_b[LINE_MAX_BYTES + 8];
-    double a, b;
-    snprintf(key_a, sizeof key_a, "%s_s", fields[2]);
-    snprintf(key_b, sizeof key_b, "%s_s", fields[3]);
-    a = bench_value(table, key_a);
-    b = bench_value(table, key_b);
+    double a = bench_value(table, fields[2]);
+    double b = bench_value(table, fields[3]);
     bench_target(table, fields[1], a > 0 && b > 0 ? a / b : -1,
                  atof(fields[5]), strcmp(fields[4], "<=") == 0);
 }
