@@ -8,10 +8,11 @@
  * to the sink, and frees its slot for a later band.  A band's pixels
  * depend only on its rows, never on which thread rendered it, so the
  * output is identical for any thread count.  With one thread nothing is
- * spawned, and nothing either when the first band, rendered on the
- * calling thread as a probe, shows the whole frame would take less than
- * SERIAL_BELOW_SECONDS (the seed job takes tens of microseconds with the
- * span fast path; starting threads would cost more than they save).
+ * spawned.  With more, bands are first rendered and delivered on the
+ * calling thread, and the workers start only once the frame, at the pace
+ * of the bands done so far, would take SERIAL_BELOW_SECONDS or more: the
+ * seed job takes tens of microseconds with the span fast path, and
+ * starting threads would cost more than they save.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -31,7 +32,7 @@
 #define BANDS_PER_THREAD 8u
 /* Slots per thread in the ring of band buffers. */
 #define SLOTS_PER_THREAD 3u
-/* Frames the probe band says are quicker than this stay on one thread. */
+/* Frames projected to take less than this stay on the calling thread. */
 #define SERIAL_BELOW_SECONDS 0.003
 
 typedef struct band_job {
@@ -147,9 +148,10 @@ static rayo_status run_serial(band_job *job, uint32_t band,
     return RAYO_OK;
 }
 
+/* Workers render the bands from `first` on; this thread delivers them. */
 static rayo_status run_parallel(band_job *job, unsigned threads,
-                                rayo_row_sink sink, void *context,
-                                rayo_error *err)
+                                uint32_t first, rayo_row_sink sink,
+                                void *context, rayo_error *err)
 {
     pthread_t *workers = malloc(threads * sizeof *workers);
     rayo_status status = RAYO_OK;
@@ -157,6 +159,8 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     uint32_t band;
     if (workers == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    job->next_band = first;
+    job->delivered = first;
     pthread_mutex_init(&job->lock, NULL);
     pthread_cond_init(&job->band_ready, NULL);
     pthread_cond_init(&job->slot_free, NULL);
@@ -166,9 +170,10 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
         started++;
     }
     if (started == 0) {
-        status = run_serial(job, 0, sink, context, err);
+        status = run_serial(job, first, sink, context, err);
     } else {
-        for (band = 0; band < job->band_count && status == RAYO_OK; band++) {
+        for (band = first; band < job->band_count && status == RAYO_OK;
+             band++) {
             uint32_t slot = band % job->slot_count;
             pthread_mutex_lock(&job->lock);
             while (job->slot_band[slot] != band)
@@ -203,24 +208,28 @@ static double seconds_now(void)
 }
 
 /*
- * Renders band 0 here and times it: a cheap frame continues serially,
- * any other starts the workers with band 0 already in its slot.
+ * Renders and delivers bands on this thread while the frame, projected
+ * from the bands done so far, stays under SERIAL_BELOW_SECONDS; hands the
+ * rest to the workers as soon as it does not.
  */
-static rayo_status run_probed(band_job *job, unsigned threads,
-                              rayo_row_sink sink, void *context,
-                              rayo_error *err)
+static rayo_status run_adaptive(band_job *job, unsigned threads,
+                                rayo_row_sink sink, void *context,
+                                rayo_error *err)
 {
     double start = seconds_now();
-    rayo_status status;
-    render_band(job, 0);
-    if ((seconds_now() - start) * job->band_count < SERIAL_BELOW_SECONDS) {
-        status = deliver(job, 0, sink, context, err);
-        return status != RAYO_OK ? status
-                                 : run_serial(job, 1, sink, context, err);
+    uint32_t band;
+    for (band = 0; band < job->band_count; band++) {
+        rayo_status status;
+        double spent = seconds_now() - start;
+        if (band > 0 &&
+            spent / band * job->band_count >= SERIAL_BELOW_SECONDS)
+            return run_parallel(job, threads, band, sink, context, err);
+        render_band(job, band);
+        status = deliver(job, band, sink, context, err);
+        if (status != RAYO_OK)
+            return status;
     }
-    job->slot_band[0] = 0;
-    job->next_band = 1;
-    return run_parallel(job, threads, sink, context, err);
+    return RAYO_OK;
 }
 
 rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
@@ -268,7 +277,7 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
         job.slot_band[i] = UINT32_MAX;
     status = threads == 1
                  ? run_serial(&job, 0, sink, sink_context, err)
-                 : run_probed(&job, threads, sink, sink_context, err);
+                 : run_adaptive(&job, threads, sink, sink_context, err);
     free(job.slots);
     free(job.slot_band);
     return status;
