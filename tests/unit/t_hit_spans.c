@@ -211,6 +211,11 @@ static void fixed_scenes(tally *t)
         {999, 5, 90, 5.0, 0.0, 0.0, 1.0}, /* on the right axis */
         {999, 5, 90, 0.0, 0.0, -3.0, 1.0}, /* behind */
         {999, 5, 90, 0.0, 0.0, 0.0, 1.0},  /* centred on the camera */
+        {301, 7, 90, 0.0, 0.0, 0.0, 1e-300}, /* a point at the camera */
+        {301, 7, 90, 1e150, 1e150, 3e150, 2e150}, /* huge */
+        {301, 7, 90, 1e160, 0.0, 1e160, 1.0}, /* past the error bounds */
+        {301, 7, 90, 1e-150, 1e-150, 3e-150, 2e-150}, /* tiny */
+        {257, 257, 90, 0.0, 0.0, 5.0, 1e-9}, /* smaller than a pixel */
     };
     size_t c;
     for (c = 0; c < sizeof cases / sizeof cases[0]; c++) {
@@ -263,6 +268,29 @@ static long render_differences(void)
     return wrong;
 }
 
+/* With a plane in the scene, spans decline and leave the row alone. */
+static int declines_planes(void)
+{
+    rayo_camera camera;
+    rayo_scene *scene;
+    rayo_error err;
+    unsigned char row[8];
+    int declined;
+    if (rayo_camera_init(&camera, 64, 4, 90, rayo_vec3_make(0, 0, 0),
+                         &err) != RAYO_OK ||
+        rayo_scene_create(&scene, &err) != RAYO_OK ||
+        rayo_scene_add_sphere(scene, rayo_vec3_make(0, 0, 3), 1, &err) !=
+            RAYO_OK ||
+        rayo_scene_add_plane(scene, rayo_vec3_make(0, -1, 0),
+                             rayo_vec3_make(0, 1, 0), 0, &err) != RAYO_OK)
+        abort();
+    memset(row, 0xA5, sizeof row);
+    declined = !rayo_hit_spans_row(&camera, scene, 2, row) &&
+               row[0] == 0xA5 && row[7] == 0xA5;
+    rayo_scene_free(scene);
+    return declined;
+}
+
 /* An optional argument runs that many random scenes (default 600). */
 int main(int argc, char **argv)
 {
@@ -280,6 +308,7 @@ int main(int argc, char **argv)
     is_int(t.padding, 0, "padding bits are zero");
     ok(t.black > 100000 && t.white > 100000,
        "the cases hold both hits and misses");
+    ok(declines_planes(), "a scene with a plane goes to the per-pixel loop");
     is_int(render_differences(), 0,
            "rayo_render_image (3 threads) equals the per-pixel test");
     return tap_done();
