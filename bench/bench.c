@@ -115,7 +115,22 @@ static void print_targets(const bench_table *table)
     }
 }
 
-/* Labels hold no quotes or backslashes; keys are identifiers. */
+/* text as a JSON string: quotes, backslashes and controls escaped. */
+static void json_string(FILE *out, const char *text)
+{
+    const unsigned char *p = (const unsigned char *)text;
+    fputc('"', out);
+    for (; *p != '\0'; p++) {
+        if (*p == '"' || *p == '\\')
+            fprintf(out, "\\%c", *p);
+        else if (*p < 0x20)
+            fprintf(out, "\\u%04x", *p);
+        else
+            fputc(*p, out);
+    }
+    fputc('"', out);
+}
+
 static void write_json(const bench_table *table, const char *path)
 {
     struct utsname host;
@@ -133,20 +148,22 @@ static void write_json(const bench_table *table, const char *path)
     fprintf(out, "  \"repeats\": %d,\n  \"figures\": [\n", table->repeats);
     for (i = 0; i < table->figure_count; i++) {
         const figure *f = &table->figures[i];
-        fprintf(out,
-                "    {\"key\": \"%s\", \"label\": \"%s\", \"value\": %.6g, "
-                "\"unit\": \"%s\"}%s\n",
-                f->key, f->label, f->value, f->unit,
-                i + 1 < table->figure_count ? "," : "");
+        fprintf(out, "    {\"key\": ");
+        json_string(out, f->key);
+        fprintf(out, ", \"label\": ");
+        json_string(out, f->label);
+        fprintf(out, ", \"value\": %.6g, \"unit\": ", f->value);
+        json_string(out, f->unit);
+        fprintf(out, "}%s\n", i + 1 < table->figure_count ? "," : "");
     }
     fprintf(out, "  ],\n  \"targets\": [\n");
     for (i = 0; i < table->target_count; i++) {
         const target *t = &table->targets[i];
-        fprintf(out,
-                "    {\"label\": \"%s\", \"value\": %.6g, \"%s\": %g, "
-                "\"met\": %s}%s\n",
-                t->label, t->value, t->at_most ? "at_most" : "at_least",
-                t->limit, target_met(t) ? "true" : "false",
+        fprintf(out, "    {\"label\": ");
+        json_string(out, t->label);
+        fprintf(out, ", \"value\": %.6g, \"%s\": %g, \"met\": %s}%s\n",
+                t->value, t->at_most ? "at_most" : "at_least", t->limit,
+                target_met(t) ? "true" : "false",
                 i + 1 < table->target_count ? "," : "");
     }
     fprintf(out, "  ]\n}\n");
