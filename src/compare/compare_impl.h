@@ -9,6 +9,10 @@
  *   outline    the reference's colour changes, column by column, giving
  *              for any row the distance of each pixel to the nearest
  *              pixel of the other colour;
+ *   near       which mismatches of a row lie within the tolerance of the
+ *              outline, without their distances;
+ *   farthest   the largest distance of a mismatch, from bounds and the
+ *              exact distances of the few that could be the largest;
  *   shape      the moments of a mask's black region and how ellipse-like
  *              it is;
  *   measure    one pass comparing the reference with a transformed image.
@@ -124,6 +128,56 @@ int cmp_outline_has_edges(const cmp_outline *outline);
 void cmp_outline_mismatch_distances(cmp_outline *outline, uint32_t y,
                                     int colour, const unsigned char *diff,
                                     int64_t *d2);
+
+/* The same for every pixel of row y (d2 has room for the width). */
+void cmp_outline_row_distances(cmp_outline *outline, uint32_t y, int colour,
+                               int64_t *d2);
+
+/* ---- near.c ---- */
+
+/* Tolerances the near test takes (its cost grows as their square). */
+#define CMP_NEAR_MAX_TOLERANCE 8.0
+#define CMP_NEAR_MAX_RADIUS 8
+
+typedef struct cmp_near cmp_near;
+
+rayo_status cmp_near_create(cmp_near **near, const cmp_mask *ref,
+                            double tolerance, rayo_error *err);
+void cmp_near_free(cmp_near *near);
+
+/* How many bits of diff (a packed row y of the reference's frame) have
+ * no reference pixel of colour `colour` within the tolerance. */
+uint64_t cmp_near_count_far(cmp_near *near, uint32_t y, int colour,
+                            const unsigned char *diff);
+
+/* ---- farthest.c ---- */
+
+typedef struct cmp_farthest cmp_farthest;
+
+/* For rows y0..y1-1 (y0 < y1), reading distances through outline. */
+rayo_status cmp_farthest_create(cmp_farthest **farthest,
+                                cmp_outline *outline, uint32_t width,
+                                uint32_t y0, uint32_t y1, rayo_error *err);
+void cmp_farthest_free(cmp_farthest *farthest);
+
+/* The sampled rows, i < cmp_farthest_samples, in increasing order; each
+ * must be given to cmp_farthest_sample, in that order, with its
+ * mismatches (black only in the reference, black only in the image; NULL
+ * for none), before any cmp_farthest_row, and the outline rewound to y0
+ * in between. */
+uint32_t cmp_farthest_samples(const cmp_farthest *farthest);
+uint32_t cmp_farthest_sample_row(const cmp_farthest *farthest, uint32_t i);
+void cmp_farthest_sample(cmp_farthest *farthest, uint32_t i,
+                         const unsigned char *reference_only,
+                         const unsigned char *image_only);
+
+/* The mismatches of row y (rows in increasing order) whose reference
+ * colour is reference_colour. */
+void cmp_farthest_row(cmp_farthest *farthest, uint32_t y,
+                      int reference_colour, const unsigned char *diff);
+
+/* The largest squared distance of a mismatch given, -1 for none. */
+int64_t cmp_farthest_best(const cmp_farthest *farthest);
 
 /* ---- shape.c ---- */
 

@@ -6,10 +6,16 @@
  *
  * Rows are packed bits, so agreement is counted a byte at a time with
  * XOR, AND and OR; distances are computed only for rows that have
- * mismatches, and only for the colour those mismatches need.  Large
- * frames are cut into bands of rows measured by one thread each (one per
- * CPU), each with its own cursors on the outline; the counts are summed
- * afterwards, so the result does not depend on the number of threads.
+ * mismatches, and only for the colour those mismatches need.  With the
+ * usual small tolerances no mismatch needs its own distance to be
+ * counted near or far (near.c tests whole words of a row at once), and
+ * only those that could be the farthest get an exact distance
+ * (farthest.c); larger tolerances take every mismatch's exact distance
+ * from the outline (outline.c).  Large frames are cut into bands of rows
+ * measured by one thread each (one per CPU), each with its own cursors on
+ * the outline; the counts are summed afterwards (the largest distance
+ * is the largest of the bands'), so the result does not depend on the
+ * number of threads.
  * The verdict and the diagnosis are not made here.
  */
 #include <math.h>
@@ -74,71 +80,40 @@ static void row_distances(cmp_outline *outline, uint32_t y, int colour,
     }
 }
 
-/* Tolerances up to this are checked by looking around each mismatch
- * (at most (2 * 8 + 1)^2 pixels) when the exact distance is not needed. */
-#define LOCAL_TOLERANCE 8.0
+/* What a band of rows measures distances with: near and farthest for
+ * small tolerances (far mismatches counted with whole words, exact
+ * distances only where they could be the largest), the outline's exact
+ * distances of every mismatch otherwise. */
+typedef struct band_tools {
+    cmp_outline *outline;  /* NULL: counts only */
+    cmp_near *near;        /* NULL: every mismatch's exact distance */
+    cmp_farthest *farthest; /* with near, when the maximum is asked for */
+    int exact;
+    double tolerance;
+} band_tools;
 
-/* Whether a reference pixel of colour `colour` lies within tolerance of
- * (x, y). */
-static int near_colour(const cmp_mask *ref, uint32_t x, uint32_t y,
-                       int colour, double tolerance)
-{
-    int64_t r = (int64_t)floor(tolerance), dx, dy;
-    double t2 = tolerance * tolerance;
-    for (dy = -r; dy <= r; dy++) {
-        int64_t j = (int64_t)y + dy;
-        const unsigned char *row;
-        if (j < 0 || j >= ref->height)
-            continue;
-        row = cmp_mask_row(ref, (uint32_t)j);
-        for (dx = -r; dx <= r; dx++) {
-            int64_t i = (int64_t)x + dx;
-            if (i < 0 || i >= ref->width || (double)(dx * dx + dy * dy) > t2)
-                continue;
-            if (rayo_bit_get(row, (uint32_t)i) == colour)
-                return 1;
-        }
-    }
-    return 0;
-}
-
-/* Counts the mismatches (bits of diff, reference colour `colour`) with
- * no pixel of the other colour within tolerance. */
-static void row_beyond(const cmp_mask *ref, uint32_t y, int colour,
-                       const unsigned char *diff, double tolerance,
-                       cmp_counts *c)
-{
-    size_t n = cmp_row_bytes(ref->width), k;
-    unsigned bit;
-    for (k = 0; k < n; k++)
-        if (diff[k] != 0)
-            for (bit = 0; bit < 8; bit++)
-                if (((diff[k] >> (7 - bit)) & 1u) &&
-                    !near_colour(ref, (uint32_t)(k * 8 + bit), y, !colour,
-                                 tolerance))
-                    c->beyond++;
-}
-
-static void row_mismatch_distances(const cmp_mask *ref, uint32_t y,
-                                   int colour, const unsigned char *diff,
-                                   cmp_outline *outline, int exact,
-                                   double tolerance, int64_t *d2,
+static void row_mismatch_distances(band_tools *t, uint32_t y, int colour,
+                                   const unsigned char *diff,
+                                   uint32_t width, int64_t *d2,
                                    cmp_counts *c)
 {
-    if (!exact && tolerance <= LOCAL_TOLERANCE)
-        row_beyond(ref, y, colour, diff, tolerance, c);
-    else
-        row_distances(outline, y, colour, diff, ref->width, tolerance, d2,
+    if (t->near == NULL) {
+        row_distances(t->outline, y, colour, diff, width, t->tolerance, d2,
                       c);
+        return;
+    }
+    c->beyond += cmp_near_count_far(t->near, y, !colour, diff);
+    if (t->farthest != NULL)
+        cmp_farthest_row(t->farthest, y, colour, diff);
 }
 
-static void measure_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
-                        int all_known, cmp_outline *outline, int exact,
-                        double tolerance, cmp_counts *c)
+/* Splits row y into reference only (diff), image only (tmp), both
+ * (known) and either (img). */
+static void split_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
+                      int all_known)
 {
     const unsigned char *a = cmp_mask_row(ref, y);
     size_t n = cmp_row_bytes(ref->width), k;
-    uint64_t ref_only, img_only;
     for (k = 0; k < n; k++) {
         unsigned m = all_known ? 0xFFu : r->known[k];
         unsigned ra = a[k] & m, ib = r->img[k] & m;
@@ -149,20 +124,26 @@ static void measure_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
         r->known[k] = (unsigned char)(ra & ib);        /* both, reused */
         r->img[k] = (unsigned char)(ra | ib);          /* either, reused */
     }
+}
+
+static void measure_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
+                        int all_known, band_tools *t, cmp_counts *c)
+{
+    size_t n = cmp_row_bytes(ref->width);
+    uint64_t ref_only, img_only;
+    split_row(ref, y, r, all_known);
     ref_only = cmp_popcount(r->diff, n);
     img_only = cmp_popcount(r->tmp, n);
     c->reference_only += ref_only;
     c->image_only += img_only;
     c->both += cmp_popcount(r->known, n);
     c->either += cmp_popcount(r->img, n);
-    if (outline == NULL)
+    if (t->outline == NULL)
         return;
     if (ref_only)
-        row_mismatch_distances(ref, y, 1, r->diff, outline, exact, tolerance,
-                               r->d2, c);
+        row_mismatch_distances(t, y, 1, r->diff, ref->width, r->d2, c);
     if (img_only)
-        row_mismatch_distances(ref, y, 0, r->tmp, outline, exact, tolerance,
-                               r->d2, c);
+        row_mismatch_distances(t, y, 0, r->tmp, ref->width, r->d2, c);
 }
 
 /* One band of rows, measured by one thread. */
@@ -178,26 +159,82 @@ typedef struct band {
     rayo_error err;
 } band;
 
+/* The near test and the farthest search, where they apply. */
+static rayo_status tools_make(band *b, band_tools *t)
+{
+    rayo_status s;
+    memset(t, 0, sizeof *t);
+    t->outline = b->outline;
+    t->exact = b->exact;
+    t->tolerance = b->tolerance;
+    if (b->outline == NULL || b->tolerance > CMP_NEAR_MAX_TOLERANCE ||
+        (b->exact && !cmp_outline_has_edges(b->outline)))
+        return RAYO_OK;
+    s = cmp_near_create(&t->near, b->ref, b->tolerance, &b->err);
+    if (s == RAYO_OK && b->exact)
+        s = cmp_farthest_create(&t->farthest, b->outline, b->ref->width,
+                                b->y0, b->y1, &b->err);
+    return s;
+}
+
+static void tools_free(band_tools *t)
+{
+    cmp_near_free(t->near);
+    cmp_farthest_free(t->farthest);
+}
+
+/* Gives the farthest search its sampled rows (the outline is left
+ * rewound to the band's first row). */
+static void sample_rows(band *b, band_tools *t, measure_rows *r)
+{
+    uint32_t i, w = b->ref->width;
+    for (i = 0; i < cmp_farthest_samples(t->farthest); i++) {
+        uint32_t y = cmp_farthest_sample_row(t->farthest, i);
+        int all = cmp_transform_row(b->t, b->image, w, b->ref->height, y,
+                                    r->img, r->known);
+        if (all < 0) {
+            cmp_farthest_sample(t->farthest, i, NULL, NULL);
+            continue;
+        }
+        split_row(b->ref, y, r, all);
+        cmp_farthest_sample(t->farthest, i, r->diff, r->tmp);
+    }
+    cmp_outline_rewind(b->outline, b->y0);
+}
+
+static void measure_rows_of(band *b, band_tools *t, measure_rows *r)
+{
+    uint32_t y, w = b->ref->width;
+    int64_t best;
+    if (b->outline != NULL)
+        cmp_outline_rewind(b->outline, b->y0);
+    if (t->farthest != NULL)
+        sample_rows(b, t, r);
+    for (y = b->y0; y < b->y1; y++) {
+        int all = cmp_transform_row(b->t, b->image, w, b->ref->height, y,
+                                    r->img, r->known);
+        if (all < 0)
+            continue;
+        b->counts.known += all ? w : cmp_popcount(r->known, cmp_row_bytes(w));
+        measure_row(b->ref, y, r, all, t, &b->counts);
+    }
+    if (t->farthest != NULL && (best = cmp_farthest_best(t->farthest)) > 0)
+        b->counts.max_distance = sqrt((double)best);
+}
+
 static void *measure_band(void *context)
 {
     band *b = context;
+    band_tools t;
     measure_rows r;
-    uint32_t y, w = b->ref->width;
     memset(&b->counts, 0, sizeof b->counts);
-    b->status = rows_alloc(&r, w, b->outline != NULL, &b->err);
+    b->status = rows_alloc(&r, b->ref->width, b->outline != NULL, &b->err);
     if (b->status != RAYO_OK)
         return NULL;
-    if (b->outline != NULL)
-        cmp_outline_rewind(b->outline, b->y0);
-    for (y = b->y0; y < b->y1; y++) {
-        int all = cmp_transform_row(b->t, b->image, w, b->ref->height, y,
-                                    r.img, r.known);
-        if (all < 0)
-            continue;
-        b->counts.known += all ? w : cmp_popcount(r.known, cmp_row_bytes(w));
-        measure_row(b->ref, y, &r, all, b->outline, b->exact, b->tolerance,
-                    &b->counts);
-    }
+    b->status = tools_make(b, &t);
+    if (b->status == RAYO_OK)
+        measure_rows_of(b, &t, &r);
+    tools_free(&t);
     free(r.img);
     free(r.d2);
     return NULL;

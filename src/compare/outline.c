@@ -358,6 +358,13 @@ static int next_run(const unsigned char *diff, uint32_t width, uint32_t x,
     return 1;
 }
 
+void cmp_outline_row_distances(cmp_outline *o, uint32_t y, int colour,
+                               int64_t *d2)
+{
+    seek(o, y);
+    envelope(o, cmp_mask_row(o->ref, y), y, colour, 0, o->ref->width - 1, d2);
+}
+
 void cmp_outline_mismatch_distances(cmp_outline *o, uint32_t y, int colour,
                                     const unsigned char *diff, int64_t *d2)
 {
