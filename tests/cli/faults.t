@@ -143,7 +143,7 @@ interrupt() { # interrupt SIGNAL STATUS
     kill -"$1" "$rayo_pid" 2>/dev/null
     ok $? "SIG$1: sent while the render was writing its temporary file"
     status=0
-    wait "$rayo_pid" || status=$?
+    wait "$rayo_pid" 2>/dev/null || status=$? # (no "Terminated" from sh)
     is "$status" "$2" "SIG$1: the command dies of the signal (status $2)"
     is "$(cat "$TMP/d/long.ppm")" "precious" "SIG$1: the earlier file is intact"
     is "$(leftovers "$TMP/d")" 0 "SIG$1: the temporary file is removed"

@@ -171,7 +171,7 @@ expect_usage_error "view --cols 10001" "--cols: '10001' is out of range; expecte
 # which reserve more address space than that for themselves.)
 if ! big && ! grep -q __asan_init "$RAYO"; then
     status=0
-    (ulimit -v 524288; "$RAYO" render "$RAYO_SOURCE/examples/room.scene" -W 65536 -H 16384 -j 2 -o /dev/full) 2>"$TMP/err" || status=$?
+    (ulimit -v 524288; rayo render "$RAYO_SOURCE/examples/room.scene" -W 65536 -H 16384 -j 2 -o /dev/full) 2>"$TMP/err" || status=$?
     is "$status" 1 "2^30 phong pixels within 512 MiB of address space: stopped only by /dev/full"
     is "$(cat "$TMP/err")" "rayo: /dev/full: No space left on device" "2^30 phong pixels: no out-of-memory"
 else

@@ -20,7 +20,7 @@ is "$(stat -c %a "$TMP/d/keep.pbm")" 640 "replacing a file keeps its mode"
 
 printf 'precious\n' >"$TMP/d/keep.pbm"
 status=0
-(ulimit -f 64; "$RAYO" -o "$TMP/d/keep.pbm" 2>"$TMP/err") || status=$?
+(ulimit -f 64; rayo -o "$TMP/d/keep.pbm" 2>"$TMP/err") || status=$?
 is "$status" 1 "file size limit reached mid-write: exit 1"
 grep -q "keep.pbm: File too large" "$TMP/err"
 ok $? "the message names the file and the reason"
@@ -71,7 +71,7 @@ ok "$([ -L "$TMP/d/link.pbm" ]; echo $?)" "a symbolic link stays a link"
 is "$(head -c 2 "$TMP/d/target.pbm")" "P1" "its target is replaced"
 
 # A reader that goes away: no message.
-"$RAYO" -W 4000 -H 4000 2>"$TMP/err" | head -c 10 >"$TMP/head"
+rayo -W 4000 -H 4000 2>"$TMP/err" | head -c 10 >"$TMP/head"
 is "$(cat "$TMP/head")" "P1
 4000 40" "the reader got the first bytes"
 is "$(wc -c <"$TMP/err" | tr -d ' ')" 0 "a closed pipe ends quietly"

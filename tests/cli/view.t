@@ -57,7 +57,7 @@ is "$(count "$TMP/sym" "#" | awk '{ print ($1 > 0) }')" 1 "  and it is drawn"
 is "$(rayo view --cols 500 "$TMP/centred.pbm" | head -n 1 | python3 -c 'import sys; print(len(sys.stdin.read().rstrip("\n")))')" 161 \
    "never enlarged: 161 columns for a 161-pixel image"
 is "$(COLUMNS=50 rayo view "$D" | python3 -c 'import sys; print(len(sys.stdin.readline().rstrip("\n")))')" 50 "\$COLUMNS=50: 50 columns"
-is "$(env -u COLUMNS "$RAYO" view "$D" | python3 -c 'import sys; print(len(sys.stdin.readline().rstrip("\n")))')" 80 "no \$COLUMNS: 80 columns"
+is "$( (unset COLUMNS; rayo view "$D") | python3 -c 'import sys; print(len(sys.stdin.readline().rstrip("\n")))')" 80 "no \$COLUMNS: 80 columns"
 is "$(COLUMNS=junk rayo view "$D" | python3 -c 'import sys; print(len(sys.stdin.readline().rstrip("\n")))')" 80 "\$COLUMNS not a number: 80 columns"
 
 # Gray and colour images are thresholded at half, like compare does.
