@@ -1,6 +1,6 @@
 #!/bin/sh
 # compare_reports.t - `rayo compare --json` gives, figure for figure, the
-# reports recorded in tests/data/compare/reports.txt, on 74 pairs made
+# reports recorded in tests/data/compare/reports.txt, on 54 pairs made
 # here (rayo renders and the Netpbm tools: flips, inversion, transposed,
 # shifted, another field of view, another sphere, noise, one colour),
 # at several tolerances, in frames of one band and of several bands.
@@ -85,11 +85,13 @@ big-flipped-tol8.5 b b_tb --tolerance 8.5
 course SEED default
 course-tol1 SEED default --tolerance 1
 EOF
-for tol in 0 0.5 1 1.5 3.7 8 8.01 12; do
-    for p in tb inv moved noise shift; do
+for tol in 0 1.5 3.7 8 8.01 12; do
+    for p in tb inv noise; do
         echo "s_$p-tol$tol s s_$p --tolerance $tol" >>"$TMP/pairs"
     done
 done
+echo "s_shift-tol0 s s_shift --tolerance 0" >>"$TMP/pairs"
+echo "s_moved-tol0.5 s s_moved --tolerance 0.5" >>"$TMP/pairs"
 echo "noise-tol5 s_noise s_sparse --tolerance 5" >>"$TMP/pairs"
 echo "gray-tol3 s s_gray --tolerance 3" >>"$TMP/pairs"
 
