@@ -59,25 +59,28 @@ static void on_flush(png_structp png)
     (void)png;
 }
 
+/* The eight bits of v spread to the even bits of 16 (bit i to 2i). */
+static unsigned spread(unsigned v)
+{
+    v = (v | (v << 4)) & 0x0F0Fu;
+    v = (v | (v << 2)) & 0x3333u;
+    return (v | (v << 1)) & 0x5555u;
+}
+
 /* Eight pixels of reference (a) and image (b) as two bytes of 2-bit
- * palette indices. */
+ * palette indices: the high bit of an index says they differ, the low
+ * bit is the image's (WHITE 00, BLACK 01, REFERENCE_ONLY 10, IMAGE_ONLY
+ * 11), so all eight are two spreads of whole bytes. */
 static void pack_byte(unsigned a, unsigned b, unsigned char *out)
 {
-    unsigned bit, v = 0;
+    unsigned v;
     if (a == b && (a == 0 || a == 0xFFu)) {
         out[0] = out[1] = a ? 0x55 : 0x00;
         return;
     }
-    for (bit = 0; bit < 8; bit++) {
-        unsigned x = (a >> (7 - bit)) & 1u, y = (b >> (7 - bit)) & 1u;
-        unsigned index = x == y ? (x ? BLACK : WHITE)
-                                : (x ? REFERENCE_ONLY : IMAGE_ONLY);
-        v = (v << 2) | index;
-        if (bit == 3 || bit == 7) {
-            out[bit / 4] = (unsigned char)v;
-            v = 0;
-        }
-    }
+    v = spread((a ^ b) & 0xFFu) << 1 | spread(b & 0xFFu);
+    out[0] = (unsigned char)(v >> 8);
+    out[1] = (unsigned char)(v & 0xFFu);
 }
 
 static void header(diff_png *d, uint32_t width, uint32_t height)
