@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "output_guard.h"
 
 typedef struct compare_request {
     const char *reference, *image, *diff;
@@ -132,10 +133,11 @@ static int write_diff(const char *path, const rayo_image *reference,
     rayo_error_clear(&err);
     if (rayo_output_open(&out, path, &err) != RAYO_OK)
         return cli_report(&err);
+    cli_guard_output(out);
     if (rayo_compare_write_diff(reference, image, out, &err) == RAYO_OK)
-        rayo_output_commit(out, &err);
+        cli_output_commit(out, &err);
     else
-        rayo_output_abort(out);
+        cli_output_abort(out);
     return cli_report(&err);
 }
 

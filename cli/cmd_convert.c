@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "output_guard.h"
 
 typedef struct convert_request {
     const char *input;
@@ -197,12 +198,13 @@ static rayo_status write_image(const convert_request *req,
     rayo_status status = rayo_output_open(&out, req->output, err);
     if (status != RAYO_OK)
         return status;
+    cli_guard_output(out);
     status = rayo_image_write(fit, out, options, err);
     if (status != RAYO_OK) {
-        rayo_output_abort(out);
+        cli_output_abort(out);
         return status;
     }
-    return rayo_output_commit(out, err);
+    return cli_output_commit(out, err);
 }
 
 /* Everything after the options: read, fit, write. */

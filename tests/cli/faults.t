@@ -10,7 +10,8 @@
 # (ulimit -f, RLIMIT_FSIZE), a full file system (a 64 KiB tmpfs, when
 # mount is allowed), a read-only file system (the same tmpfs remounted
 # read-only, which stops root too; or a chmod 555 folder for others), a
-# reader of a pipe that goes away, SIGTERM and SIGINT during a render,
+# reader of a pipe that goes away, SIGTERM and SIGINT during a render and
+# during the writes of convert and compare --diff,
 # an input that ends early (a FIFO), disappears (unlinked) or shrinks
 # while it is read.
 . "$(dirname "$0")/lib.sh"
@@ -150,6 +151,35 @@ interrupt() { # interrupt SIGNAL STATUS
 }
 interrupt TERM 143
 interrupt INT 130
+
+# convert and compare --diff write an image already in memory: a signal
+# during the write removes the temporary file (cli/output_guard.c).  The
+# command is stopped as soon as its temporary file appears, signalled,
+# and continued, so the signal always lands mid-write.  (SIGTERM only: a
+# background job of a script starts with SIGINT ignored, and the guard
+# leaves ignored signals ignored, as `nohup` expects.)
+{ printf 'P5\n3000 3000\n255\n'; head -c 9000000 /dev/urandom; } >"$TMP/n9.pgm"
+interrupt_write() { # interrupt_write SIGNAL STATUS NAME FILE ARGS...
+    sig=$1 want=$2 what=$3 file=$4
+    shift 4
+    printf 'precious\n' >"$TMP/d/$file"
+    rayo_start "$@" 2>"$TMP/err" >/dev/null
+    tries=0
+    while [ "$(leftovers "$TMP/d")" = 0 ] && [ "$tries" -lt 20000 ]; do
+        tries=$((tries + 1))
+    done
+    kill -STOP "$rayo_pid" 2>/dev/null
+    ok "$([ "$(leftovers "$TMP/d")" = 1 ]; echo $?)" "$what, SIG$sig: caught while writing its temporary file"
+    kill -"$sig" "$rayo_pid" 2>/dev/null
+    kill -CONT "$rayo_pid" 2>/dev/null
+    status=0
+    wait "$rayo_pid" 2>/dev/null || status=$?
+    is "$status" "$want" "$what, SIG$sig: dies of the signal (status $want)"
+    is "$(cat "$TMP/d/$file")" "precious" "$what, SIG$sig: the earlier file is intact"
+    is "$(leftovers "$TMP/d")" 0 "$what, SIG$sig: the temporary file is removed"
+}
+interrupt_write TERM 143 convert c.png convert "$TMP/n9.pgm" "$TMP/d/c.png"
+interrupt_write TERM 143 "compare --diff" diff.png compare "$TMP/n9.pgm" "$TMP/n1.pgm" --diff "$TMP/d/diff.png"
 
 # --- the input ends early, disappears, or shrinks while it is read ---
 printf 'precious\n' >"$TMP/d/keep.pgm"

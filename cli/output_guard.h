@@ -1,0 +1,28 @@
+/*
+ * output_guard.h - SIGINT and SIGTERM while a command writes a file: the
+ * temporary file is removed and the command dies of the signal, so an
+ * interrupted `rayo convert` or `rayo compare --diff` leaves no
+ * ".NAME.XXXXXX" behind and the earlier file of that name intact.
+ *
+ * For commands that write an image already in memory (the write is
+ * short).  Not for `rayo render`, which stops at the next band on its
+ * own (cmd_render.c).  Between cli_guard_output and cli_output_commit or
+ * cli_output_abort, at most one output is guarded.
+ */
+#ifndef RAYO_CLI_OUTPUT_GUARD_H
+#define RAYO_CLI_OUTPUT_GUARD_H
+
+#include "rayo.h"
+
+/* From now on a SIGINT or SIGTERM unlinks out's temporary file (if it
+ * has one) and kills the process with that signal.  Signals ignored
+ * when rayo started stay ignored. */
+void cli_guard_output(const rayo_output *out);
+
+/* rayo_output_commit and rayo_output_abort with the signals held off
+ * until the file is in place or gone, then the guard lifted; a signal
+ * that came meanwhile takes effect then. */
+rayo_status cli_output_commit(rayo_output *out, rayo_error *err);
+void cli_output_abort(rayo_output *out);
+
+#endif
