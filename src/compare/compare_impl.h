@@ -57,6 +57,15 @@ void cmp_pair_free(cmp_pair *pair);
 /* Number of set bits in n bytes. */
 uint64_t cmp_popcount(const unsigned char *bytes, size_t n);
 
+/* Number of set bits in v (the classic SWAR reduction). */
+static inline unsigned cmp_popcount64(uint64_t v)
+{
+    v = v - ((v >> 1) & 0x5555555555555555ull);
+    v = (v & 0x3333333333333333ull) + ((v >> 2) & 0x3333333333333333ull);
+    v = (v + (v >> 4)) & 0x0F0F0F0F0F0F0F0Full;
+    return (unsigned)((v * 0x0101010101010101ull) >> 56);
+}
+
 /* Clears the bits past width in the last byte of a packed row. */
 void cmp_clear_padding(unsigned char *row, uint32_t width);
 

@@ -12,24 +12,16 @@
 
 #include "compare_impl.h"
 
-static unsigned popcount64(uint64_t v)
-{
-    v = v - ((v >> 1) & 0x5555555555555555ull);
-    v = (v & 0x3333333333333333ull) + ((v >> 2) & 0x3333333333333333ull);
-    v = (v + (v >> 4)) & 0x0F0F0F0F0F0F0F0Full;
-    return (unsigned)((v * 0x0101010101010101ull) >> 56);
-}
-
 uint64_t cmp_popcount(const unsigned char *bytes, size_t n)
 {
     uint64_t total = 0, word;
     size_t i = 0;
     for (; i + 8 <= n; i += 8) {
         memcpy(&word, bytes + i, sizeof word);
-        total += popcount64(word);
+        total += cmp_popcount64(word);
     }
     for (; i < n; i++)
-        total += popcount64(bytes[i]);
+        total += cmp_popcount64(bytes[i]);
     return total;
 }
 

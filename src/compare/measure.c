@@ -107,37 +107,62 @@ static void row_mismatch_distances(band_tools *t, uint32_t y, int colour,
         cmp_farthest_row(t->farthest, y, colour, diff);
 }
 
-/* Splits row y into reference only (diff), image only (tmp), both
- * (known) and either (img). */
+/* Row y's mismatches: black only in the reference into diff, black
+ * only in the image into tmp, their numbers into *ref_only and
+ * *img_only; with c, the counts (black in both, in either) added there.
+ * Eight bytes at a time, counted as they are made (bits are bits in any
+ * byte order); the last byte, which may hold padding, on its own. */
 static void split_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
-                      int all_known)
+                      int all_known, uint64_t *ref_only, uint64_t *img_only,
+                      cmp_counts *c)
 {
     const unsigned char *a = cmp_mask_row(ref, y);
-    size_t n = cmp_row_bytes(ref->width), k;
-    for (k = 0; k < n; k++) {
-        unsigned m = all_known ? 0xFFu : r->known[k];
-        unsigned ra = a[k] & m, ib = r->img[k] & m;
-        if (k == n - 1)
-            ra &= (unsigned)(0xFFu << ((8 - (ref->width & 7u)) & 7u));
-        r->diff[k] = (unsigned char)(ra & ~ib);        /* reference only */
-        r->tmp[k] = (unsigned char)(ib & ~ra);         /* image only */
-        r->known[k] = (unsigned char)(ra & ib);        /* both, reused */
-        r->img[k] = (unsigned char)(ra | ib);          /* either, reused */
+    size_t n = cmp_row_bytes(ref->width), k = 0;
+    uint64_t ro = 0, io = 0, both = 0, ra, ib, m, d, t;
+    for (; k + 8 < n; k += 8) {
+        memcpy(&ra, a + k, 8);
+        memcpy(&ib, r->img + k, 8);
+        if (!all_known) {
+            memcpy(&m, r->known + k, 8);
+            ra &= m;
+            ib &= m;
+        }
+        d = ra & ~ib;
+        t = ib & ~ra;
+        memcpy(r->diff + k, &d, 8);
+        memcpy(r->tmp + k, &t, 8);
+        if ((ra | ib) == 0)
+            continue;
+        ro += cmp_popcount64(d);
+        io += cmp_popcount64(t);
+        both += cmp_popcount64(ra & ib);
     }
+    for (; k < n; k++) {
+        unsigned mk = all_known ? 0xFFu : r->known[k];
+        unsigned rk = a[k] & mk, ik = r->img[k] & mk;
+        if (k == n - 1)
+            rk &= (unsigned)(0xFFu << ((8 - (ref->width & 7u)) & 7u));
+        r->diff[k] = (unsigned char)(rk & ~ik);
+        r->tmp[k] = (unsigned char)(ik & ~rk);
+        ro += cmp_popcount64(r->diff[k]);
+        io += cmp_popcount64(r->tmp[k]);
+        both += cmp_popcount64(rk & ik);
+    }
+    *ref_only = ro;
+    *img_only = io;
+    if (c == NULL)
+        return;
+    c->reference_only += ro;
+    c->image_only += io;
+    c->both += both;
+    c->either += ro + io + both;
 }
 
 static void measure_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
                         int all_known, band_tools *t, cmp_counts *c)
 {
-    size_t n = cmp_row_bytes(ref->width);
     uint64_t ref_only, img_only;
-    split_row(ref, y, r, all_known);
-    ref_only = cmp_popcount(r->diff, n);
-    img_only = cmp_popcount(r->tmp, n);
-    c->reference_only += ref_only;
-    c->image_only += img_only;
-    c->both += cmp_popcount(r->known, n);
-    c->either += cmp_popcount(r->img, n);
+    split_row(ref, y, r, all_known, &ref_only, &img_only, c);
     if (t->outline == NULL)
         return;
     if (ref_only)
@@ -188,6 +213,7 @@ static void tools_free(band_tools *t)
 static void sample_rows(band *b, band_tools *t, measure_rows *r)
 {
     uint32_t i, w = b->ref->width;
+    uint64_t ref_only, img_only;
     for (i = 0; i < cmp_farthest_samples(t->farthest); i++) {
         uint32_t y = cmp_farthest_sample_row(t->farthest, i);
         int all = cmp_transform_row(b->t, b->image, w, b->ref->height, y,
@@ -196,8 +222,9 @@ static void sample_rows(band *b, band_tools *t, measure_rows *r)
             cmp_farthest_sample(t->farthest, i, NULL, NULL);
             continue;
         }
-        split_row(b->ref, y, r, all);
-        cmp_farthest_sample(t->farthest, i, r->diff, r->tmp);
+        split_row(b->ref, y, r, all, &ref_only, &img_only, NULL);
+        cmp_farthest_sample(t->farthest, i, ref_only ? r->diff : NULL,
+                            img_only ? r->tmp : NULL);
     }
     cmp_outline_rewind(b->outline, b->y0);
 }
