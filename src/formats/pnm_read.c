@@ -251,9 +251,27 @@ static rayo_status skip_comment(pnm_reader *r)
     return RAYO_OK;
 }
 
+/* Eight pixels from p[0..7] as a byte (p[0] in the top bit), or -1 when
+ * the eight bytes are not all '0' or '1' (whitespace, a comment, an
+ * error: the byte-by-byte loop deals with those). */
+static int eight_pixels(const unsigned char *p)
+{
+    uint64_t v = (uint64_t)p[0] << 56 | (uint64_t)p[1] << 48 |
+                 (uint64_t)p[2] << 40 | (uint64_t)p[3] << 32 |
+                 (uint64_t)p[4] << 24 | (uint64_t)p[5] << 16 |
+                 (uint64_t)p[6] << 8 | (uint64_t)p[7];
+    if ((v & 0xFEFEFEFEFEFEFEFEull) != 0x3030303030303030ull)
+        return -1;
+    /* bit 0 of each byte gathered into the top byte, p[0] first */
+    return (int)(((v & 0x0101010101010101ull) * 0x0102040810204080ull) >>
+                 56);
+}
+
 /*
  * Plain PBM: the hot loop.  Works on the source's window in place,
- * packing eight pixels into a byte at a time.
+ * packing eight pixels into a byte at a time: eight digits in a row
+ * (rayo and the Netpbm tools write lines of 70 without spaces) are
+ * taken at once, anything else one byte at a time.
  */
 static rayo_status read_plain_pbm(pnm_reader *r, rayo_image *image,
                                   rayo_error *err)
@@ -272,7 +290,19 @@ static rayo_status read_plain_pbm(pnm_reader *r, rayo_image *image,
             continue;
         }
         while (p < end) {
-            unsigned c = *p++;
+            unsigned c;
+            int eight;
+            if (end - p >= 8 && width - x > 8 &&
+                (eight = eight_pixels(p)) >= 0) {
+                /* acc holds the x & 7 pixels not yet stored */
+                acc = (acc << 8) | (unsigned)eight;
+                x += 8;
+                row[(x >> 3) - 1] = (unsigned char)(acc >> (x & 7));
+                acc &= (1u << (x & 7)) - 1;
+                p += 8;
+                continue;
+            }
+            c = *p++;
             if ((c | 1u) == '1') {
                 acc = (acc << 1) | (c & 1u);
                 x++;
