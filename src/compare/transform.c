@@ -154,7 +154,22 @@ void cmp_transform_columns(const cmp_transform *t, uint32_t ref_width,
     }
 }
 
-/* A scaled row through the column map, eight pixels a byte. */
+/* Whether the eight columns from c map to eight consecutive image
+ * columns, all inside: then their byte is a plain copy. */
+static int consecutive(const int32_t *c)
+{
+    int32_t b;
+    if (c[0] < 0)
+        return 0;
+    for (b = 1; b < 8; b++)
+        if (c[b] != c[0] + b)
+            return 0;
+    return 1;
+}
+
+/* A scaled row through the column map, eight pixels a byte: a whole
+ * byte at once where the map is a plain shift (most of a row for scales
+ * near 1), pixel by pixel elsewhere. */
 static void mapped_row(const int32_t *columns, const unsigned char *src,
                        uint32_t width, unsigned char *out,
                        unsigned char *known)
@@ -162,6 +177,16 @@ static void mapped_row(const int32_t *columns, const unsigned char *src,
     size_t n = cmp_row_bytes(width), k;
     for (k = 0; k < n; k++) {
         unsigned v = 0, kn = 0, bit;
+        if (k * 8 + 8 <= width && consecutive(columns + k * 8)) {
+            size_t q = (size_t)columns[k * 8] >> 3;
+            unsigned sh = (unsigned)columns[k * 8] & 7u;
+            v = (unsigned)src[q] << sh;
+            if (sh != 0) /* column + 7 is inside, in byte q + 1 */
+                v |= (unsigned)src[q + 1] >> (8 - sh);
+            out[k] = (unsigned char)v;
+            known[k] = 0xFFu;
+            continue;
+        }
         for (bit = 0; bit < 8 && k * 8 + bit < width; bit++) {
             int32_t ii = columns[k * 8 + bit];
             if (ii < 0)

@@ -1,6 +1,6 @@
 #!/bin/sh
 # compare_reports.t - `rayo compare --json` gives, figure for figure, the
-# reports recorded in tests/data/compare/reports.txt, on 54 pairs made
+# reports recorded in tests/data/compare/reports.txt, on 58 pairs made
 # here (rayo renders and the Netpbm tools: flips, inversion, transposed,
 # shifted, another field of view, another sphere, noise, one colour),
 # at several tolerances, in frames of one band and of several bands.
@@ -27,6 +27,8 @@ pamflip -r180 "$TMP/s.pbm" >"$TMP/s_r180.pbm"
 pamflip -transpose "$TMP/s.pbm" >"$TMP/s_tr.pbm"
 pnminvert "$TMP/s.pbm" >"$TMP/s_inv.pbm"
 "$R" -W 333 -H 251 --fov 80 -o "$TMP/s_fov.pbm"
+"$R" -W 333 -H 251 --fov 60 -o "$TMP/s_fov60.pbm"
+"$R" -W 333 -H 251 --fov 100 -o "$TMP/s_fov100.pbm"
 pamflip -tb "$TMP/s_fov.pbm" >"$TMP/s_fovtb.pbm"
 "$R" -W 333 -H 251 --sphere 0.52,0.75,1.9,0.8 -o "$TMP/s_moved.pbm"
 "$R" -W 333 -H 251 --sphere -0.6,0,2,0.4 --sphere 0.6,0,2,0.4 -o "$TMP/s_two.pbm"
@@ -60,6 +62,9 @@ transposed s s_tr
 inverted s s_inv
 fov s s_fov
 fov-flipped s s_fovtb
+fov60 s s_fov60
+fov100 s s_fov100
+fov100-as-reference s_fov100 s
 moved s s_moved
 two s s_two
 shifted s s_shift
@@ -80,6 +85,7 @@ big-flipped b b_tb
 big-inverted b b_inv
 big-fov-flipped b b_fovtb
 big-moved b b_moved
+big-fov b b_fov
 big-flipped-tol0 b b_tb --tolerance 0
 big-flipped-tol8.5 b b_tb --tolerance 8.5
 course SEED default
