@@ -49,6 +49,29 @@ static unsigned byte_at(const unsigned char *src, uint32_t width, int64_t q,
     return v;
 }
 
+/* The bytes of a row from pixel q on (q >= 0, q + 8 <= width) while
+ * their eight pixels lie inside the row, `most` at most: a copy shifted
+ * by q's place in its byte.  Returns how many (1 or more). */
+static size_t copy_inside(const unsigned char *src, uint32_t width,
+                          int64_t q, size_t most, unsigned char *out,
+                          unsigned char *known)
+{
+    size_t count = (size_t)(((int64_t)width - q) / 8), b = (size_t)q >> 3;
+    size_t i;
+    unsigned sh = (unsigned)(q & 7);
+    if (count > most)
+        count = most;
+    memset(known, 0xFF, count);
+    if (sh == 0) {
+        memcpy(out, src + b, count);
+        return count;
+    }
+    for (i = 0; i < count; i++) /* pixel q + 8 i + 7 is in byte b + i + 1 */
+        out[i] = (unsigned char)((unsigned)src[b + i] << sh |
+                                 (unsigned)src[b + i + 1] >> (8 - sh));
+    return count;
+}
+
 /* The image moved by (ox, oy): out(i) = image(i + ox, y + oy); pixels
  * from outside the image are white, and unknown unless outside_known. */
 static int offset_row(const cmp_mask *image, uint32_t width, uint32_t y,
@@ -58,15 +81,21 @@ static int offset_row(const cmp_mask *image, uint32_t width, uint32_t y,
     size_t n = cmp_row_bytes(width), k;
     int64_t j = (int64_t)y + oy;
     unsigned all = 0xFFu, inside;
+    const unsigned char *src;
     if (j < 0 || j >= (int64_t)image->height) {
         if (outside_known)
             return 1;
         return -1;
     }
+    src = cmp_mask_row(image, (uint32_t)j);
     for (k = 0; k < n; k++) {
-        out[k] = (unsigned char)byte_at(cmp_mask_row(image, (uint32_t)j),
-                                        image->width,
-                                        ox + 8 * (int64_t)k, &inside);
+        int64_t q = ox + 8 * (int64_t)k;
+        if (q >= 0 && q + 8 <= (int64_t)image->width && k + 1 < n) {
+            k += copy_inside(src, image->width, q, n - 1 - k, out + k,
+                             known + k) - 1;
+            continue;
+        }
+        out[k] = (unsigned char)byte_at(src, image->width, q, &inside);
         known[k] = (unsigned char)inside;
         all &= inside | (k == n - 1 ? 0xFFu >> ((width & 7u) ? (width & 7u)
                                                                : 8u)
