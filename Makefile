@@ -4,6 +4,9 @@
 #   make check           every test, run by prove (TAP)
 #   make run             render the assignment's sphere to esfera.pbm and esfera.png
 #   make bench           benchmarks (bench/)
+#   make check-sanitize  every test under ASan and UBSan (clang)
+#   make check-valgrind  the command tests under valgrind memcheck
+#   make fuzz            libFuzzer targets (fuzz/; docs/robustness.md)
 #   make install PREFIX=/usr/local
 #   make CC=clang        any C11 compiler; warnings are errors
 #   make BUILD=dir       build somewhere else (parallel work trees, sanitizers)
