@@ -68,6 +68,7 @@ if [ "$mounted" = 1 ]; then
     printf 'precious\n' >"$small/out.pgm"
     printf 'precious\n' >"$small/diff.png"
     printf 'precious\n' >"$small/r.pbm"
+    used=$(df -k "$small" | awk 'NR == 2 { print $3 }')
     run_capture convert "$TMP/n1.pgm" "$small/out.pgm"
     is "$status" 1 "convert, file system full: exit 1"
     is "$(cat "$TMP/err")" "rayo: $small/out.pgm: No space left on device" "convert, file system full: file and reason"
@@ -81,7 +82,7 @@ if [ "$mounted" = 1 ]; then
     is "$(cat "$TMP/err")" "rayo: $small/r.pbm: No space left on device" "render, file system full: file and reason"
     is "$(cat "$small/r.pbm")" "precious" "render, file system full: the earlier file is intact"
     is "$(leftovers "$small")" 0 "file system full: no temporary file left"
-    is "$(df -k "$small" | awk 'NR == 2 { print $3 }')" 12 "file system full: the space is given back (three 4 KiB files)"
+    is "$(df -k "$small" | awk 'NR == 2 { print $3 }')" "$used" "file system full: the space is given back"
 else
     for what in convert "compare --diff" render; do
         ok 0 "$what, file system full # SKIP cannot mount a small tmpfs here"

@@ -102,6 +102,15 @@ fi
 printf 'sphere 0 0 3 1\n' >f2.scene && truncate -s 268435457 f2.scene
 expect_usage_error "a scene file of 256 MiB + 1 byte" "f2.scene: the file is larger than 268435456 bytes" render f2.scene -o f.pbm
 rm -f f.scene f2.scene
+# The same through a pipe, whose size is not known in advance.
+if ! big; then
+    mkfifo scene.fifo
+    head -c 268435457 /dev/zero >scene.fifo 2>/dev/null &
+    expect_usage_error "256 MiB + 1 byte through a pipe" "scene.fifo: the file is larger than 268435456 bytes" render scene.fifo
+    wait
+else
+    ok 0 "256 MiB + 1 byte through a pipe # SKIP under valgrind"
+fi
 
 # Lines: 4096 bytes, newline excluded.
 pad() { # pad LENGTH: a sphere line padded with a comment to LENGTH bytes
