@@ -209,8 +209,10 @@ static double seconds_now(void)
 
 /*
  * Renders and delivers bands on this thread while the frame, projected
- * from the bands done so far, stays under SERIAL_BELOW_SECONDS; hands the
- * rest to the workers as soon as it does not.
+ * from what is done so far, stays under SERIAL_BELOW_SECONDS; hands the
+ * rest to the workers as soon as it does not.  The first projection comes
+ * from one row, so an expensive frame loses one row, not one band, to the
+ * serial start (the row is rendered again with its band).
  */
 static rayo_status run_adaptive(band_job *job, unsigned threads,
                                 rayo_row_sink sink, void *context,
@@ -218,6 +220,11 @@ static rayo_status run_adaptive(band_job *job, unsigned threads,
 {
     double start = seconds_now();
     uint32_t band;
+    rayo_render_row(job->camera, job->scene, job->options, 0,
+                    slot_memory(job, 0));
+    if ((seconds_now() - start) * job->camera->height >=
+        SERIAL_BELOW_SECONDS)
+        return run_parallel(job, threads, 0, sink, context, err);
     for (band = 0; band < job->band_count; band++) {
         rayo_status status;
         double spent = seconds_now() - start;
