@@ -17,6 +17,7 @@ tap_failed=0
 rayo() {
     if [ "${RAYO_VALGRIND:-0}" = 1 ]; then
         valgrind -q --error-exitcode=99 --leak-check=full \
+            --suppressions="$RAYO_SOURCE/tests/cli/valgrind.supp" \
             --show-leak-kinds=definite,indirect,possible \
             --errors-for-leak-kinds=definite,indirect,possible "$RAYO" "$@"
     else
@@ -29,6 +30,7 @@ rayo() {
 rayo_start() {
     if [ "${RAYO_VALGRIND:-0}" = 1 ]; then
         valgrind -q --error-exitcode=99 --leak-check=full \
+            --suppressions="$RAYO_SOURCE/tests/cli/valgrind.supp" \
             --show-leak-kinds=definite,indirect,possible \
             --errors-for-leak-kinds=definite,indirect,possible "$RAYO" "$@" &
     else
