@@ -10,50 +10,24 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <getopt.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "interrupt.h"
 
 typedef struct grade_request {
     rayo_grade_options options;
     int json, each;
 } grade_request;
 
-/* Set by SIGINT/SIGTERM: the grading stops, kills the running program
-   and removes its temporary directory, then we die of the signal. */
-static volatile sig_atomic_t interrupted_by;
-
-static void on_interrupt(int signal_number)
-{
-    interrupted_by = signal_number;
-}
-
+/* The grading's cancel callback: after SIGINT/SIGTERM the grading stops,
+   kills the running program and removes its temporary directory, then
+   we die of the signal. */
 static int stop_requested(void *context)
 {
     (void)context;
-    return interrupted_by != 0;
-}
-
-static void catch_interrupts(void)
-{
-    struct sigaction action;
-    memset(&action, 0, sizeof action);
-    action.sa_handler = on_interrupt;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, NULL);
-    sigaction(SIGTERM, &action, NULL);
-}
-
-/* After a cancelled grading: die of the signal that asked for it. */
-static int exit_for_interrupt(void)
-{
-    int number = interrupted_by;
-    fflush(stdout);
-    signal(number, SIG_DFL);
-    raise(number);
-    return 128 + number;
+    return cli_interrupted() != 0;
 }
 
 static void print_help(void)
@@ -401,7 +375,7 @@ static int grade_each(const char *dir, grade_request *req)
         printf("[");
     else
         print_table_header();
-    for (i = 0; i < count && interrupted_by == 0; i++) {
+    for (i = 0; i < count && cli_interrupted() == 0; i++) {
         rayo_grade_report report;
         const char *student = base_name(folders[i]);
         if (req->json && i > 0)
@@ -447,10 +421,10 @@ int cli_grade(int argc, char **argv)
     if (status != CLI_EXIT_OK)
         return status < 0 ? CLI_EXIT_OK : status;
     req.options.cancelled = stop_requested;
-    catch_interrupts();
+    cli_interrupt_catch();
     status = req.each ? grade_each(argv[optind], &req)
                       : grade_single(argc, argv, optind, &req);
-    if (interrupted_by != 0)
-        return exit_for_interrupt();
+    if (cli_interrupted() != 0)
+        return cli_interrupt_exit();
     return status;
 }

@@ -9,12 +9,12 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <getopt.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
 #include "cli.h"
+#include "interrupt.h"
 #include "progress.h"
 #include "render_preview.h"
 
@@ -41,19 +41,12 @@ typedef struct render_request {
     unsigned long depth;
 } render_request;
 
-/* Set by SIGINT/SIGTERM; the render stops at the next band. */
-static volatile sig_atomic_t interrupted_by;
-
-static void on_interrupt(int signal_number)
-{
-    interrupted_by = signal_number;
-}
-
-/* The render's progress callback: draws the bar, stops on a signal. */
+/* The render's progress callback: draws the bar, stops on a signal (the
+   render then stops at the next band). */
 static int stop_requested(void *context, uint32_t done, uint32_t total)
 {
     cli_progress_update(context, done, total);
-    return interrupted_by != 0;
+    return cli_interrupted() != 0;
 }
 
 static void print_help(void)
@@ -426,25 +419,6 @@ static rayo_status render_to(rayo_output *out, const rayo_camera *camera,
     return rayo_writer_finish(writer, err);
 }
 
-static void catch_interrupts(void)
-{
-    struct sigaction action;
-    memset(&action, 0, sizeof action);
-    action.sa_handler = on_interrupt;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, NULL);
-    sigaction(SIGTERM, &action, NULL);
-}
-
-/* After a cancelled render: die of the signal that asked for it. */
-static int exit_for_interrupt(void)
-{
-    int number = interrupted_by;
-    signal(number, SIG_DFL);
-    raise(number);
-    return 128 + number;
-}
-
 int cli_render(int argc, char **argv)
 {
     render_request *req = calloc(1, sizeof *req);
@@ -491,7 +465,7 @@ int cli_render(int argc, char **argv)
     options.progress = stop_requested;
     cli_progress_init(&progress, req->quiet);
     options.progress_context = &progress;
-    catch_interrupts();
+    cli_interrupt_catch();
 
     if (req->preview) {
         rayo_image_info info = rayo_render_image_info(&camera, &options);
@@ -506,7 +480,7 @@ int cli_render(int argc, char **argv)
             rayo_output_abort(out);
     }
     cli_progress_finish(&progress);
-    if (preview != NULL && err.status == RAYO_OK && interrupted_by == 0) {
+    if (preview != NULL && err.status == RAYO_OK && cli_interrupted() == 0) {
         /* The image on stdout keeps stdout to itself. */
         exit_status = cli_preview_print(
             preview, strcmp(req->output, "-") == 0 ? stderr : stdout);
@@ -520,7 +494,7 @@ int cli_render(int argc, char **argv)
     cli_preview_free(preview);
     rayo_scene_free(scene);
     free(req);
-    if (interrupted_by != 0)
-        return exit_for_interrupt();
+    if (cli_interrupted() != 0)
+        return cli_interrupt_exit();
     return cli_report(&err);
 }
