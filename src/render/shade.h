@@ -22,6 +22,15 @@
 rayo_vec3 rayo_shade_course_gray(const rayo_scene *scene,
                                  const rayo_ray *ray);
 
+/*
+ * delta_i * (Li.N) of the course's models: the cosine between the hit's
+ * normal and the direction towards light, or 0 when the light faces away
+ * or another object lies on the whole half-line towards it
+ * (shade_course_light.c).
+ */
+double rayo_shade_course_light(const rayo_scene *scene, const rayo_hit *hit,
+                               const rayo_light *light);
+
 /* The course's scene 3 model: RGB, each channel clamped to 1. */
 rayo_vec3 rayo_shade_course_color(const rayo_scene *scene,
                                   const rayo_ray *ray);

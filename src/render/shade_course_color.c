@@ -16,24 +16,6 @@
  */
 #include "shade.h"
 
-static rayo_vec3 light_term(const rayo_scene *scene, const rayo_hit *hit,
-                            const rayo_light *light, double kd)
-{
-    rayo_ray shadow;
-    double cosine;
-    shadow.origin = hit->point;
-    shadow.direction =
-        light->kind == RAYO_LIGHT_DIRECTIONAL
-            ? light->vector
-            : rayo_vec3_normalize(rayo_vec3_sub(light->vector, hit->point));
-    cosine = rayo_vec3_dot(shadow.direction, hit->normal);
-    if (!(cosine > 0.0))
-        return rayo_vec3_make(0, 0, 0);
-    if (rayo_scene_occluded(scene, &shadow, 0.0, INFINITY, hit->object))
-        return rayo_vec3_make(0, 0, 0);
-    return rayo_vec3_scale(light->color, kd * cosine);
-}
-
 static double clamp_channel(double c)
 {
     if (c > 1.0)
@@ -53,10 +35,11 @@ rayo_vec3 rayo_shade_course_color(const rayo_scene *scene,
     } else {
         m = rayo_scene_material(scene, hit.material);
         c = rayo_vec3_scale(rayo_scene_ambient(scene), m->ka);
-        for (i = 0; i < n; i++)
-            c = rayo_vec3_add(c, light_term(scene, &hit,
-                                            rayo_scene_light(scene, i),
-                                            m->kd));
+        for (i = 0; i < n; i++) {
+            const rayo_light *light = rayo_scene_light(scene, i);
+            double cosine = rayo_shade_course_light(scene, &hit, light);
+            c = rayo_vec3_add(c, rayo_vec3_scale(light->color, m->kd * cosine));
+        }
         c = rayo_vec3_mul(c, m->color);
     }
     return rayo_vec3_make(clamp_channel(c.x), clamp_channel(c.y),

@@ -16,24 +16,6 @@
  */
 #include "shade.h"
 
-static double light_term(const rayo_scene *scene, const rayo_hit *hit,
-                         const rayo_light *light)
-{
-    rayo_ray shadow;
-    double cosine;
-    shadow.origin = hit->point;
-    shadow.direction =
-        light->kind == RAYO_LIGHT_DIRECTIONAL
-            ? light->vector
-            : rayo_vec3_normalize(rayo_vec3_sub(light->vector, hit->point));
-    cosine = rayo_vec3_dot(shadow.direction, hit->normal);
-    if (!(cosine > 0.0))
-        return 0.0;
-    if (rayo_scene_occluded(scene, &shadow, 0.0, INFINITY, hit->object))
-        return 0.0;
-    return light->color.x * cosine;
-}
-
 rayo_vec3 rayo_shade_course_gray(const rayo_scene *scene,
                                  const rayo_ray *ray)
 {
@@ -44,8 +26,11 @@ rayo_vec3 rayo_shade_course_gray(const rayo_scene *scene,
         level = rayo_scene_background(scene).x;
     } else {
         level = rayo_scene_ambient(scene).x;
-        for (i = 0; i < n; i++)
-            level += light_term(scene, &hit, rayo_scene_light(scene, i));
+        for (i = 0; i < n; i++) {
+            const rayo_light *light = rayo_scene_light(scene, i);
+            level += light->color.x *
+                     rayo_shade_course_light(scene, &hit, light);
+        }
     }
     if (level > 255.0)
         level = 255.0;
