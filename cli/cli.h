@@ -54,6 +54,13 @@ int cli_usage_error(const char *format, ...)
  */
 int cli_report(const rayo_error *err);
 
+/*
+ * A subcommand got `found` operands where it wants WHAT: prints "rayo:
+ * COMMAND: expected WHAT, got N arguments; see 'rayo COMMAND --help'" and
+ * returns CLI_EXIT_USAGE.
+ */
+int cli_wrong_operands(const char *command, int found, const char *what);
+
 /* The message getopt_long's result calls for; returns CLI_EXIT_USAGE. */
 int cli_bad_option(int option, char **argv, int index);
 

@@ -98,9 +98,8 @@ static int parse_request(int argc, char **argv, compare_request *req)
         }
     }
     if (argc - optind != 2)
-        return cli_usage_error("compare: expected REFERENCE and IMAGE, got "
-                               "%d argument%s; see 'rayo compare --help'",
-                               argc - optind, argc - optind == 1 ? "" : "s");
+        return cli_wrong_operands("compare", argc - optind,
+                                  "REFERENCE and IMAGE");
     req->reference = argv[optind];
     req->image = argv[optind + 1];
     if (strcmp(req->reference, "-") == 0 && strcmp(req->image, "-") == 0)

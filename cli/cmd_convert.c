@@ -90,9 +90,7 @@ static int parse_request(int argc, char **argv, convert_request *req)
         }
     }
     if (argc - optind != 2)
-        return cli_usage_error("convert: expected IN and OUT, found %d "
-                               "argument%s; see 'rayo convert --help'",
-                               argc - optind, argc - optind == 1 ? "" : "s");
+        return cli_wrong_operands("convert", argc - optind, "IN and OUT");
     req->input = argv[optind];
     req->output = argv[optind + 1];
     return CLI_EXIT_OK;

@@ -96,9 +96,7 @@ static int parse_options(int argc, char **argv,
         }
     }
     if (argc - optind != 1)
-        return cli_usage_error("view: expected one FILE, got %d arguments; "
-                               "see 'rayo view --help'",
-                               argc - optind);
+        return cli_wrong_operands("view", argc - optind, "one FILE");
     *file = argv[optind];
     return CLI_EXIT_OK;
 }

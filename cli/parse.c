@@ -66,6 +66,14 @@ int cli_bad_option(int option, char **argv, int index)
                            argv[0], word);
 }
 
+int cli_wrong_operands(const char *command, int found, const char *what)
+{
+    return cli_usage_error("%s: expected %s, got %d argument%s; see 'rayo "
+                           "%s --help'",
+                           command, what, found, found == 1 ? "" : "s",
+                           command);
+}
+
 static int looks_numeric_start(const char *text)
 {
     return *text != '\0' && !isspace((unsigned char)*text);

@@ -38,7 +38,8 @@ rayo_vec3 rayo_shade_course_color(const rayo_scene *scene,
         for (i = 0; i < n; i++) {
             const rayo_light *light = rayo_scene_light(scene, i);
             double cosine = rayo_shade_course_light(scene, &hit, light);
-            c = rayo_vec3_add(c, rayo_vec3_scale(light->color, m->kd * cosine));
+            c = rayo_vec3_add(c,
+                              rayo_vec3_scale(light->color, m->kd * cosine));
         }
         c = rayo_vec3_mul(c, m->color);
     }
