@@ -55,14 +55,6 @@ static int large_init(large_setup *setup, uint32_t width, uint32_t height,
                : -1;
 }
 
-static rayo_status to_writer(void *context, const unsigned char *rows,
-                             size_t stride, uint32_t first_row,
-                             uint32_t count, rayo_error *err)
-{
-    (void)first_row;
-    return rayo_writer_write_rows(context, rows, stride, count, err);
-}
-
 /* One render to /dev/null; seconds, or -1. */
 static double render_to_null(const large_setup *setup, rayo_format format,
                              unsigned threads)
@@ -86,8 +78,8 @@ static double render_to_null(const large_setup *setup, rayo_format format,
         rayo_output_abort(out);
         return -1;
     }
-    if (rayo_render(&setup->camera, setup->scene, &options, to_writer,
-                    writer, &err) != RAYO_OK) {
+    if (rayo_render(&setup->camera, setup->scene, &options,
+                    rayo_writer_row_sink, writer, &err) != RAYO_OK) {
         rayo_writer_discard(writer);
         rayo_output_abort(out);
         return -1;

@@ -46,14 +46,6 @@ static int seed_init(seed_setup *setup)
                : -1;
 }
 
-static rayo_status to_writer(void *context, const unsigned char *rows,
-                             size_t stride, uint32_t first_row,
-                             uint32_t count, rayo_error *err)
-{
-    (void)first_row;
-    return rayo_writer_write_rows(context, rows, stride, count, err);
-}
-
 /* The seed job into fd; 0 on success. */
 static int seed_job(const seed_setup *setup, int fd)
 {
@@ -74,8 +66,8 @@ static int seed_job(const seed_setup *setup, int fd)
         rayo_output_abort(out);
         return -1;
     }
-    if (rayo_render(&setup->camera, setup->scene, &options, to_writer,
-                    writer, &err) != RAYO_OK) {
+    if (rayo_render(&setup->camera, setup->scene, &options,
+                    rayo_writer_row_sink, writer, &err) != RAYO_OK) {
         rayo_writer_discard(writer);
         rayo_output_abort(out);
         return -1;

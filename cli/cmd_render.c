@@ -324,14 +324,6 @@ static int choose_format(const render_request *req, rayo_format *format)
     return CLI_EXIT_OK;
 }
 
-static rayo_status write_rows(void *context, const unsigned char *rows,
-                              size_t stride, uint32_t first_row,
-                              uint32_t count, rayo_error *err)
-{
-    (void)first_row;
-    return rayo_writer_write_rows(context, rows, stride, count, err);
-}
-
 /* The scene file's camera (or the assignment's), with -W -H --fov
  * --origin laid over it. */
 static int build_camera(const render_request *req, rayo_camera *camera,
@@ -408,9 +400,9 @@ static rayo_status render_to(rayo_output *out, const rayo_camera *camera,
     if (status != RAYO_OK)
         return status;
     if (preview != NULL) /* rows pass through the preview's copy */
-        cli_preview_forward(preview, write_rows, writer);
+        cli_preview_forward(preview, rayo_writer_row_sink, writer);
     status = rayo_render(camera, scene, options,
-                         preview ? cli_preview_rows : write_rows,
+                         preview ? cli_preview_rows : rayo_writer_row_sink,
                          preview ? (void *)preview : (void *)writer, err);
     if (status != RAYO_OK) {
         rayo_writer_discard(writer);

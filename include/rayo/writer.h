@@ -79,6 +79,14 @@ rayo_status rayo_writer_write_rows(rayo_writer *writer,
                                    uint32_t count, rayo_error *err);
 
 /*
+ * The same as a row sink for rayo_render (render.h): context is the
+ * rayo_writer, first_row is implied by the order rows arrive in.
+ */
+rayo_status rayo_writer_row_sink(void *writer, const unsigned char *rows,
+                                 size_t stride, uint32_t first_row,
+                                 uint32_t count, rayo_error *err);
+
+/*
  * Ends the image (fails if rows are missing) and frees the writer, which
  * is freed whatever the outcome.
  */

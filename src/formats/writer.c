@@ -111,6 +111,14 @@ rayo_status rayo_writer_write_rows(rayo_writer *writer,
     return writer->ops->rows(writer, rows, stride, count, err);
 }
 
+rayo_status rayo_writer_row_sink(void *writer, const unsigned char *rows,
+                                 size_t stride, uint32_t first_row,
+                                 uint32_t count, rayo_error *err)
+{
+    (void)first_row;
+    return rayo_writer_write_rows(writer, rows, stride, count, err);
+}
+
 rayo_status rayo_writer_finish(rayo_writer *writer, rayo_error *err)
 {
     rayo_status status;
