@@ -99,7 +99,8 @@ rayo_status rayo_render_image(const rayo_camera *camera,
                               const rayo_render_options *options,
                               rayo_image *image, rayo_error *err);
 
-/* The number of online CPUs, at least 1. */
+/* The number of CPUs this process may use (its affinity mask, else the
+ * online CPUs), at least 1 and at most RAYO_MAX_THREADS. */
 unsigned rayo_cpu_count(void);
 
 #ifdef __cplusplus
