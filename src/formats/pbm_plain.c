@@ -5,11 +5,10 @@
  * pixels, so the formatter keeps the row spelled out all white and all
  * black.  A row starts as a copy of the white one; each run of black
  * bytes (0xFF) is copied from the black one, newlines included; only the
- * bytes that mix black and white are spelled out, eight digits at a time
- * from a table (digit by digit where a line break falls inside the
- * byte).  Rendered rows are long runs of one colour, so a row costs a
- * few copies instead of one store per eight pixels; a row of noise costs
- * what spelling out every byte does.
+ * bytes that mix black and white are spelled out, digit by digit.  Runs
+ * are found eight bytes at a time.  Rendered rows are long runs of one
+ * colour, so a row costs a few copies instead of one store per eight
+ * pixels; a row of noise costs what spelling out every byte does.
  */
 #include "pbm_plain.h"
 
@@ -23,7 +22,6 @@ struct rayo_pbm_plain {
     size_t size;          /* bytes of a formatted row */
     unsigned char *white; /* the row of all 0 digits */
     unsigned char *black; /* the row of all 1 digits */
-    char table[256 * 8];  /* eight digits for each byte */
 };
 
 /* Where digit x of a row goes: one newline after every full line. */
@@ -38,20 +36,19 @@ size_t rayo_pbm_plain_row_size(uint32_t width)
                                LINE_MAX_DIGITS;
 }
 
-static void fill_template(unsigned char *row, uint32_t width, char digit)
+/* size bytes of digit, a newline after every full line and at the end. */
+static void fill_template(unsigned char *row, size_t size, char digit)
 {
-    size_t x;
-    for (x = 0; x < width; x++) {
-        row[position(x)] = (unsigned char)digit;
-        if ((x + 1) % LINE_MAX_DIGITS == 0 || x + 1 == width)
-            row[position(x) + 1] = '\n';
-    }
+    size_t at;
+    memset(row, digit, size);
+    for (at = LINE_MAX_DIGITS; at < size; at += LINE_MAX_DIGITS + 1)
+        row[at] = '\n';
+    row[size - 1] = '\n';
 }
 
 rayo_pbm_plain *rayo_pbm_plain_new(uint32_t width)
 {
     rayo_pbm_plain *plain = malloc(sizeof *plain);
-    int byte, bit;
     if (plain == NULL)
         return NULL;
     plain->width = width;
@@ -62,12 +59,8 @@ rayo_pbm_plain *rayo_pbm_plain_new(uint32_t width)
         rayo_pbm_plain_free(plain);
         return NULL;
     }
-    fill_template(plain->white, width, '0');
-    fill_template(plain->black, width, '1');
-    for (byte = 0; byte < 256; byte++)
-        for (bit = 0; bit < 8; bit++)
-            plain->table[byte * 8 + bit] =
-                (char)('0' + ((byte >> (7 - bit)) & 1));
+    fill_template(plain->white, plain->size, '0');
+    fill_template(plain->black, plain->size, '1');
     return plain;
 }
 
@@ -88,6 +81,15 @@ static void copy_black(const rayo_pbm_plain *plain, unsigned char *out,
     memcpy(out + from, plain->black + from, to - from);
 }
 
+/* The digits of each nibble. */
+static const char nibble_digits[16][4] = {
+    {'0', '0', '0', '0'}, {'0', '0', '0', '1'}, {'0', '0', '1', '0'},
+    {'0', '0', '1', '1'}, {'0', '1', '0', '0'}, {'0', '1', '0', '1'},
+    {'0', '1', '1', '0'}, {'0', '1', '1', '1'}, {'1', '0', '0', '0'},
+    {'1', '0', '0', '1'}, {'1', '0', '1', '0'}, {'1', '0', '1', '1'},
+    {'1', '1', '0', '0'}, {'1', '1', '0', '1'}, {'1', '1', '1', '0'},
+    {'1', '1', '1', '1'}};
+
 /* The digits of byte k, which holds both colours. */
 static void spell_byte(const rayo_pbm_plain *plain, unsigned char *out,
                        size_t k, unsigned byte)
@@ -96,28 +98,37 @@ static void spell_byte(const rayo_pbm_plain *plain, unsigned char *out,
     size_t count = plain->width - x < 8 ? plain->width - x : 8;
     size_t d;
     if (count == 8 && x % LINE_MAX_DIGITS <= LINE_MAX_DIGITS - 8) {
-        memcpy(out + position(x), plain->table + 8 * byte, 8);
+        /* No line break inside the byte. */
+        memcpy(out + position(x), nibble_digits[byte >> 4], 4);
+        memcpy(out + position(x) + 4, nibble_digits[byte & 15], 4);
         return;
     }
     for (d = 0; d < count; d++)
         out[position(x + d)] = (unsigned char)('0' + ((byte >> (7 - d)) & 1));
 }
 
-/* The first k at or after start where row[k] is not 0, or bytes. */
-static size_t skip_white(const unsigned char *row, size_t start,
-                         size_t bytes)
+/* The first k at or after start where row[k] is not `fill` (0x00 or
+ * 0xFF), or bytes. */
+static size_t skip_run(const unsigned char *row, size_t start, size_t bytes,
+                       unsigned char fill)
 {
+    uint64_t run = fill ? UINT64_MAX : 0;
     size_t k = start;
-    for (;;) {
+    while (bytes - k >= 8) {
         uint64_t word;
-        if (bytes - k < 8)
-            break;
         memcpy(&word, row + k, 8);
-        if (word != 0)
+        if (word != run) {
+#if defined(__GNUC__) && defined(__BYTE_ORDER__) && \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+            /* The first byte in memory is the least significant. */
+            return k + (size_t)__builtin_ctzll(word ^ run) / 8;
+#else
             break;
+#endif
+        }
         k += 8;
     }
-    while (k < bytes && row[k] == 0)
+    while (k < bytes && row[k] == fill)
         k++;
     return k;
 }
@@ -128,13 +139,11 @@ size_t rayo_pbm_plain_row(const rayo_pbm_plain *plain,
     size_t bytes = ((size_t)plain->width + 7) / 8, k = 0;
     memcpy(out, plain->white, plain->size);
     for (;;) {
-        k = skip_white(row, k, bytes);
+        k = skip_run(row, k, bytes, 0x00);
         if (k == bytes)
             break;
         if (row[k] == 0xFF) {
-            size_t j = k + 1, end;
-            while (j < bytes && row[j] == 0xFF)
-                j++;
+            size_t j = skip_run(row, k + 1, bytes, 0xFF), end;
             end = 8 * j < plain->width ? 8 * j : plain->width;
             copy_black(plain, out, 8 * k, end - 1);
             k = j;
