@@ -7,9 +7,10 @@
  * characters (PBM digits unseparated, as Netpbm's own tools write them;
  * PGM and PPM samples separated by spaces).  Raw PBM rows are packed bits
  * with the padding bits of the last byte zero; raw samples are bytes, or
- * two bytes big-endian when maxval > 255.  Each row is formatted into a
- * scratch buffer and handed to the output in one call; plain PBM rows
- * come from pbm_plain.c.  Raw rows that need no change (bytes, or bits whose padding is already
+ * two bytes big-endian when maxval > 255.  Each row is formatted straight
+ * into the output's buffer (rayo_output_reserve), or into a scratch
+ * buffer when a row is larger than that; plain PBM rows come from
+ * pbm_plain.c.  Raw rows that need no change (bytes, or bits whose padding is already
  * zero) go to the output straight from the caller's memory, a whole block
  * of rows in one call.
  */
@@ -190,6 +191,18 @@ static size_t format_raw(const rayo_writer *writer, const unsigned char *row,
     return bytes;
 }
 
+/* One row in the file's layout into out (scratch_bytes() of room). */
+static size_t format_row(const rayo_writer *writer, const unsigned char *row,
+                         unsigned char *out)
+{
+    const pnm_state *state = writer->state;
+    if (!writer->options.plain)
+        return format_raw(writer, row, out);
+    if (writer->info.sample == RAYO_SAMPLE_BIT)
+        return rayo_pbm_plain_row(state->plain_bits, row, out);
+    return format_plain_samples(writer, row, out);
+}
+
 /* 1 when the rows can go to the file as they are, stride included. */
 static int raw_as_is(const rayo_writer *writer, const unsigned char *rows,
                      size_t stride, uint32_t count)
@@ -221,15 +234,18 @@ static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
                                  err);
     for (r = 0; r < count; r++) {
         const unsigned char *row = rows + (size_t)r * stride;
-        size_t n;
-        rayo_status status;
-        if (!writer->options.plain)
-            n = format_raw(writer, row, state->scratch);
-        else if (writer->info.sample == RAYO_SAMPLE_BIT)
-            n = rayo_pbm_plain_row(state->plain_bits, row, state->scratch);
-        else
-            n = format_plain_samples(writer, row, state->scratch);
-        status = rayo_output_write(writer->out, state->scratch, n, err);
+        unsigned char *room;
+        rayo_status status = rayo_output_reserve(
+            writer->out, state->scratch_size, &room, err);
+        if (status != RAYO_OK)
+            return status;
+        if (room != NULL) {
+            rayo_output_advance(writer->out, format_row(writer, row, room));
+            continue;
+        }
+        status = rayo_output_write(writer->out, state->scratch,
+                                   format_row(writer, row, state->scratch),
+                                   err);
         if (status != RAYO_OK)
             return status;
     }

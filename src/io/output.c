@@ -221,6 +221,26 @@ rayo_status rayo_output_write(rayo_output *out, const void *data,
     return RAYO_OK;
 }
 
+rayo_status rayo_output_reserve(rayo_output *out, size_t size,
+                                unsigned char **room, rayo_error *err)
+{
+    *room = NULL;
+    if (size > sizeof out->buffer)
+        return RAYO_OK;
+    if (size > sizeof out->buffer - out->used) {
+        rayo_status status = flush(out, err);
+        if (status != RAYO_OK)
+            return status;
+    }
+    *room = out->buffer + out->used;
+    return RAYO_OK;
+}
+
+void rayo_output_advance(rayo_output *out, size_t n)
+{
+    out->used += n;
+}
+
 rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
 {
     rayo_status status = flush(out, err);
