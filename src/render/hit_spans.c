@@ -35,11 +35,19 @@
  * look: a wrong hint costs time, never a bit.  When the camera is within
  * a few E of a sphere's surface, or x* cannot be located, that sphere is
  * tested at every pixel of the row.
+ *
+ * The cost.  What a sphere's rows share (C - O, the error bounds, l.a)
+ * is worked out once a frame (rayo_hit_spans_plan).  On most rows the
+ * roots of the quadratic, rounded inwards, are the first and last hit,
+ * and four classified pixels prove it (quick_span): a row then costs a
+ * square root, two divisions and four estimates.  Only rows where
+ * rounding leaves a doubt take the walks and the exact tests.
  */
 #include "hit_spans.h"
 
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "rayo/sphere.h"
@@ -77,6 +85,28 @@ typedef struct sphere_row {
     double hit_level;      /* k + surely_hit */
     double miss_level;     /* k + surely_missed */
 } sphere_row;
+
+/* What a sphere's rows share, worked out once a frame. */
+typedef enum sphere_kind {
+    SPHERE_OUTSIDE, /* seen from outside: spans */
+    SPHERE_AROUND,  /* the camera is inside: every pixel hits */
+    SPHERE_NEAR,    /* the camera is within the error bounds of its
+                       surface, or the bounds overflow: every pixel is
+                       tested */
+} sphere_kind;
+
+typedef struct sphere_frame {
+    sphere_kind kind;
+    rayo_vec3 l;     /* C - O */
+    sphere_row row;  /* all but q, which depends on the row */
+} sphere_frame;
+
+struct rayo_hit_spans {
+    const rayo_camera *camera;
+    double a2;        /* a.a */
+    size_t count;
+    sphere_frame *spheres;
+};
 
 static int bit_set(const unsigned char *out, int64_t i)
 {
@@ -295,13 +325,53 @@ static void resolve_between(const row_frame *f, const sphere_row *s,
     fill_span(f->out, i, j);
 }
 
+/*
+ * The usual row in one try: when the hits are a bounded interval (the
+ * quadratic opens downwards), its roots rounded inwards to pixels are
+ * the first and last hit, provided those two pixels surely hit and their
+ * outer neighbours are surely outside M; then everything between is hit
+ * and everything beyond missed, by the two rules at the top of the file.
+ * Returns 0, having touched nothing, when any of the four is in doubt.
+ */
+static int quick_span(const row_frame *f, const sphere_row *s)
+{
+    double p = s->p, q = s->q, k = s->k;
+    double alpha = p * p - k * f->a2;
+    double beta = p * q - k * f->ab;
+    double gamma = q * q - k * f->b2;
+    double disc = beta * beta - alpha * gamma;
+    double t, r1, r2, first, last;
+    int64_t left, right;
+    if (!(alpha < 0.0) || !(disc > 0.0))
+        return 0;
+    t = -(beta + copysign(sqrt(disc), beta));
+    r1 = t / alpha + f->half_width;
+    r2 = gamma / t + f->half_width;
+    first = ceil(r1 < r2 ? r1 : r2);
+    last = floor(r1 < r2 ? r2 : r1);
+    if (!(first >= 0.0))
+        first = 0.0;
+    if (!(last < (double)f->width))
+        last = (double)f->width - 1.0;
+    if (!(first <= last))
+        return 0;
+    left = (int64_t)first;
+    right = (int64_t)last;
+    if (classify(f, s, left) <= 0 || classify(f, s, right) <= 0 ||
+        (left > 0 && classify(f, s, left - 1) >= 0) ||
+        (right < f->width - 1 && classify(f, s, right + 1) >= 0))
+        return 0;
+    fill_span(f->out, left, right);
+    return 1;
+}
+
 /* A sphere seen from outside (s->k well above the error bounds). */
 static void trace_outside(const row_frame *f, const sphere_row *s)
 {
     double lo, hi, hint_left, hint_right;
     int64_t left, right, start;
     int located;
-    if (row_misses(f, s))
+    if (row_misses(f, s) || quick_span(f, s))
         return;
     located = peak_window(f, s, &lo, &hi);
     if (located == 0)
@@ -324,36 +394,53 @@ static void trace_outside(const row_frame *f, const sphere_row *s)
     resolve_between(f, s, left, right);
 }
 
-/* Traces one sphere into the row; returns 1 when the row is now full. */
-static int trace_sphere(const row_frame *f, const rayo_sphere *sphere)
+/* A sphere's frame constants (see sphere_kind). */
+static void plan_sphere(const rayo_camera *camera, const rayo_sphere *sphere,
+                        sphere_frame *frame)
 {
-    rayo_vec3 l = rayo_vec3_sub(sphere->center, f->camera->origin);
+    rayo_vec3 l = rayo_vec3_sub(sphere->center, camera->origin);
     double ll = rayo_vec3_dot(l, l), rr = sphere->radius * sphere->radius;
     double scale = UNIT_ROUNDOFF * (ll + rr);
     double e = DELTA_ERROR * scale, t = ESTIMATE_ERROR * scale;
     double margin = 4.0 * (e + 3.0 * t);
+    sphere_row *s = &frame->row;
+    frame->l = l;
+    s->sphere = sphere;
+    s->length = sqrt(ll);
+    s->p = rayo_vec3_dot(l, camera->right);
+    s->q = 0.0;
+    s->k = ll - rr;
+    s->surely_hit = e + t;
+    s->surely_missed = -(e + 3.0 * t);
+    s->hit_level = s->k + s->surely_hit;
+    s->miss_level = s->k + s->surely_missed;
+    if (!isfinite(scale))
+        frame->kind = SPHERE_NEAR;
+    else if (s->k < -margin)
+        frame->kind = SPHERE_AROUND;
+    else if (s->k <= margin)
+        frame->kind = SPHERE_NEAR;
+    else
+        frame->kind = SPHERE_OUTSIDE;
+}
+
+/* Traces one sphere into the row; returns 1 when the row is now full. */
+static int trace_sphere(const row_frame *f, const sphere_frame *frame)
+{
     sphere_row s;
-    if (!isfinite(scale)) {
-        exact_range(f, sphere, 0, f->width - 1);
-        return 0;
-    }
-    s.sphere = sphere;
-    s.length = sqrt(ll);
-    s.p = rayo_vec3_dot(l, f->camera->right);
-    s.q = rayo_vec3_dot(l, f->b);
-    s.k = ll - rr;
-    s.surely_hit = e + t;
-    s.surely_missed = -(e + 3.0 * t);
-    s.hit_level = s.k + s.surely_hit;
-    s.miss_level = s.k + s.surely_missed;
-    if (s.k < -margin) {
+    switch (frame->kind) {
+    case SPHERE_AROUND:
         fill_span(f->out, 0, f->width - 1);
         return 1;
+    case SPHERE_NEAR:
+        exact_range(f, frame->row.sphere, 0, f->width - 1);
+        return 0;
+    case SPHERE_OUTSIDE:
+        break;
     }
-    if (s.k <= margin)
-        exact_range(f, sphere, 0, f->width - 1);
-    else
-        trace_outside(f, &s);
+    s = frame->row;
+    s.q = rayo_vec3_dot(frame->l, f->b);
+    trace_outside(f, &s);
     return 0;
 }
 
@@ -367,30 +454,69 @@ static int spans_apply(const rayo_camera *camera, const rayo_scene *scene)
     return isfinite(camera->focal) && camera->focal <= MAX_FOCAL;
 }
 
-int rayo_hit_spans_row(const rayo_camera *camera, const rayo_scene *scene,
-                       uint32_t row, unsigned char *out)
+rayo_hit_spans *rayo_hit_spans_plan(const rayo_camera *camera,
+                                    const rayo_scene *scene)
 {
-    row_frame f;
-    rayo_vec3 a = camera->right;
-    double y = (double)row - (double)(camera->height / 2);
-    size_t i, spheres;
+    rayo_hit_spans *plan;
+    size_t i;
     if (!spans_apply(camera, scene))
-        return 0;
+        return NULL;
+    plan = malloc(sizeof *plan);
+    if (plan == NULL)
+        return NULL;
+    plan->camera = camera;
+    plan->a2 = rayo_vec3_dot(camera->right, camera->right);
+    plan->count = rayo_scene_sphere_count(scene);
+    plan->spheres = malloc((plan->count ? plan->count : 1) *
+                           sizeof *plan->spheres);
+    if (plan->spheres == NULL) {
+        free(plan);
+        return NULL;
+    }
+    for (i = 0; i < plan->count; i++)
+        plan_sphere(camera, rayo_scene_sphere(scene, i), &plan->spheres[i]);
+    return plan;
+}
+
+void rayo_hit_spans_free(rayo_hit_spans *plan)
+{
+    if (plan == NULL)
+        return;
+    free(plan->spheres);
+    free(plan);
+}
+
+void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
+                           unsigned char *out)
+{
+    const rayo_camera *camera = plan->camera;
+    double y = (double)row - (double)(camera->height / 2);
+    row_frame f;
+    size_t i;
     f.camera = camera;
     f.row = row;
     f.width = camera->width;
     f.half_width = (double)(camera->width / 2);
     f.b = rayo_vec3_add(rayo_vec3_scale(camera->up, -y),
                         rayo_vec3_scale(camera->forward, camera->focal));
-    f.a2 = rayo_vec3_dot(a, a);
-    f.ab = rayo_vec3_dot(a, f.b);
+    f.a2 = plan->a2;
+    f.ab = rayo_vec3_dot(camera->right, f.b);
     f.b2 = rayo_vec3_dot(f.b, f.b);
     f.gram = f.a2 * f.b2 - f.ab * f.ab;
     f.out = out;
     memset(out, 0, ((size_t)camera->width + 7) / 8);
-    spheres = rayo_scene_sphere_count(scene);
-    for (i = 0; i < spheres; i++)
-        if (trace_sphere(&f, rayo_scene_sphere(scene, i)))
+    for (i = 0; i < plan->count; i++)
+        if (trace_sphere(&f, &plan->spheres[i]))
             break;
+}
+
+int rayo_hit_spans_row(const rayo_camera *camera, const rayo_scene *scene,
+                       uint32_t row, unsigned char *out)
+{
+    rayo_hit_spans *plan = rayo_hit_spans_plan(camera, scene);
+    if (plan == NULL)
+        return 0;
+    rayo_hit_spans_render(plan, row, out);
+    rayo_hit_spans_free(plan);
     return 1;
 }

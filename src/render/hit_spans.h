@@ -15,13 +15,32 @@
 #include "rayo/camera.h"
 #include "rayo/scene.h"
 
+typedef struct rayo_hit_spans rayo_hit_spans;
+
+/*
+ * What every row of a frame shares, worked out once: NULL when spans do
+ * not apply (the scene holds something other than spheres, too many
+ * spheres for spans to pay, the camera is outside the range the error
+ * bounds cover) or memory ran out -- the caller then tests every pixel.
+ * The plan refers to camera and scene, which must outlive it.
+ */
+rayo_hit_spans *rayo_hit_spans_plan(const rayo_camera *camera,
+                                    const rayo_scene *scene);
+
+/* Row `row` of the plan's frame into out, as rayo_hit_spans_row. */
+void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
+                           unsigned char *out);
+
+void rayo_hit_spans_free(rayo_hit_spans *plan);
+
 /*
  * Renders row `row` of a hit-mode frame (one ray per pixel) into out:
  * packed bits, most significant first, 1 = hit, padding bits zero.
  * Returns 1 when it did; 0, leaving out alone, when the scene holds
  * something other than spheres, too many spheres for spans to pay, or the
  * camera is outside the range the error bounds cover -- the caller then
- * tests every pixel.
+ * tests every pixel.  Plans, renders and frees: for one row; a frame
+ * keeps a plan.
  */
 int rayo_hit_spans_row(const rayo_camera *camera, const rayo_scene *scene,
                        uint32_t row, unsigned char *out);

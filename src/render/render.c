@@ -27,6 +27,8 @@
 
 #include "rayo/limits.h"
 
+#include "row_plan.h"
+
 /* Bands aim at this many bytes, so sinks get large writes. */
 #define BAND_TARGET_BYTES (256u * 1024u)
 /* and at least this many bands per thread, so threads share the work. */
@@ -40,6 +42,7 @@ typedef struct band_job {
     const rayo_camera *camera;
     const rayo_scene *scene;
     const rayo_render_options *options;
+    rayo_row_plan plan;
     size_t row_bytes;
     uint32_t rows_per_band, band_count, slot_count;
     unsigned char *slots;  /* slot_count * rows_per_band * row_bytes */
@@ -101,8 +104,8 @@ static void render_band(const band_job *job, uint32_t band)
     unsigned char *memory = slot_memory(job, band);
     uint32_t r;
     for (r = 0; r < count; r++)
-        rayo_render_row(job->camera, job->scene, job->options, first + r,
-                        memory + (size_t)r * job->row_bytes);
+        rayo_row_plan_render(&job->plan, first + r,
+                             memory + (size_t)r * job->row_bytes);
 }
 
 static void *worker_main(void *argument)
@@ -233,8 +236,7 @@ static rayo_status run_adaptive(band_job *job, unsigned threads,
 {
     double start = seconds_now();
     uint32_t band;
-    rayo_render_row(job->camera, job->scene, job->options, 0,
-                    slot_memory(job, 0));
+    rayo_row_plan_render(&job->plan, 0, slot_memory(job, 0));
     if ((seconds_now() - start) * job->camera->height >=
         SERIAL_BELOW_SECONDS)
         return run_parallel(job, threads, 0, sink, context, err);
@@ -295,9 +297,11 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
     }
     for (i = 0; i < job.slot_count; i++)
         job.slot_band[i] = UINT32_MAX;
+    rayo_row_plan_init(&job.plan, camera, scene, options);
     status = threads == 1
                  ? run_serial(&job, 0, sink, sink_context, err)
                  : run_adaptive(&job, threads, sink, sink_context, err);
+    rayo_row_plan_free(&job.plan);
     free(job.slots);
     free(job.slot_band);
     return status;

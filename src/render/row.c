@@ -1,22 +1,22 @@
 /*
  * row.c - one row of pixels: the per-pixel loop of every shading mode.
  *
- * This is the only place that knows what a shading mode does with a hit;
- * render.c only schedules rows.
+ * This is the only place that knows what a shading mode does with a hit,
+ * and which path a frame's rows take (row_plan.h); render.c only
+ * schedules rows.
  */
 #include <string.h>
 
 #include "rayo/render.h"
 
-#include "hit_spans.h"
+#include "row_plan.h"
 #include "shade.h"
 
+/* The per-pixel loop of hit mode. */
 static void render_row_hit(const rayo_camera *camera, const rayo_scene *scene,
                            uint32_t row, unsigned char *out)
 {
     uint32_t i;
-    if (rayo_hit_spans_row(camera, scene, row, out))
-        return; /* the same bits, from spans (hit_spans.c) */
     memset(out, 0, ((size_t)camera->width + 7) / 8);
     for (i = 0; i < camera->width; i++) {
         rayo_ray ray = rayo_camera_ray(camera, (double)i, (double)row);
@@ -25,23 +25,46 @@ static void render_row_hit(const rayo_camera *camera, const rayo_scene *scene,
     }
 }
 
+void rayo_row_plan_init(rayo_row_plan *plan, const rayo_camera *camera,
+                        const rayo_scene *scene,
+                        const rayo_render_options *options)
+{
+    plan->camera = camera;
+    plan->scene = scene;
+    plan->options = options;
+    plan->spans = options->shade == RAYO_SHADE_HIT && options->samples <= 1
+                      ? rayo_hit_spans_plan(camera, scene)
+                      : NULL;
+}
+
+void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
+                          unsigned char *out)
+{
+    const rayo_render_options *options = plan->options;
+    if (plan->spans != NULL) {
+        rayo_hit_spans_render(plan->spans, row, out); /* the same bits */
+        return;
+    }
+    if (options->shade == RAYO_SHADE_HIT && options->samples <= 1)
+        render_row_hit(plan->camera, plan->scene, row, out);
+    else
+        rayo_render_row_shaded(plan->camera, plan->scene, options, row, out);
+}
+
+void rayo_row_plan_free(rayo_row_plan *plan)
+{
+    rayo_hit_spans_free(plan->spans);
+    plan->spans = NULL;
+}
+
 void rayo_render_row(const rayo_camera *camera, const rayo_scene *scene,
                      const rayo_render_options *options, uint32_t row,
                      unsigned char *out)
 {
-    switch (options->shade) {
-    case RAYO_SHADE_HIT:
-        if (options->samples > 1)
-            rayo_render_row_shaded(camera, scene, options, row, out);
-        else
-            render_row_hit(camera, scene, row, out);
-        break;
-    case RAYO_SHADE_COURSE_GRAY:
-    case RAYO_SHADE_COURSE_COLOR:
-    case RAYO_SHADE_PHONG:
-        rayo_render_row_shaded(camera, scene, options, row, out);
-        break;
-    }
+    rayo_row_plan plan;
+    rayo_row_plan_init(&plan, camera, scene, options);
+    rayo_row_plan_render(&plan, row, out);
+    rayo_row_plan_free(&plan);
 }
 
 rayo_image_info rayo_render_image_info(const rayo_camera *camera,

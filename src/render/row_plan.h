@@ -1,0 +1,37 @@
+/*
+ * row_plan.h - a frame's rows, with what they share worked out once.
+ *
+ * render.c makes one plan a frame and renders every row through it, so
+ * the choice of path (the span fast path of hit_spans.c or the per-pixel
+ * loop) and the constants of the fast path are settled once, not on
+ * every row.  Private to the library; the public rayo_render_row plans
+ * for its one row.
+ */
+#ifndef RAYO_ROW_PLAN_H
+#define RAYO_ROW_PLAN_H
+
+#include <stdint.h>
+
+#include "rayo/render.h"
+
+#include "hit_spans.h"
+
+typedef struct rayo_row_plan {
+    const rayo_camera *camera;
+    const rayo_scene *scene;
+    const rayo_render_options *options;
+    rayo_hit_spans *spans; /* hit mode, one sample, spans apply; or NULL */
+} rayo_row_plan;
+
+/* Cannot fail: without memory for the fast path, rows take the loop. */
+void rayo_row_plan_init(rayo_row_plan *plan, const rayo_camera *camera,
+                        const rayo_scene *scene,
+                        const rayo_render_options *options);
+
+/* Row `row` into out, as rayo_render_row. */
+void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
+                          unsigned char *out);
+
+void rayo_row_plan_free(rayo_row_plan *plan);
+
+#endif
