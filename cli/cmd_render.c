@@ -455,7 +455,10 @@ int cli_render(int argc, char **argv)
     render_settings(req, &options);
     options.threads = (unsigned)req->threads;
     options.progress = stop_requested;
-    cli_progress_init(&progress, req->quiet);
+    /* No bar amid an image going to the terminal as text. */
+    cli_progress_init(&progress,
+                      req->quiet || (strcmp(req->output, "-") == 0 &&
+                                     cli_stdout_is_terminal()));
     options.progress_context = &progress;
     cli_interrupt_catch();
 
