@@ -232,22 +232,29 @@ static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
     if (raw_as_is(writer, rows, stride, count))
         return rayo_output_write(writer->out, rows, (size_t)count * stride,
                                  err);
-    for (r = 0; r < count; r++) {
-        const unsigned char *row = rows + (size_t)r * stride;
+    for (r = 0; r < count;) {
         unsigned char *room;
+        size_t available, used = 0;
         rayo_status status = rayo_output_reserve(
-            writer->out, state->scratch_size, &room, err);
+            writer->out, state->scratch_size, &room, &available, err);
         if (status != RAYO_OK)
             return status;
-        if (room != NULL) {
-            rayo_output_advance(writer->out, format_row(writer, row, room));
+        if (room == NULL) {
+            /* A row larger than the output's buffer. */
+            status = rayo_output_write(
+                writer->out, state->scratch,
+                format_row(writer, rows + (size_t)r * stride, state->scratch),
+                err);
+            if (status != RAYO_OK)
+                return status;
+            r++;
             continue;
         }
-        status = rayo_output_write(writer->out, state->scratch,
-                                   format_row(writer, row, state->scratch),
-                                   err);
-        if (status != RAYO_OK)
-            return status;
+        /* As many rows as the room surely holds, then one advance. */
+        for (; r < count && available - used >= state->scratch_size; r++)
+            used += format_row(writer, rows + (size_t)r * stride,
+                               room + used);
+        rayo_output_advance(writer->out, used);
     }
     return RAYO_OK;
 }

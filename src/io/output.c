@@ -249,10 +249,12 @@ rayo_status rayo_output_write(rayo_output *out, const void *data,
 }
 
 rayo_status rayo_output_reserve(rayo_output *out, size_t size,
-                                unsigned char **room, rayo_error *err)
+                                unsigned char **room, size_t *available,
+                                rayo_error *err)
 {
     rayo_status status;
     *room = NULL;
+    *available = 0;
     if (out->buffer == NULL && (status = make_buffer(out, err)) != RAYO_OK)
         return status;
     if (size > out->capacity)
@@ -261,6 +263,7 @@ rayo_status rayo_output_reserve(rayo_output *out, size_t size,
         (status = flush(out, err)) != RAYO_OK)
         return status;
     *room = out->buffer + out->used;
+    *available = out->capacity - out->used;
     return RAYO_OK;
 }
 

@@ -60,10 +60,13 @@ static rayo_status write_stream(rayo_output *out, int *in_place,
         size_t n = piece_sizes[i];
         rayo_status status;
         unsigned char *room = NULL;
+        size_t available = 0;
         if (i % 2 == 0) {
-            status = rayo_output_reserve(out, n, &room, err);
+            status = rayo_output_reserve(out, n, &room, &available, err);
             if (status != RAYO_OK)
                 return status;
+            if (room != NULL && available < n)
+                return RAYO_ERR_INVALID; /* less room than asked for */
         }
         if (room != NULL) {
             for (j = 0; j < n; j++)
@@ -155,6 +158,7 @@ static void test_pipe(void)
     rayo_error err;
     rayo_status status;
     unsigned char *room;
+    size_t available;
     if (pipe(fds) != 0) {
         ok(0, "a pipe");
         return;
@@ -165,9 +169,13 @@ static void test_pipe(void)
     status = rayo_output_open_fd(&out, fds[1], "pipe", &err);
     if (status == RAYO_OK) {
         /* A pipe's buffer holds 64 KiB: no more can be reserved. */
-        status = rayo_output_reserve(out, 64 * 1024 + 1, &room, &err);
-        ok(status == RAYO_OK && room == NULL,
+        status = rayo_output_reserve(out, 64 * 1024 + 1, &room, &available,
+                                     &err);
+        ok(status == RAYO_OK && room == NULL && available == 0,
            "pipe: a reservation larger than the buffer gives no room");
+        status = rayo_output_reserve(out, 100, &room, &available, &err);
+        is_int(available, 64 * 1024,
+               "pipe: an empty buffer offers all its 64 KiB");
         status = write_stream(out, &in_place, &err);
         if (status == RAYO_OK)
             status = rayo_output_commit(out, &err);
