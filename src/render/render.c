@@ -2,17 +2,24 @@
  * render.c - scheduling rows: bands rendered by a pool of threads and
  * delivered to the sink in order.
  *
- * The frame is cut into bands of consecutive rows.  Worker threads claim
- * bands in increasing order and render each into one of a ring of slot
- * buffers; the calling thread waits for the next band in order, hands it
- * to the sink, and frees its slot for a later band.  A band's pixels
- * depend only on its rows, never on which thread rendered it, so the
- * output is identical for any thread count.  With one thread nothing is
- * spawned.  With more, bands are first rendered and delivered on the
- * calling thread, and the workers start only once the frame, at the pace
- * of the bands done so far, would take SERIAL_BELOW_SECONDS or more: the
- * seed job takes tens of microseconds with the span fast path, and
- * starting threads would cost more than they save.
+ * The frame is cut into bands of consecutive rows, each rendered into one
+ * of a ring of slot buffers and handed to the sink in order by the
+ * calling thread.  A band's pixels depend only on its rows, never on
+ * which thread rendered it, so the output is identical for any thread
+ * count.  With one thread nothing is spawned.  With more, bands are first
+ * rendered and delivered on the calling thread, and helpers start only
+ * once the frame, at the pace of the bands done so far, would take
+ * SERIAL_BELOW_SECONDS or more: the seed job takes a few tens of
+ * microseconds, less than waking a second CPU costs.
+ *
+ * In parallel, the calling thread is one of the renderers: whenever the
+ * next band in order is not ready, it claims and renders the next free
+ * band itself, so it never idles while a helper is still starting, and a
+ * frame of a millisecond still gains from a second CPU.  A thread with
+ * nothing to do spins briefly (a band is usually microseconds from done)
+ * before it sleeps on the condition variable, and a thread that changes
+ * the state wakes sleepers only when there are some: futex wake-ups cost
+ * tens of microseconds on a virtual machine.
  */
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 
@@ -20,6 +27,7 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -36,7 +44,9 @@
 /* Slots per thread in the ring of band buffers. */
 #define SLOTS_PER_THREAD 3u
 /* Frames projected to take less than this stay on the calling thread. */
-#define SERIAL_BELOW_SECONDS 0.003
+#define SERIAL_BELOW_SECONDS 0.0002
+/* How long a thread with nothing to do spins before it sleeps. */
+#define SPIN_SECONDS 0.00005
 
 typedef struct band_job {
     const rayo_camera *camera;
@@ -49,10 +59,11 @@ typedef struct band_job {
     uint32_t *slot_band;   /* band held ready in each slot, or UINT32_MAX */
 
     pthread_mutex_t lock;
-    pthread_cond_t band_ready; /* a worker finished a band */
-    pthread_cond_t slot_free;  /* the consumer released a slot */
-    uint32_t next_band;        /* next band for a worker to claim */
-    uint32_t delivered;        /* bands handed to the sink */
+    pthread_cond_t changed; /* a band was rendered or delivered, or stop */
+    atomic_uint version;    /* counts those changes, for spinning */
+    unsigned sleepers;      /* threads waiting on changed */
+    uint32_t next_band;     /* next band to claim */
+    uint32_t delivered;     /* bands handed to the sink */
     int stop;
 } band_job;
 
@@ -108,31 +119,6 @@ static void render_band(const band_job *job, uint32_t band)
                              memory + (size_t)r * job->row_bytes);
 }
 
-static void *worker_main(void *argument)
-{
-    band_job *job = argument;
-    for (;;) {
-        uint32_t band;
-        pthread_mutex_lock(&job->lock);
-        while (!job->stop && job->next_band < job->band_count &&
-               job->next_band >= job->delivered + job->slot_count)
-            pthread_cond_wait(&job->slot_free, &job->lock);
-        if (job->stop || job->next_band >= job->band_count) {
-            pthread_mutex_unlock(&job->lock);
-            return NULL;
-        }
-        band = job->next_band++;
-        pthread_mutex_unlock(&job->lock);
-
-        render_band(job, band);
-
-        pthread_mutex_lock(&job->lock);
-        job->slot_band[band % job->slot_count] = band;
-        pthread_cond_broadcast(&job->band_ready);
-        pthread_mutex_unlock(&job->lock);
-    }
-}
-
 static rayo_status deliver(band_job *job, uint32_t band, rayo_row_sink sink,
                            void *context, rayo_error *err)
 {
@@ -164,58 +150,6 @@ static rayo_status run_serial(band_job *job, uint32_t band,
     return RAYO_OK;
 }
 
-/* Workers render the bands from `first` on; this thread delivers them. */
-static rayo_status run_parallel(band_job *job, unsigned threads,
-                                uint32_t first, rayo_row_sink sink,
-                                void *context, rayo_error *err)
-{
-    pthread_t *workers = malloc(threads * sizeof *workers);
-    rayo_status status = RAYO_OK;
-    unsigned started = 0, i;
-    uint32_t band;
-    if (workers == NULL)
-        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
-    job->next_band = first;
-    job->delivered = first;
-    pthread_mutex_init(&job->lock, NULL);
-    pthread_cond_init(&job->band_ready, NULL);
-    pthread_cond_init(&job->slot_free, NULL);
-    for (i = 0; i < threads; i++) {
-        if (pthread_create(&workers[started], NULL, worker_main, job) != 0)
-            break;
-        started++;
-    }
-    if (started == 0) {
-        status = run_serial(job, first, sink, context, err);
-    } else {
-        for (band = first; band < job->band_count && status == RAYO_OK;
-             band++) {
-            uint32_t slot = band % job->slot_count;
-            pthread_mutex_lock(&job->lock);
-            while (job->slot_band[slot] != band)
-                pthread_cond_wait(&job->band_ready, &job->lock);
-            pthread_mutex_unlock(&job->lock);
-
-            status = deliver(job, band, sink, context, err);
-
-            pthread_mutex_lock(&job->lock);
-            job->slot_band[slot] = UINT32_MAX;
-            job->delivered = band + 1;
-            if (status != RAYO_OK)
-                job->stop = 1;
-            pthread_cond_broadcast(&job->slot_free);
-            pthread_mutex_unlock(&job->lock);
-        }
-    }
-    for (i = 0; i < started; i++)
-        pthread_join(workers[i], NULL);
-    pthread_cond_destroy(&job->slot_free);
-    pthread_cond_destroy(&job->band_ready);
-    pthread_mutex_destroy(&job->lock);
-    free(workers);
-    return status;
-}
-
 static double seconds_now(void)
 {
     struct timespec ts;
@@ -223,30 +157,143 @@ static double seconds_now(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+/* Records a change of state (lock held) and wakes whoever sleeps. */
+static void announce(band_job *job)
+{
+    atomic_fetch_add_explicit(&job->version, 1, memory_order_release);
+    if (job->sleepers > 0)
+        pthread_cond_broadcast(&job->changed);
+}
+
+/* Waits (lock held) until the state changes from `seen`: a short spin
+ * with the lock released, then sleep. */
+static void await_change(band_job *job, unsigned seen)
+{
+    double start = seconds_now();
+    pthread_mutex_unlock(&job->lock);
+    while (atomic_load_explicit(&job->version, memory_order_acquire) ==
+               seen &&
+           seconds_now() - start < SPIN_SECONDS)
+        sched_yield();
+    pthread_mutex_lock(&job->lock);
+    while (atomic_load_explicit(&job->version, memory_order_relaxed) ==
+           seen) {
+        job->sleepers++;
+        pthread_cond_wait(&job->changed, &job->lock);
+        job->sleepers--;
+    }
+}
+
+/* Claims the next band, when its slot is free, and renders it (lock held
+ * on entry and on return); 0 when there was none to claim. */
+static int claim_and_render(band_job *job)
+{
+    uint32_t band = job->next_band;
+    if (job->stop || band >= job->band_count ||
+        band >= job->delivered + job->slot_count)
+        return 0;
+    job->next_band++;
+    pthread_mutex_unlock(&job->lock);
+    render_band(job, band);
+    pthread_mutex_lock(&job->lock);
+    job->slot_band[band % job->slot_count] = band;
+    announce(job);
+    return 1;
+}
+
+static void *helper_main(void *argument)
+{
+    band_job *job = argument;
+    pthread_mutex_lock(&job->lock);
+    while (!job->stop && job->next_band < job->band_count)
+        if (!claim_and_render(job))
+            await_change(job, atomic_load_explicit(&job->version,
+                                                   memory_order_relaxed));
+    pthread_mutex_unlock(&job->lock);
+    return NULL;
+}
+
+/* Bands from `first` on: this thread delivers them in order and renders
+ * whatever it can claim while the next one is not ready; `threads` - 1
+ * helpers render too. */
+static rayo_status run_parallel(band_job *job, unsigned threads,
+                                uint32_t first, rayo_row_sink sink,
+                                void *context, rayo_error *err)
+{
+    pthread_t *helpers = malloc(threads * sizeof *helpers);
+    rayo_status status = RAYO_OK;
+    unsigned started = 0, i;
+    uint32_t band = first;
+    if (helpers == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    job->next_band = first;
+    job->delivered = first;
+    job->sleepers = 0;
+    atomic_init(&job->version, 0);
+    pthread_mutex_init(&job->lock, NULL);
+    pthread_cond_init(&job->changed, NULL);
+    for (i = 0; i + 1 < threads; i++) {
+        if (pthread_create(&helpers[started], NULL, helper_main, job) != 0)
+            break;
+        started++;
+    }
+    pthread_mutex_lock(&job->lock);
+    while (band < job->band_count && status == RAYO_OK) {
+        uint32_t slot = band % job->slot_count;
+        unsigned seen;
+        if (job->slot_band[slot] == band) {
+            pthread_mutex_unlock(&job->lock);
+            status = deliver(job, band, sink, context, err);
+            pthread_mutex_lock(&job->lock);
+            job->slot_band[slot] = UINT32_MAX;
+            job->delivered = ++band;
+            if (status != RAYO_OK)
+                job->stop = 1;
+            announce(job);
+            continue;
+        }
+        seen = atomic_load_explicit(&job->version, memory_order_relaxed);
+        if (!claim_and_render(job))
+            await_change(job, seen);
+    }
+    job->stop = 1;
+    announce(job);
+    pthread_mutex_unlock(&job->lock);
+    for (i = 0; i < started; i++)
+        pthread_join(helpers[i], NULL);
+    pthread_cond_destroy(&job->changed);
+    pthread_mutex_destroy(&job->lock);
+    free(helpers);
+    return status;
+}
+
 /*
- * Renders and delivers bands on this thread while the frame, projected
- * from what is done so far, stays under SERIAL_BELOW_SECONDS; hands the
- * rest to the workers as soon as it does not.  The first projection comes
- * from one row, so an expensive frame loses one row, not one band, to the
+ * Renders and delivers bands on this thread while the frame's rendering,
+ * projected from the bands done so far, stays under SERIAL_BELOW_SECONDS;
+ * brings in helpers as soon as it does not.  Only rendering counts:
+ * helpers cannot make the sink faster.  The first projection comes from
+ * one row, so an expensive frame loses one row, not one band, to the
  * serial start (the row is rendered again with its band).
  */
 static rayo_status run_adaptive(band_job *job, unsigned threads,
                                 rayo_row_sink sink, void *context,
                                 rayo_error *err)
 {
-    double start = seconds_now();
+    double start = seconds_now(), rendering;
     uint32_t band;
     rayo_row_plan_render(&job->plan, 0, slot_memory(job, 0));
-    if ((seconds_now() - start) * job->camera->height >=
-        SERIAL_BELOW_SECONDS)
+    rendering = seconds_now() - start;
+    if (rendering * job->camera->height >= SERIAL_BELOW_SECONDS)
         return run_parallel(job, threads, 0, sink, context, err);
+    rendering = 0.0;
     for (band = 0; band < job->band_count; band++) {
         rayo_status status;
-        double spent = seconds_now() - start;
         if (band > 0 &&
-            spent / band * job->band_count >= SERIAL_BELOW_SECONDS)
+            rendering / band * job->band_count >= SERIAL_BELOW_SECONDS)
             return run_parallel(job, threads, band, sink, context, err);
+        start = seconds_now();
         render_band(job, band);
+        rendering += seconds_now() - start;
         status = deliver(job, band, sink, context, err);
         if (status != RAYO_OK)
             return status;
