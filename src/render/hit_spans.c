@@ -159,7 +159,8 @@ static void exact_range(const row_frame *f, const rayo_sphere *sphere,
  * behind (l.d <= 0) or its g is below s->surely_missed, 1 when above
  * s->surely_hit, else 0.
  */
-static int classify(const row_frame *f, const sphere_row *s, int64_t i)
+static inline int classify(const row_frame *f, const sphere_row *s,
+                           int64_t i)
 {
     double x = (double)i - f->half_width;
     double num = s->p * x + s->q;
@@ -340,23 +341,24 @@ static int quick_span(const row_frame *f, const sphere_row *s)
     double beta = p * q - k * f->ab;
     double gamma = q * q - k * f->b2;
     double disc = beta * beta - alpha * gamma;
-    double t, r1, r2, first, last;
+    double t, r1, r2, lo, hi;
     int64_t left, right;
     if (!(alpha < 0.0) || !(disc > 0.0))
         return 0;
     t = -(beta + copysign(sqrt(disc), beta));
     r1 = t / alpha + f->half_width;
     r2 = gamma / t + f->half_width;
-    first = ceil(r1 < r2 ? r1 : r2);
-    last = floor(r1 < r2 ? r2 : r1);
-    if (!(first >= 0.0))
-        first = 0.0;
-    if (!(last < (double)f->width))
-        last = (double)f->width - 1.0;
-    if (!(first <= last))
+    lo = r1 < r2 ? r1 : r2;
+    hi = r1 < r2 ? r2 : r1;
+    /* ceil(lo) and floor(hi), clipped to the row (no NaN gets past). */
+    if (!(hi >= 0.0) || !(lo < (double)f->width))
         return 0;
-    left = (int64_t)first;
-    right = (int64_t)last;
+    left = lo > 0.0 ? (int64_t)lo : 0;
+    if ((double)left < lo)
+        left++;
+    right = hi < (double)(f->width - 1) ? (int64_t)hi : f->width - 1;
+    if (left > right)
+        return 0;
     if (classify(f, s, left) <= 0 || classify(f, s, right) <= 0 ||
         (left > 0 && classify(f, s, left - 1) >= 0) ||
         (right < f->width - 1 && classify(f, s, right + 1) >= 0))
