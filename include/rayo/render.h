@@ -58,7 +58,7 @@ typedef struct rayo_render_options {
     rayo_shade_mode shade;
     unsigned samples; /* N: N x N stratified rays per pixel; default 1 */
     unsigned depth;   /* phong: mirror bounces followed; default 5 */
-    unsigned threads; /* 0: one per online CPU */
+    unsigned threads; /* 0: one per CPU (rayo_cpu_count) */
     rayo_progress_fn progress; /* may be NULL */
     void *progress_context;
 } rayo_render_options;
