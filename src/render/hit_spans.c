@@ -86,6 +86,18 @@ typedef struct sphere_row {
     double miss_level;     /* k + surely_missed */
 } sphere_row;
 
+/* A sphere's span on the row before, where rows are rendered in runs:
+ * the first and last pixel hit, or first > last when that row had none
+ * that tracking can start from. */
+typedef struct span_hint {
+    int64_t first, last;
+} span_hint;
+
+/* How far tracking follows an end before it asks the roots instead. */
+#define TRACK_STEPS 8
+/* Spans are tracked across rows in scenes of at most this many spheres. */
+#define TRACK_SPHERES 16
+
 /* What a sphere's rows share, worked out once a frame. */
 typedef enum sphere_kind {
     SPHERE_OUTSIDE, /* seen from outside: spans */
@@ -334,7 +346,8 @@ static void resolve_between(const row_frame *f, const sphere_row *s,
  * and everything beyond missed, by the two rules at the top of the file.
  * Returns 0, having touched nothing, when any of the four is in doubt.
  */
-static int quick_span(const row_frame *f, const sphere_row *s)
+static int quick_span(const row_frame *f, const sphere_row *s,
+                      span_hint *hint)
 {
     double p = s->p, q = s->q, k = s->k;
     double alpha = p * p - k * f->a2;
@@ -364,16 +377,82 @@ static int quick_span(const row_frame *f, const sphere_row *s)
         (right < f->width - 1 && classify(f, s, right + 1) >= 0))
         return 0;
     fill_span(f->out, left, right);
+    hint->first = left;
+    hint->last = right;
+    return 1;
+}
+
+/*
+ * One end of the span, followed from where it was on the row before:
+ * from `at`, outwards (step -1 for the first pixel, +1 for the last)
+ * while the next pixel surely hits, or inwards while `at` is surely
+ * outside M.  Sets *end to a pixel that surely hits whose outer
+ * neighbour is surely outside M or off the row; 0 when a pixel is in
+ * doubt or the end moved more than TRACK_STEPS.
+ */
+static int track_end(const row_frame *f, const sphere_row *s, int64_t at,
+                     int64_t step, int64_t *end)
+{
+    int c = classify(f, s, at), steps;
+    if (c > 0) {
+        for (steps = 0;; steps++) {
+            int64_t next = at + step;
+            if (next < 0 || next >= f->width)
+                break;
+            c = classify(f, s, next);
+            if (c < 0)
+                break;
+            if (c == 0 || steps == TRACK_STEPS)
+                return 0;
+            at = next;
+        }
+    } else if (c < 0) {
+        for (steps = 0; c < 0; steps++) {
+            at -= step;
+            if (at < 0 || at >= f->width || steps == TRACK_STEPS)
+                return 0;
+            c = classify(f, s, at);
+        }
+        if (c == 0)
+            return 0;
+    } else {
+        return 0;
+    }
+    *end = at;
+    return 1;
+}
+
+/*
+ * The row after one whose span is known: each end followed from where it
+ * was, by the rules of quick_span (the first and last pixel surely hit,
+ * their outer neighbours surely outside M), without the roots.
+ */
+static int track_span(const row_frame *f, const sphere_row *s,
+                      span_hint *hint)
+{
+    int64_t left, right;
+    if (hint->first > hint->last ||
+        !track_end(f, s, hint->first, -1, &left) ||
+        !track_end(f, s, hint->last, 1, &right) || left > right)
+        return 0;
+    fill_span(f->out, left, right);
+    hint->first = left;
+    hint->last = right;
     return 1;
 }
 
 /* A sphere seen from outside (s->k well above the error bounds). */
-static void trace_outside(const row_frame *f, const sphere_row *s)
+static void trace_outside(const row_frame *f, const sphere_row *s,
+                          span_hint *hint)
 {
     double lo, hi, hint_left, hint_right;
     int64_t left, right, start;
     int located;
-    if (row_misses(f, s) || quick_span(f, s))
+    if (track_span(f, s, hint))
+        return;
+    hint->first = 1;
+    hint->last = 0; /* none to track from, unless quick_span finds one */
+    if (row_misses(f, s) || quick_span(f, s, hint))
         return;
     located = peak_window(f, s, &lo, &hi);
     if (located == 0)
@@ -427,7 +506,8 @@ static void plan_sphere(const rayo_camera *camera, const rayo_sphere *sphere,
 }
 
 /* Traces one sphere into the row; returns 1 when the row is now full. */
-static int trace_sphere(const row_frame *f, const sphere_frame *frame)
+static int trace_sphere(const row_frame *f, const sphere_frame *frame,
+                        span_hint *hint)
 {
     sphere_row s;
     switch (frame->kind) {
@@ -442,7 +522,7 @@ static int trace_sphere(const row_frame *f, const sphere_frame *frame)
     }
     s = frame->row;
     s.q = rayo_vec3_dot(frame->l, f->b);
-    trace_outside(f, &s);
+    trace_outside(f, &s, hint);
     return 0;
 }
 
@@ -488,12 +568,15 @@ void rayo_hit_spans_free(rayo_hit_spans *plan)
     free(plan);
 }
 
-void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
-                           unsigned char *out)
+/* Row `row` into out; hints[i] is sphere i's span on the row before
+ * (updated), or NULL. */
+static void render_row(const rayo_hit_spans *plan, uint32_t row,
+                       unsigned char *out, span_hint *hints)
 {
     const rayo_camera *camera = plan->camera;
     double y = (double)row - (double)(camera->height / 2);
     row_frame f;
+    span_hint none;
     size_t i;
     f.camera = camera;
     f.row = row;
@@ -507,9 +590,42 @@ void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
     f.gram = f.a2 * f.b2 - f.ab * f.ab;
     f.out = out;
     memset(out, 0, ((size_t)camera->width + 7) / 8);
-    for (i = 0; i < plan->count; i++)
-        if (trace_sphere(&f, &plan->spheres[i]))
+    for (i = 0; i < plan->count; i++) {
+        none.first = 1;
+        none.last = 0;
+        if (trace_sphere(&f, &plan->spheres[i],
+                         hints != NULL ? &hints[i] : &none)) {
+            /* The row is full: the spheres after have no span to track. */
+            for (i++; hints != NULL && i < plan->count; i++) {
+                hints[i].first = 1;
+                hints[i].last = 0;
+            }
             break;
+        }
+    }
+}
+
+void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
+                           unsigned char *out)
+{
+    render_row(plan, row, out, NULL);
+}
+
+void rayo_hit_spans_render_rows(const rayo_hit_spans *plan, uint32_t first,
+                                uint32_t count, unsigned char *out,
+                                size_t stride)
+{
+    span_hint hints[TRACK_SPHERES];
+    uint32_t r;
+    size_t i;
+    int tracking = plan->count <= TRACK_SPHERES;
+    for (i = 0; tracking && i < plan->count; i++) {
+        hints[i].first = 1;
+        hints[i].last = 0;
+    }
+    for (r = 0; r < count; r++)
+        render_row(plan, first + r, out + (size_t)r * stride,
+                   tracking ? hints : NULL);
 }
 
 int rayo_hit_spans_row(const rayo_camera *camera, const rayo_scene *scene,

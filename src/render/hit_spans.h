@@ -10,6 +10,7 @@
 #ifndef RAYO_HIT_SPANS_H
 #define RAYO_HIT_SPANS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "rayo/camera.h"
@@ -30,6 +31,13 @@ rayo_hit_spans *rayo_hit_spans_plan(const rayo_camera *camera,
 /* Row `row` of the plan's frame into out, as rayo_hit_spans_row. */
 void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
                            unsigned char *out);
+
+/* Rows first..first+count-1 into out, stride bytes apart, each as
+ * rayo_hit_spans_render gives it; each row's spans start from those of
+ * the row before, which spares most rows the roots of their quadratic. */
+void rayo_hit_spans_render_rows(const rayo_hit_spans *plan, uint32_t first,
+                                uint32_t count, unsigned char *out,
+                                size_t stride);
 
 void rayo_hit_spans_free(rayo_hit_spans *plan);
 

@@ -112,11 +112,8 @@ static void render_band(const band_job *job, uint32_t band)
 {
     uint32_t first = band * job->rows_per_band;
     uint32_t count = band_rows(job->camera->height, first, job->rows_per_band);
-    unsigned char *memory = slot_memory(job, band);
-    uint32_t r;
-    for (r = 0; r < count; r++)
-        rayo_row_plan_render(&job->plan, first + r,
-                             memory + (size_t)r * job->row_bytes);
+    rayo_row_plan_render_rows(&job->plan, first, count,
+                              slot_memory(job, band), job->row_bytes);
 }
 
 static rayo_status deliver(band_job *job, uint32_t band, rayo_row_sink sink,

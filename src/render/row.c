@@ -51,6 +51,19 @@ void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
         rayo_render_row_shaded(plan->camera, plan->scene, options, row, out);
 }
 
+void rayo_row_plan_render_rows(const rayo_row_plan *plan, uint32_t first,
+                               uint32_t count, unsigned char *out,
+                               size_t stride)
+{
+    uint32_t r;
+    if (plan->spans != NULL) {
+        rayo_hit_spans_render_rows(plan->spans, first, count, out, stride);
+        return;
+    }
+    for (r = 0; r < count; r++)
+        rayo_row_plan_render(plan, first + r, out + (size_t)r * stride);
+}
+
 void rayo_row_plan_free(rayo_row_plan *plan)
 {
     rayo_hit_spans_free(plan->spans);

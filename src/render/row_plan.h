@@ -10,6 +10,7 @@
 #ifndef RAYO_ROW_PLAN_H
 #define RAYO_ROW_PLAN_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "rayo/render.h"
@@ -31,6 +32,12 @@ void rayo_row_plan_init(rayo_row_plan *plan, const rayo_camera *camera,
 /* Row `row` into out, as rayo_render_row. */
 void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
                           unsigned char *out);
+
+/* Rows first..first+count-1 into out, stride bytes apart: a band, which
+ * the fast path renders faster than row by row. */
+void rayo_row_plan_render_rows(const rayo_row_plan *plan, uint32_t first,
+                               uint32_t count, unsigned char *out,
+                               size_t stride);
 
 void rayo_row_plan_free(rayo_row_plan *plan);
 

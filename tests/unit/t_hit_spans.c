@@ -4,7 +4,9 @@
  *
  * The reference is the loop row.c ran before the fast path existed:
  * rayo_camera_ray for every pixel, then rayo_sphere_hit on each sphere
- * (and, separately, rayo_scene_hit_any).  The cases aim at the places
+ * (and, separately, rayo_scene_hit_any).  Each frame is checked row by
+ * row and also rendered in runs of rows, as render.c renders its bands,
+ * where each span is followed from the row before.  The cases aim at the places
  * where spans could go wrong: spheres tangent to some pixel's ray (delta
  * within rounding of zero), the camera inside a sphere or on its surface,
  * spheres behind, beside and across the camera plane, odd widths, every
@@ -138,13 +140,43 @@ static int bit_of(const unsigned char *row, uint32_t i)
 
 typedef struct tally {
     long rows, wrong_plain, wrong_scene, black, white, padding, refused;
+    long wrong_runs, tracked_rows;
 } tally;
+
+/*
+ * The frame rendered the way render.c does it, in runs of consecutive
+ * rows that follow each span from the row before, the runs of random
+ * lengths (one row up to the whole frame); NULL when spans decline.
+ */
+static unsigned char *render_in_runs(const rayo_camera *camera,
+                                     const rayo_scene *scene, size_t bytes)
+{
+    rayo_hit_spans *plan = rayo_hit_spans_plan(camera, scene);
+    unsigned char *frame;
+    uint32_t j = 0;
+    if (plan == NULL)
+        return NULL;
+    frame = malloc(bytes * camera->height);
+    if (frame == NULL)
+        abort();
+    while (j < camera->height) {
+        uint32_t left = camera->height - j;
+        uint32_t run = below(4) == 0 ? left : 1 + below(64);
+        if (run > left)
+            run = left;
+        rayo_hit_spans_render_rows(plan, j, run, frame + bytes * j, bytes);
+        j += run;
+    }
+    rayo_hit_spans_free(plan);
+    return frame;
+}
 
 static void check_frame(const rayo_camera *camera, const rayo_scene *scene,
                         tally *t)
 {
     size_t bytes = ((size_t)camera->width + 7) / 8;
     unsigned char *row = malloc(bytes);
+    unsigned char *runs = render_in_runs(camera, scene, bytes);
     uint32_t i, j;
     size_t k;
     if (row == NULL)
@@ -167,12 +199,17 @@ static void check_frame(const rayo_camera *camera, const rayo_scene *scene,
                                          0.0);
             t->wrong_plain += got != plain;
             t->wrong_scene += got != rayo_scene_hit_any(scene, &ray, 0.0);
+            if (runs != NULL)
+                t->wrong_runs += bit_of(runs + bytes * j, i) != plain;
             if (plain)
                 t->black++;
             else
                 t->white++;
         }
     }
+    if (runs != NULL)
+        t->tracked_rows += camera->height;
+    free(runs);
     free(row);
 }
 
@@ -305,6 +342,10 @@ int main(int argc, char **argv)
            "spans equal rayo_sphere_hit per pixel (%ld black, %ld white)",
            t.black, t.white);
     is_int(t.wrong_scene, 0, "spans equal rayo_scene_hit_any per pixel");
+    is_int(t.wrong_runs, 0,
+           "rows rendered in runs, each span followed from the row before, "
+           "equal the per-pixel test (%ld rows)",
+           t.tracked_rows);
     is_int(t.padding, 0, "padding bits are zero");
     ok(t.black > 100000 && t.white > 100000,
        "the cases hold both hits and misses");
