@@ -40,8 +40,12 @@
  * is worked out once a frame (rayo_hit_spans_plan).  On most rows the
  * roots of the quadratic, rounded inwards, are the first and last hit,
  * and four classified pixels prove it (quick_span): a row then costs a
- * square root, two divisions and four estimates.  Only rows where
- * rounding leaves a doubt take the walks and the exact tests.
+ * square root, two divisions and four estimates.  Rendered in runs
+ * (rayo_hit_spans_render_rows, a band at a time), a row starts from the
+ * span of the row before and moves each end while the same rules allow
+ * (track_span): four estimates, and one more for each pixel an end
+ * moves.  Only rows where rounding leaves a doubt take the walks and the
+ * exact tests.
  */
 #include "hit_spans.h"
 
