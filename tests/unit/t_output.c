@@ -85,6 +85,19 @@ static rayo_status write_stream(rayo_output *out, int *in_place,
     return RAYO_OK;
 }
 
+/* The stream into out, then commit (or abort on a failure, which is
+ * returned); out is gone either way. */
+static rayo_status write_stream_and_commit(rayo_output *out, int *in_place,
+                                           rayo_error *err)
+{
+    rayo_status status = write_stream(out, in_place, err);
+    if (status != RAYO_OK) {
+        rayo_output_abort(out);
+        return status;
+    }
+    return rayo_output_commit(out, err);
+}
+
 /* The number of bytes of fd that differ from the stream, or -1 when the
  * length differs. */
 static long stream_mismatches(int fd, size_t length)
@@ -133,13 +146,8 @@ static void test_file(void)
     }
     close(fd);
     status = rayo_output_open(&out, path, &err);
-    if (status == RAYO_OK) {
-        status = write_stream(out, &in_place, &err);
-        if (status == RAYO_OK)
-            status = rayo_output_commit(out, &err);
-        else
-            rayo_output_abort(out);
-    }
+    if (status == RAYO_OK)
+        status = write_stream_and_commit(out, &in_place, &err);
     is_int(status, RAYO_OK, "file: every piece written and committed");
     ok(in_place >= 6, "file: pieces formatted in place (%d)", in_place);
     fd = open(path, O_RDONLY);
@@ -176,11 +184,7 @@ static void test_pipe(void)
         status = rayo_output_reserve(out, 100, &room, &available, &err);
         is_int(available, 64 * 1024,
                "pipe: an empty buffer offers all its 64 KiB");
-        status = write_stream(out, &in_place, &err);
-        if (status == RAYO_OK)
-            status = rayo_output_commit(out, &err);
-        else
-            rayo_output_abort(out);
+        status = write_stream_and_commit(out, &in_place, &err);
     }
     close(fds[1]);
     pthread_join(thread, NULL);
@@ -202,13 +206,8 @@ static void test_full_device(void)
         return;
     }
     status = rayo_output_open_fd(&out, fd, "/dev/full", &err);
-    if (status == RAYO_OK) {
-        status = write_stream(out, &in_place, &err);
-        if (status == RAYO_OK)
-            status = rayo_output_commit(out, &err);
-        else
-            rayo_output_abort(out);
-    }
+    if (status == RAYO_OK)
+        status = write_stream_and_commit(out, &in_place, &err);
     close(fd);
     is_int(status, RAYO_ERR_IO, "/dev/full: an I/O error");
     ok(strstr(err.message, "/dev/full") != NULL &&
@@ -229,13 +228,8 @@ static void test_closed_pipe(void)
     }
     close(fds[0]);
     status = rayo_output_open_fd(&out, fds[1], "pipe", &err);
-    if (status == RAYO_OK) {
-        status = write_stream(out, &in_place, &err);
-        if (status == RAYO_OK)
-            status = rayo_output_commit(out, &err);
-        else
-            rayo_output_abort(out);
-    }
+    if (status == RAYO_OK)
+        status = write_stream_and_commit(out, &in_place, &err);
     close(fds[1]);
     is_int(status, RAYO_ERR_PIPE, "closed pipe: RAYO_ERR_PIPE");
 }
