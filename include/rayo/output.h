@@ -37,20 +37,6 @@ rayo_status rayo_output_write(rayo_output *out, const void *data,
                               size_t size, rayo_error *err);
 
 /*
- * Writing in place, for formatters that would otherwise format into a
- * buffer of their own and copy it: *room is set to at least size
- * writable bytes inside out's buffer (written out first if it lacks the
- * room), and *available to how many there are, valid until the next
- * call on out; rayo_output_advance(out, n) then adds the first n of them
- * (n <= *available) to the output.  *room is NULL and *available 0 when
- * size is larger than the buffer; write through rayo_output_write then.
- */
-rayo_status rayo_output_reserve(rayo_output *out, size_t size,
-                                unsigned char **room, size_t *available,
-                                rayo_error *err);
-void rayo_output_advance(rayo_output *out, size_t n);
-
-/*
  * Flushes, syncs and (for a regular file) renames into place, then frees
  * out.  On failure the temporary file is removed and out is freed too.
  */

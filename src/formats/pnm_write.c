@@ -10,14 +10,15 @@
  * two bytes big-endian when maxval > 255.  Each row is formatted straight
  * into the output's buffer (rayo_output_reserve), or into a scratch
  * buffer when a row is larger than that; plain PBM rows come from
- * pbm_plain.c.  Raw rows that need no change (bytes, or bits whose padding is already
- * zero) go to the output straight from the caller's memory, a whole block
- * of rows in one call.
+ * pbm_plain.c.  Raw rows that need no change (bytes, or bits whose
+ * padding is already zero) go to the output straight from the caller's
+ * memory, a whole block of rows in one call.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "../io/output_reserve.h"
 #include "pbm_plain.h"
 #include "writer_impl.h"
 

@@ -21,6 +21,8 @@
 
 #include "rayo/output.h"
 
+#include "output_reserve.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -33,6 +35,11 @@
 #define OUTPUT_PIPE_BUFFER (64u * 1024u)    /* Linux's default pipe size */
 #define OUTPUT_FILE_BUFFER (1024u * 1024u)  /* regular files */
 #define OUTPUT_DIRECT_WRITE (64u * 1024u)
+
+/* A write smaller than OUTPUT_DIRECT_WRITE must fit an empty buffer. */
+_Static_assert(OUTPUT_DIRECT_WRITE <= OUTPUT_PIPE_BUFFER &&
+                   OUTPUT_DIRECT_WRITE <= OUTPUT_FILE_BUFFER,
+               "small writes must fit every buffer");
 
 struct rayo_output {
     int fd;
@@ -269,18 +276,22 @@ rayo_status rayo_output_reserve(rayo_output *out, size_t size,
 
 void rayo_output_advance(rayo_output *out, size_t n)
 {
-    out->used += n;
+    out->used += n < out->capacity - out->used ? n : out->capacity - out->used;
 }
 
 rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
 {
     rayo_status status = flush(out, err);
     if (status == RAYO_OK && out->temp != NULL) {
-        if (fsync(out->fd) != 0 || close(out->fd) != 0) {
-            out->fd = -1;
-            status = system_error(out, errno, err);
+        int failed = fsync(out->fd) != 0, code = errno;
+        if (close(out->fd) != 0 && !failed) {
+            failed = 1;
+            code = errno;
+        }
+        out->fd = -1;
+        if (failed) {
+            status = system_error(out, code, err);
         } else {
-            out->fd = -1;
             if (rename(out->temp, out->path) != 0)
                 status = system_error(out, errno, err);
             else {
