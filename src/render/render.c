@@ -62,6 +62,7 @@ typedef struct band_job {
     pthread_cond_t changed; /* a band was rendered or delivered, or stop */
     atomic_uint version;    /* counts those changes, for spinning */
     unsigned sleepers;      /* threads waiting on changed */
+    int spin;               /* spin before sleeping: a CPU per thread */
     uint32_t next_band;     /* next band to claim */
     uint32_t delivered;     /* bands handed to the sink */
     int stop;
@@ -166,13 +167,15 @@ static void announce(band_job *job)
  * with the lock released, then sleep. */
 static void await_change(band_job *job, unsigned seen)
 {
-    double start = seconds_now();
-    pthread_mutex_unlock(&job->lock);
-    while (atomic_load_explicit(&job->version, memory_order_acquire) ==
-               seen &&
-           seconds_now() - start < SPIN_SECONDS)
-        sched_yield();
-    pthread_mutex_lock(&job->lock);
+    if (job->spin) {
+        double start = seconds_now();
+        pthread_mutex_unlock(&job->lock);
+        while (atomic_load_explicit(&job->version, memory_order_acquire) ==
+                   seen &&
+               seconds_now() - start < SPIN_SECONDS)
+            sched_yield();
+        pthread_mutex_lock(&job->lock);
+    }
     while (atomic_load_explicit(&job->version, memory_order_relaxed) ==
            seen) {
         job->sleepers++;
@@ -217,15 +220,18 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
                                 uint32_t first, rayo_row_sink sink,
                                 void *context, rayo_error *err)
 {
-    pthread_t *helpers = malloc(threads * sizeof *helpers);
+    pthread_t *helpers = malloc((threads - 1) * sizeof *helpers);
     rayo_status status = RAYO_OK;
     unsigned started = 0, i;
     uint32_t band = first;
     if (helpers == NULL)
-        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+        threads = 1; /* this thread renders every band itself */
     job->next_band = first;
     job->delivered = first;
     job->sleepers = 0;
+    /* With more threads than CPUs, a spinning thread would take the CPU
+     * of one with work to do. */
+    job->spin = threads <= rayo_cpu_count();
     atomic_init(&job->version, 0);
     pthread_mutex_init(&job->lock, NULL);
     pthread_cond_init(&job->changed, NULL);
