@@ -87,7 +87,8 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
 
 /*
  * Renders one row into out (rayo_image_info_row_bytes() bytes), on the
- * calling thread.
+ * calling thread.  Each call works out afresh what a frame's rows share;
+ * rayo_render, which does that once, is the faster way to many rows.
  */
 void rayo_render_row(const rayo_camera *camera, const rayo_scene *scene,
                      const rayo_render_options *options, uint32_t row,

@@ -28,7 +28,9 @@
  *   - estimate < -(E + 3T) or behind  =>  outside the set M where
  *     g >= -(E + 2T), which holds every pixel the exact test can call a
  *     hit; M is an interval containing x*, so one such pixel proves every
- *     pixel beyond it (away from x*) a miss;
+ *     pixel beyond it (away from x*) a miss -- or, without knowing x*,
+ *     every pixel beyond it away from a pixel known to be in M, such as
+ *     one that surely hits (what quick_span and track_span rely on);
  *   - everything else gets the exact test, rayo_camera_ray followed by
  *     rayo_sphere_hit, the very calls of the per-pixel loop.
  * The analytic ends (roots of a quadratic) are only hints of where to

@@ -45,10 +45,10 @@ void rayo_hit_spans_free(rayo_hit_spans *plan);
  * Renders row `row` of a hit-mode frame (one ray per pixel) into out:
  * packed bits, most significant first, 1 = hit, padding bits zero.
  * Returns 1 when it did; 0, leaving out alone, when the scene holds
- * something other than spheres, too many spheres for spans to pay, or the
- * camera is outside the range the error bounds cover -- the caller then
- * tests every pixel.  Plans, renders and frees: for one row; a frame
- * keeps a plan.
+ * something other than spheres, too many spheres for spans to pay, the
+ * camera is outside the range the error bounds cover, or memory for the
+ * plan ran out -- the caller then tests every pixel.  Plans, renders and
+ * frees: for one row; a frame keeps a plan.
  */
 int rayo_hit_spans_row(const rayo_camera *camera, const rayo_scene *scene,
                        uint32_t row, unsigned char *out);

@@ -253,6 +253,11 @@ static void fixed_scenes(tally *t)
         {301, 7, 90, 1e160, 0.0, 1e160, 1.0}, /* past the error bounds */
         {301, 7, 90, 1e-150, 1e-150, 3e-150, 2e-150}, /* tiny */
         {257, 257, 90, 0.0, 0.0, 5.0, 1e-9}, /* smaller than a pixel */
+        /* The widest rows: the span's ends hardly moving from row to
+         * row (the middle of a sphere), and moving by hundreds of pixels
+         * (its top, at the middle row), past what tracking follows. */
+        {65536, 24, 90, 0.0, 0.0, 3.0, 2.9},
+        {65536, 24, 90, 0.0, -1.0, 3.0, 1.0005},
     };
     size_t c;
     for (c = 0; c < sizeof cases / sizeof cases[0]; c++) {
