@@ -1,14 +1,11 @@
 /*
- * triangle.h - the triangle and its ray intersection (Moller-Trumbore).
+ * triangle.h - the triangle and its ray intersection.
  *
- * With edges e1 = b - a and e2 = c - a, a point of the triangle is
- * a + u e1 + v e2 with u >= 0, v >= 0, u + v <= 1.  Solving
- * o + t d = a + u e1 + v e2 by Cramer's rule gives, with p = d x e2,
- * det = e1.p, s = o - a and q = s x e1:
- *     u = s.p / det,   v = d.q / det,   t = e2.q / det.
- * Edges and corners count as inside.  A ray in the triangle's plane
- * (det == 0) never meets it.  This file knows nothing of pixels or of
- * materials; docs/geometry.md works an example through.
+ * The intersection is watertight (Woop, Benthin and Wald, 2013): a ray
+ * never slips between two triangles that share an edge or a corner.
+ * Edges and corners count as inside; a triangle seen edge-on is never
+ * met.  triangle.c says why it is watertight; docs/geometry.md works an
+ * example through.  This file knows nothing of pixels or of materials.
  */
 #ifndef RAYO_TRIANGLE_H
 #define RAYO_TRIANGLE_H

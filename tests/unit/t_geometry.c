@@ -8,6 +8,7 @@
  * own arithmetic.
  */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "rayo.h"
@@ -326,10 +327,104 @@ static void test_ambient_background(void)
     rayo_scene_free(s);
 }
 
+/* A seeded generator for the watertightness test (xorshift64*). */
+static uint64_t wt_state = 0x243F6A8885A308D3ull;
+
+static double wt_uniform(double lo, double hi)
+{
+    wt_state ^= wt_state >> 12;
+    wt_state ^= wt_state << 25;
+    wt_state ^= wt_state >> 27;
+    return lo + (hi - lo) * (double)((wt_state * 2685821657736338717ull) >>
+                                     11) /
+                    9007199254740992.0;
+}
+
+#define WT_N 9 /* vertices a side of the mesh */
+#define WT_TRIANGLES (2 * (WT_N - 1) * (WT_N - 1))
+
+/* The nearest t at which the ray meets the mesh, or INFINITY. */
+static double wt_nearest(const rayo_triangle *mesh, const rayo_ray *r)
+{
+    double best = INFINITY;
+    int k;
+    for (k = 0; k < WT_TRIANGLES; k++) {
+        double t = rayo_triangle_intersect(&mesh[k], r, 0, INFINITY);
+        if (t < best)
+            best = t;
+    }
+    return best;
+}
+
+/*
+ * Watertightness: a bumpy mesh of WT_N x WT_N vertices, each cell cut
+ * into two triangles, and rays from scattered origins at points of its
+ * inner edges (drawn along the edge, so within rounding of it) and at
+ * its inner vertices.  Every ray must meet the mesh where it was aimed
+ * (its nearest hit within 1e-9 of the target's distance), not slip
+ * through to another part or out.  The Moller-Trumbore test this
+ * replaced let 8.6% of these edge rays and 5.9% of the corner rays
+ * through.
+ */
+static void test_watertight(void)
+{
+    rayo_vec3 v[WT_N][WT_N];
+    rayo_triangle mesh[WT_TRIANGLES];
+    long rays[2] = {0, 0}, gaps[2] = {0, 0};
+    int i, j, n, m = 0;
+    for (i = 0; i < WT_N; i++)
+        for (j = 0; j < WT_N; j++)
+            v[i][j] = rayo_vec3_make(
+                i - 4.0 + wt_uniform(-0.3, 0.3),
+                j - 4.0 + wt_uniform(-0.3, 0.3),
+                10.0 + sin(0.7 * i) * cos(0.5 * j) + wt_uniform(-0.2, 0.2));
+    for (i = 0; i + 1 < WT_N; i++)
+        for (j = 0; j + 1 < WT_N; j++) {
+            mesh[m].a = v[i][j];
+            mesh[m].b = v[i + 1][j];
+            mesh[m++].c = v[i + 1][j + 1];
+            mesh[m].a = v[i][j];
+            mesh[m].b = v[i + 1][j + 1];
+            mesh[m++].c = v[i][j + 1];
+        }
+    for (n = 0; n < 40000; n++) {
+        int corner = n % 8 == 0, kind = n % 3;
+        rayo_vec3 target, from, to;
+        rayo_ray r;
+        double t, distance;
+        i = 1 + (int)wt_uniform(0, WT_N - 2);
+        j = 1 + (int)wt_uniform(0, WT_N - 2);
+        if (corner) {
+            target = v[i][j];
+        } else {
+            /* An inner edge from v[i][j]: the diagonal down-left, or the
+             * edge to the left or below, each between two triangles. */
+            from = v[i][j];
+            to = kind == 0 ? v[i - 1][j - 1] : kind == 1 ? v[i - 1][j]
+                                                          : v[i][j - 1];
+            target = rayo_vec3_add(
+                from,
+                rayo_vec3_scale(rayo_vec3_sub(to, from), wt_uniform(0, 1)));
+        }
+        r.origin = rayo_vec3_make(wt_uniform(-3, 3), wt_uniform(-3, 3),
+                                  wt_uniform(-2, 2));
+        distance = rayo_vec3_length(rayo_vec3_sub(target, r.origin));
+        r.direction = rayo_vec3_normalize(rayo_vec3_sub(target, r.origin));
+        t = wt_nearest(mesh, &r);
+        rays[corner]++;
+        gaps[corner] += !(fabs(t - distance) <= 1e-9 * distance);
+    }
+    is_int(gaps[0], 0, "watertight: %ld rays at shared edges all meet them",
+           rays[0]);
+    is_int(gaps[1], 0, "watertight: %ld rays at shared corners all meet them",
+           rays[1]);
+}
+
 int main(void)
 {
     test_plane();
     test_triangle();
+    test_watertight();
     test_validation();
     test_scene_queries();
     test_ambient_background();
