@@ -109,41 +109,20 @@ static rayo_status expand_bits(const rayo_image *src, rayo_image *dst,
     return RAYO_OK;
 }
 
-rayo_status rayo_image_to_gray(const rayo_image *src, rayo_image *dst,
-                               rayo_error *err)
+/* src as gray (channels 1, by luminance) or RGB (channels 3, a gray
+ * sample in all three), in its own sample type. */
+static rayo_status to_channels(const rayo_image *src, rayo_image *dst,
+                               unsigned channels, rayo_error *err)
 {
     rayo_image_info info = src->info;
     uint32_t x, y;
+    unsigned c;
     rayo_status status;
     if (src->info.sample == RAYO_SAMPLE_BIT)
-        return expand_bits(src, dst, 1, err);
-    if (src->info.channels == 1)
+        return expand_bits(src, dst, channels, err);
+    if (src->info.channels == channels)
         return copy_image(src, dst, err);
-    info.channels = 1;
-    status = create(dst, &info, err);
-    if (status != RAYO_OK)
-        return status;
-    for (y = 0; y < info.height; y++) {
-        const unsigned char *in = rayo_image_row(src, y);
-        unsigned char *out = rayo_image_row(dst, y);
-        for (x = 0; x < info.width; x++)
-            sample_put(&info, out, x,
-                       (unsigned)((luminance_1000(src, in, x) + 500) / 1000));
-    }
-    return RAYO_OK;
-}
-
-rayo_status rayo_image_to_rgb(const rayo_image *src, rayo_image *dst,
-                              rayo_error *err)
-{
-    rayo_image_info info = src->info;
-    uint32_t x, y;
-    rayo_status status;
-    if (src->info.sample == RAYO_SAMPLE_BIT)
-        return expand_bits(src, dst, 3, err);
-    if (src->info.channels == 3)
-        return copy_image(src, dst, err);
-    info.channels = 3;
+    info.channels = channels;
     status = create(dst, &info, err);
     if (status != RAYO_OK)
         return status;
@@ -151,11 +130,28 @@ rayo_status rayo_image_to_rgb(const rayo_image *src, rayo_image *dst,
         const unsigned char *in = rayo_image_row(src, y);
         unsigned char *out = rayo_image_row(dst, y);
         for (x = 0; x < info.width; x++) {
-            unsigned v = sample_at(src, in, x);
-            sample_put(&info, out, 3 * (size_t)x, v);
-            sample_put(&info, out, 3 * (size_t)x + 1, v);
-            sample_put(&info, out, 3 * (size_t)x + 2, v);
+            if (channels == 1) {
+                sample_put(&info, out, x,
+                           (unsigned)((luminance_1000(src, in, x) + 500) /
+                                      1000));
+                continue;
+            }
+            for (c = 0; c < channels; c++)
+                sample_put(&info, out, channels * (size_t)x + c,
+                           sample_at(src, in, x));
         }
     }
     return RAYO_OK;
+}
+
+rayo_status rayo_image_to_gray(const rayo_image *src, rayo_image *dst,
+                               rayo_error *err)
+{
+    return to_channels(src, dst, 1, err);
+}
+
+rayo_status rayo_image_to_rgb(const rayo_image *src, rayo_image *dst,
+                              rayo_error *err)
+{
+    return to_channels(src, dst, 3, err);
 }
