@@ -1,7 +1,7 @@
 /*
  * bench.h - what the benchmark's files share: the clock, the table of
- * results, pipes drained by a thread, and child processes measured for
- * time and peak memory.
+ * results, the render job, pipes drained by a thread, and child processes
+ * measured for time and peak memory.
  *
  * The benchmark (`make bench`) is a program, not a test: it prints a
  * table and writes JSON, and checks nothing in `make check`.  Every
@@ -55,6 +55,16 @@ void bench_pipe_close(bench_pipe *pipe, int write_fd);
  */
 double bench_run_child(char *const argv[], const char *command,
                        long *max_rss_kib);
+
+/*
+ * The job `rayo render` does, in process (render_job.c): the frame rendered through a
+ * writer of format (plain or raw) into out, which is then committed, or
+ * aborted on a failure.  0, or -1.
+ */
+int bench_render_into(rayo_output *out, const rayo_camera *camera,
+                      const rayo_scene *scene,
+                      const rayo_render_options *options, rayo_format format,
+                      int plain);
 
 /* The rows: seed.c, large.c, bvh.c, commands.c. */
 void bench_seed(bench_table *table);

@@ -60,32 +60,14 @@ static double render_to_null(const large_setup *setup, rayo_format format,
                              unsigned threads)
 {
     rayo_render_options options;
-    rayo_write_options write_options;
     rayo_output *out;
-    rayo_writer *writer;
-    rayo_image_info info;
     rayo_error err;
     double start = bench_now();
     rayo_render_options_init(&options);
     options.threads = threads;
-    info = rayo_render_image_info(&setup->camera, &options);
-    write_options.format = format;
-    write_options.plain = 0;
-    if (rayo_output_open(&out, "/dev/null", &err) != RAYO_OK)
-        return -1;
-    if (rayo_writer_open(&writer, out, &info, &write_options, &err) !=
-        RAYO_OK) {
-        rayo_output_abort(out);
-        return -1;
-    }
-    if (rayo_render(&setup->camera, setup->scene, &options,
-                    rayo_writer_row_sink, writer, &err) != RAYO_OK) {
-        rayo_writer_discard(writer);
-        rayo_output_abort(out);
-        return -1;
-    }
-    if (rayo_writer_finish(writer, &err) != RAYO_OK ||
-        rayo_output_commit(out, &err) != RAYO_OK)
+    if (rayo_output_open(&out, "/dev/null", &err) != RAYO_OK ||
+        bench_render_into(out, &setup->camera, setup->scene, &options,
+                          format, 0) != 0)
         return -1;
     return bench_now() - start;
 }

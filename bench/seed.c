@@ -50,33 +50,13 @@ static int seed_init(seed_setup *setup)
 static int seed_job(const seed_setup *setup, int fd)
 {
     rayo_render_options options;
-    rayo_write_options write_options;
     rayo_output *out;
-    rayo_writer *writer;
-    rayo_image_info info;
     rayo_error err;
     rayo_render_options_init(&options);
-    info = rayo_render_image_info(&setup->camera, &options);
-    write_options.format = RAYO_FORMAT_PBM;
-    write_options.plain = 1;
     if (rayo_output_open_fd(&out, fd, "pipe", &err) != RAYO_OK)
         return -1;
-    if (rayo_writer_open(&writer, out, &info, &write_options, &err) !=
-        RAYO_OK) {
-        rayo_output_abort(out);
-        return -1;
-    }
-    if (rayo_render(&setup->camera, setup->scene, &options,
-                    rayo_writer_row_sink, writer, &err) != RAYO_OK) {
-        rayo_writer_discard(writer);
-        rayo_output_abort(out);
-        return -1;
-    }
-    if (rayo_writer_finish(writer, &err) != RAYO_OK) {
-        rayo_output_abort(out);
-        return -1;
-    }
-    return rayo_output_commit(out, &err) == RAYO_OK ? 0 : -1;
+    return bench_render_into(out, &setup->camera, setup->scene, &options,
+                             RAYO_FORMAT_PBM, 1);
 }
 
 static int write_all(int fd, const unsigned char *bytes, size_t size)
