@@ -10,27 +10,8 @@
 #include <string.h>
 
 #include "rayo.h"
+#include "bitmap.h"
 #include "tap.h"
-
-static rayo_image make(uint32_t w, uint32_t h)
-{
-    rayo_image image;
-    rayo_image_info info = rayo_image_info_bit(w, h);
-    memset(&image, 0, sizeof image);
-    if (rayo_image_create(&image, &info, NULL) != RAYO_OK)
-        abort();
-    return image;
-}
-
-static int get(const rayo_image *m, uint32_t x, uint32_t y)
-{
-    return rayo_bit_get(rayo_image_row(m, y), x);
-}
-
-static void put(rayo_image *m, uint32_t x, uint32_t y, int black)
-{
-    rayo_bit_set(rayo_image_row(m, y), x, black);
-}
 
 /* A filled disk of radius r centred on pixel (cx, cy). */
 static void disk(rayo_image *m, double cx, double cy, double r)
@@ -39,7 +20,7 @@ static void disk(rayo_image *m, double cx, double cy, double r)
     for (y = 0; y < m->info.height; y++)
         for (x = 0; x < m->info.width; x++)
             if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r)
-                put(m, x, y, 1);
+                bitmap_put(m, x, y, 1);
 }
 
 static rayo_compare_report compare(const rayo_image *a, const rayo_image *b,
@@ -63,16 +44,16 @@ static void test_square(void)
        and removes (4,4).  (0,0) is sqrt(3^2 + 3^2) from the nearest
        black pixel (3,3); (4,4) is 2 from the nearest white ones, (4,2)
        and (2,4), the square being rows and columns 3..5. */
-    rayo_image a = make(9, 9), b = make(9, 9);
+    rayo_image a = bitmap_make(9, 9), b = bitmap_make(9, 9);
     rayo_compare_report r;
     uint32_t x, y;
     for (y = 3; y <= 5; y++)
         for (x = 3; x <= 5; x++) {
-            put(&a, x, y, 1);
-            put(&b, x, y, 1);
+            bitmap_put(&a, x, y, 1);
+            bitmap_put(&b, x, y, 1);
         }
-    put(&b, 0, 0, 1);
-    put(&b, 4, 4, 0);
+    bitmap_put(&b, 0, 0, 1);
+    bitmap_put(&b, 4, 4, 0);
     r = compare(&a, &b, 2);
     is_int(r.mismatches, 2, "square: 2 mismatches");
     is_int(r.reference_only, 1, "square: 1 black only in the reference");
@@ -100,12 +81,12 @@ static double brute_max(const rayo_image *a, const rayo_image *b,
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++) {
             double best = HUGE_VAL;
-            int c = get(a, x, y);
-            if (c == get(b, x, y))
+            int c = bitmap_get(a, x, y);
+            if (c == bitmap_get(b, x, y))
                 continue;
             for (j = 0; j < h; j++)
                 for (i = 0; i < w; i++)
-                    if (get(a, i, j) != c) {
+                    if (bitmap_get(a, i, j) != c) {
                         double d = hypot((double)i - x, (double)j - y);
                         if (d < best)
                             best = d;
@@ -124,7 +105,7 @@ static void test_random_distances(void)
     int round;
     for (round = 0; round < 6; round++) {
         uint32_t w = 13 + 7 * (uint32_t)round, h = 29 - 3 * (uint32_t)round;
-        rayo_image a = make(w, h), b = make(w, h);
+        rayo_image a = bitmap_make(w, h), b = bitmap_make(w, h);
         rayo_compare_report r;
         uint64_t beyond, n = 0;
         uint32_t x, y;
@@ -135,8 +116,8 @@ static void test_random_distances(void)
                 int black;
                 seed = seed * 6364136223846793005ul + 1442695040888963407ul;
                 black = ((x / 5 + y / 4 + round) % 3) == 0;
-                put(&a, x, y, black);
-                put(&b, x, y, ((seed >> 33) % 9 == 0) ? !black : black);
+                bitmap_put(&a, x, y, black);
+                bitmap_put(&b, x, y, ((seed >> 33) % 9 == 0) ? !black : black);
                 n += ((seed >> 33) % 9 == 0);
             }
         want = brute_max(&a, &b, 1.5, &beyond);
@@ -153,7 +134,7 @@ static void test_shapes(void)
 {
     /* A disk of radius 12 at (30, 20) in 64x48, and the same at
        (33, 18): offset (+3, -2), scale 1, and a shift diagnosis. */
-    rayo_image a = make(64, 48), b = make(64, 48), c = make(64, 48);
+    rayo_image a = bitmap_make(64, 48), b = bitmap_make(64, 48), c = bitmap_make(64, 48);
     rayo_compare_report r;
     uint32_t x, y;
     disk(&a, 30, 20, 12);
@@ -167,14 +148,14 @@ static void test_shapes(void)
     /* c = a upside down */
     for (y = 0; y < 48; y++)
         for (x = 0; x < 64; x++)
-            put(&c, x, 47 - y, get(&a, x, y));
+            bitmap_put(&c, x, 47 - y, bitmap_get(&a, x, y));
     r = compare(&a, &c, 2);
     is_int(r.diagnosis, RAYO_DIAGNOSIS_FLIPPED_VERTICALLY, "disk flipped: flipped vertically");
     is_int(r.diagnosis_exact, 1, "disk flipped: undoing it is exact");
     /* c = a inverted */
     for (y = 0; y < 48; y++)
         for (x = 0; x < 64; x++)
-            put(&c, x, y, !get(&a, x, y));
+            bitmap_put(&c, x, y, !bitmap_get(&a, x, y));
     r = compare(&a, &c, 2);
     is_int(r.diagnosis, RAYO_DIAGNOSIS_INVERTED, "disk inverted: inverted");
     is_int(r.mismatches, 64 * 48, "disk inverted: every pixel differs");
@@ -198,7 +179,7 @@ static void test_layouts_and_sizes(void)
 {
     /* A gray image compares as its threshold at half: 127 of 255 is
        black (2 * 127 < 255), 128 is white. */
-    rayo_image a = make(4, 1), g;
+    rayo_image a = bitmap_make(4, 1), g;
     rayo_image_info info = rayo_image_info_gray8(4, 1);
     rayo_compare_report r;
     rayo_compare_options bad;
@@ -211,8 +192,8 @@ static void test_layouts_and_sizes(void)
     row[1] = 127;
     row[2] = 128;
     row[3] = 255;
-    put(&a, 0, 0, 1);
-    put(&a, 1, 0, 1);
+    bitmap_put(&a, 0, 0, 1);
+    bitmap_put(&a, 1, 0, 1);
     r = compare(&a, &g, 2);
     is_int(r.verdict, RAYO_VERDICT_IDENTICAL, "gray 0 127 128 255 = bits 1 1 0 0");
     rayo_compare_options_init(&bad);
@@ -222,8 +203,8 @@ static void test_layouts_and_sizes(void)
     rayo_image_free(&g);
     /* Different sizes are inconsistent even when they agree where they
        overlap: 6x4 on 8x4, centres (3,2) and (4,2) aligned. */
-    a = make(8, 4);
-    g = make(6, 4);
+    a = bitmap_make(8, 4);
+    g = bitmap_make(6, 4);
     r = compare(&a, &g, 2);
     is_int(r.verdict * 100 + r.diagnosis,
            RAYO_VERDICT_INCONSISTENT * 100 + RAYO_DIAGNOSIS_DIFFERENT_SIZE,
@@ -235,13 +216,13 @@ static void test_layouts_and_sizes(void)
 
 static void test_format(void)
 {
-    rayo_image a = make(9, 9), b = make(9, 9);
+    rayo_image a = bitmap_make(9, 9), b = bitmap_make(9, 9);
     rayo_compare_report r;
     char small[16], text[2048];
     size_t need;
-    put(&a, 4, 4, 1);
-    put(&b, 4, 4, 1);
-    put(&b, 4, 5, 1);
+    bitmap_put(&a, 4, 4, 1);
+    bitmap_put(&b, 4, 4, 1);
+    bitmap_put(&b, 4, 5, 1);
     r = compare(&a, &b, 2);
     need = rayo_compare_format_json(&r, small, sizeof small);
     ok(need > sizeof small, "JSON longer than a small buffer: full length returned (%zu)", need);

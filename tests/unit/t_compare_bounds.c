@@ -20,27 +20,8 @@
 #include <string.h>
 
 #include "rayo.h"
+#include "bitmap.h"
 #include "tap.h"
-
-static rayo_image make(uint32_t w, uint32_t h)
-{
-    rayo_image image;
-    rayo_image_info info = rayo_image_info_bit(w, h);
-    memset(&image, 0, sizeof image);
-    if (rayo_image_create(&image, &info, NULL) != RAYO_OK)
-        abort();
-    return image;
-}
-
-static int get(const rayo_image *m, uint32_t x, uint32_t y)
-{
-    return rayo_bit_get(rayo_image_row(m, y), x);
-}
-
-static void put(rayo_image *m, uint32_t x, uint32_t y, int black)
-{
-    rayo_bit_set(rayo_image_row(m, y), x, black);
-}
 
 static unsigned long next(unsigned long *seed)
 {
@@ -60,12 +41,12 @@ static void blobs(rayo_image *m, unsigned long *seed)
         for (y = 0; y < h; y++)
             for (x = 0; x < w; x++)
                 if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r)
-                    put(m, x, y, 1);
+                    bitmap_put(m, x, y, 1);
     }
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++)
             if (next(seed) % 1999 == 0)
-                put(m, x, y, !get(m, x, y));
+                bitmap_put(m, x, y, !bitmap_get(m, x, y));
 }
 
 typedef struct brute {
@@ -89,7 +70,7 @@ static brute brute_force(const rayo_image *a, const rayo_image *b,
             for (i = 0; i < w; i++) {
                 int64_t best = -1;
                 for (j = 0; j < h; j++)
-                    if (get(a, i, j) == c) {
+                    if (bitmap_get(a, i, j) == c) {
                         int64_t d = (int64_t)j - y;
                         if (best < 0 || d * d < best)
                             best = d * d;
@@ -97,9 +78,9 @@ static brute brute_force(const rayo_image *a, const rayo_image *b,
                 v[(size_t)c * w + i] = best;
             }
         for (x = 0; x < w; x++) {
-            int colour = get(a, x, y);
+            int colour = bitmap_get(a, x, y);
             int64_t best = -1;
-            if (colour == get(b, x, y))
+            if (colour == bitmap_get(b, x, y))
                 continue;
             r.mismatches++;
             for (i = 0; i < w; i++) {
@@ -146,7 +127,7 @@ static void flipped(const rayo_image *a, rayo_image *out)
     uint32_t x, y, h = a->info.height;
     for (y = 0; y < h; y++)
         for (x = 0; x < a->info.width; x++)
-            put(out, x, h - 1 - y, get(a, x, y));
+            bitmap_put(out, x, h - 1 - y, bitmap_get(a, x, y));
 }
 
 static void inverted(const rayo_image *a, rayo_image *out)
@@ -154,7 +135,7 @@ static void inverted(const rayo_image *a, rayo_image *out)
     uint32_t x, y;
     for (y = 0; y < a->info.height; y++)
         for (x = 0; x < a->info.width; x++)
-            put(out, x, y, !get(a, x, y));
+            bitmap_put(out, x, y, !bitmap_get(a, x, y));
 }
 
 /* a with one pixel in `every` changed. */
@@ -164,8 +145,8 @@ static void touched(const rayo_image *a, rayo_image *out, unsigned every,
     uint32_t x, y;
     for (y = 0; y < a->info.height; y++)
         for (x = 0; x < a->info.width; x++)
-            put(out, x, y, next(seed) % every == 0 ? !get(a, x, y)
-                                                   : get(a, x, y));
+            bitmap_put(out, x, y, next(seed) % every == 0 ? !bitmap_get(a, x, y)
+                                                   : bitmap_get(a, x, y));
 }
 
 int main(void)
@@ -178,7 +159,7 @@ int main(void)
     size_t s, k;
     for (s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
         uint32_t w = sizes[s][0], h = sizes[s][1];
-        rayo_image a = make(w, h), b = make(w, h), c = make(w, h);
+        rayo_image a = bitmap_make(w, h), b = bitmap_make(w, h), c = bitmap_make(w, h);
         double tol = tolerances[s % (sizeof tolerances / sizeof tolerances[0])];
         blobs(&a, &seed);
         blobs(&c, &seed);
@@ -195,7 +176,7 @@ int main(void)
     }
     /* One frame at every tolerance, over and under 8. */
     {
-        rayo_image a = make(150, 140), b = make(150, 140);
+        rayo_image a = bitmap_make(150, 140), b = bitmap_make(150, 140);
         blobs(&a, &seed);
         touched(&a, &b, 9, &seed);
         for (k = 0; k < sizeof tolerances / sizeof tolerances[0]; k++)

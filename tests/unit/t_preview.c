@@ -8,22 +8,8 @@
 #include <string.h>
 
 #include "rayo.h"
+#include "bitmap.h"
 #include "tap.h"
-
-static rayo_image make(uint32_t w, uint32_t h)
-{
-    rayo_image image;
-    rayo_image_info info = rayo_image_info_bit(w, h);
-    memset(&image, 0, sizeof image);
-    if (rayo_image_create(&image, &info, NULL) != RAYO_OK)
-        abort();
-    return image;
-}
-
-static void put(rayo_image *m, uint32_t x, uint32_t y)
-{
-    rayo_bit_set(rayo_image_row(m, y), x, 1);
-}
 
 /* The picture of image in style with this many columns ("" on error). */
 static char *picture(const rayo_image *image, rayo_preview_style style,
@@ -50,7 +36,7 @@ int main(void)
                 row 1    black      white
                 row 2    white      white
                 row 3    black      white            */
-    rayo_image m = make(2, 4), big = make(8, 8);
+    rayo_image m = bitmap_make(2, 4), big = bitmap_make(8, 8);
     rayo_image_info gray = rayo_image_info_gray8(4, 2);
     rayo_image g;
     rayo_preview_options options;
@@ -58,10 +44,10 @@ int main(void)
     unsigned wide = 0, lines = 0, x, y;
     char *t;
     size_t length;
-    put(&m, 0, 0);
-    put(&m, 1, 0);
-    put(&m, 0, 1);
-    put(&m, 0, 3);
+    bitmap_put(&m, 0, 0, 1);
+    bitmap_put(&m, 1, 0, 1);
+    bitmap_put(&m, 0, 1, 1);
+    bitmap_put(&m, 0, 3, 1);
 
     t = picture(&m, RAYO_PREVIEW_BLOCKS, 80, &wide, &lines);
     /* line 0: column 0 rows 0-1 both black = full block; column 1 only
@@ -89,14 +75,14 @@ int main(void)
        one line of two full blocks. */
     for (y = 0; y < 8; y++)
         for (x = 0; x < 8; x++)
-            put(&big, x, y);
+            bitmap_put(&big, x, y, 1);
     t = picture(&big, RAYO_PREVIEW_BLOCKS, 2, &wide, &lines);
     is_string(t, "\xe2\x96\x88\xe2\x96\x88\n", "8x8 black in 2 columns: one line, two full blocks");
     free(t);
     /* a cell here is 4 x 8 pixels: one black pixel among its 32 is
        less than half, but not nothing: '+' */
     memset(big.pixels, 0, big.stride * 8);
-    put(&big, 0, 0);
+    bitmap_put(&big, 0, 0, 1);
     t = picture(&big, RAYO_PREVIEW_ASCII, 2, NULL, NULL);
     is_string(t, "+ \n", "ascii: 1 black pixel of 32 in a cell is '+'");
     free(t);

@@ -1,0 +1,35 @@
+/*
+ * bitmap.h - bilevel images for the unit tests that build them pixel by
+ * pixel (t_compare, t_compare_bounds, t_preview): make one all white,
+ * read and set a pixel.  Failing to allocate aborts the test.
+ */
+#ifndef RAYO_TEST_BITMAP_H
+#define RAYO_TEST_BITMAP_H
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "rayo.h"
+
+static inline rayo_image bitmap_make(uint32_t w, uint32_t h)
+{
+    rayo_image image;
+    rayo_image_info info = rayo_image_info_bit(w, h);
+    memset(&image, 0, sizeof image);
+    if (rayo_image_create(&image, &info, NULL) != RAYO_OK)
+        abort();
+    return image;
+}
+
+static inline int bitmap_get(const rayo_image *m, uint32_t x, uint32_t y)
+{
+    return rayo_bit_get(rayo_image_row(m, y), x);
+}
+
+static inline void bitmap_put(rayo_image *m, uint32_t x, uint32_t y,
+                              int black)
+{
+    rayo_bit_set(rayo_image_row(m, y), x, black);
+}
+
+#endif
