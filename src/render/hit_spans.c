@@ -633,14 +633,3 @@ void rayo_hit_spans_render_rows(const rayo_hit_spans *plan, uint32_t first,
         render_row(plan, first + r, out + (size_t)r * stride,
                    tracking ? hints : NULL);
 }
-
-int rayo_hit_spans_row(const rayo_camera *camera, const rayo_scene *scene,
-                       uint32_t row, unsigned char *out)
-{
-    rayo_hit_spans *plan = rayo_hit_spans_plan(camera, scene);
-    if (plan == NULL)
-        return 0;
-    rayo_hit_spans_render(plan, row, out);
-    rayo_hit_spans_free(plan);
-    return 1;
-}

@@ -28,7 +28,10 @@ typedef struct rayo_hit_spans rayo_hit_spans;
 rayo_hit_spans *rayo_hit_spans_plan(const rayo_camera *camera,
                                     const rayo_scene *scene);
 
-/* Row `row` of the plan's frame into out, as rayo_hit_spans_row. */
+/*
+ * Row `row` of the plan's frame (one ray per pixel) into out: packed
+ * bits, most significant first, 1 = hit, padding bits zero.
+ */
 void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
                            unsigned char *out);
 
@@ -40,17 +43,5 @@ void rayo_hit_spans_render_rows(const rayo_hit_spans *plan, uint32_t first,
                                 size_t stride);
 
 void rayo_hit_spans_free(rayo_hit_spans *plan);
-
-/*
- * Renders row `row` of a hit-mode frame (one ray per pixel) into out:
- * packed bits, most significant first, 1 = hit, padding bits zero.
- * Returns 1 when it did; 0, leaving out alone, when the scene holds
- * something other than spheres, too many spheres for spans to pay, the
- * camera is outside the range the error bounds cover, or memory for the
- * plan ran out -- the caller then tests every pixel.  Plans, renders and
- * frees: for one row; a frame keeps a plan.
- */
-int rayo_hit_spans_row(const rayo_camera *camera, const rayo_scene *scene,
-                       uint32_t row, unsigned char *out);
 
 #endif

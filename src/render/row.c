@@ -32,23 +32,21 @@ void rayo_row_plan_init(rayo_row_plan *plan, const rayo_camera *camera,
     plan->camera = camera;
     plan->scene = scene;
     plan->options = options;
-    plan->spans = options->shade == RAYO_SHADE_HIT && options->samples <= 1
-                      ? rayo_hit_spans_plan(camera, scene)
-                      : NULL;
+    plan->hit_only =
+        options->shade == RAYO_SHADE_HIT && options->samples <= 1;
+    plan->spans = plan->hit_only ? rayo_hit_spans_plan(camera, scene) : NULL;
 }
 
 void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
                           unsigned char *out)
 {
-    const rayo_render_options *options = plan->options;
-    if (plan->spans != NULL) {
+    if (plan->spans != NULL)
         rayo_hit_spans_render(plan->spans, row, out); /* the same bits */
-        return;
-    }
-    if (options->shade == RAYO_SHADE_HIT && options->samples <= 1)
+    else if (plan->hit_only)
         render_row_hit(plan->camera, plan->scene, row, out);
     else
-        rayo_render_row_shaded(plan->camera, plan->scene, options, row, out);
+        rayo_render_row_shaded(plan->camera, plan->scene, plan->options, row,
+                               out);
 }
 
 void rayo_row_plan_render_rows(const rayo_row_plan *plan, uint32_t first,

@@ -21,7 +21,8 @@ typedef struct rayo_row_plan {
     const rayo_camera *camera;
     const rayo_scene *scene;
     const rayo_render_options *options;
-    rayo_hit_spans *spans; /* hit mode, one sample, spans apply; or NULL */
+    int hit_only;          /* hit mode, one sample: bits, not shading */
+    rayo_hit_spans *spans; /* hit_only and spans apply; or NULL */
 } rayo_row_plan;
 
 /* Cannot fail: without memory for the fast path, rows take the loop. */

@@ -177,17 +177,19 @@ static void check_frame(const rayo_camera *camera, const rayo_scene *scene,
     size_t bytes = ((size_t)camera->width + 7) / 8;
     unsigned char *row = malloc(bytes);
     unsigned char *runs = render_in_runs(camera, scene, bytes);
+    rayo_hit_spans *plan = rayo_hit_spans_plan(camera, scene);
     uint32_t i, j;
     size_t k;
     if (row == NULL)
         abort();
     for (j = 0; j < camera->height; j++) {
         t->rows++;
-        memset(row, 0xA5, bytes);
-        if (!rayo_hit_spans_row(camera, scene, j, row)) {
+        if (plan == NULL) {
             t->refused++;
             continue;
         }
+        memset(row, 0xA5, bytes);
+        rayo_hit_spans_render(plan, j, row);
         if (camera->width % 8 != 0 &&
             (row[bytes - 1] & (0xFFu >> (camera->width % 8))) != 0)
             t->padding++;
@@ -209,6 +211,7 @@ static void check_frame(const rayo_camera *camera, const rayo_scene *scene,
     }
     if (runs != NULL)
         t->tracked_rows += camera->height;
+    rayo_hit_spans_free(plan);
     free(runs);
     free(row);
 }
@@ -310,14 +313,13 @@ static long render_differences(void)
     return wrong;
 }
 
-/* With a plane in the scene, spans decline and leave the row alone. */
+/* With a plane in the scene, spans decline: there is no plan. */
 static int declines_planes(void)
 {
     rayo_camera camera;
     rayo_scene *scene;
     rayo_error err;
-    unsigned char row[8];
-    int declined;
+    rayo_hit_spans *plan;
     if (rayo_camera_init(&camera, 64, 4, 90, rayo_vec3_make(0, 0, 0),
                          &err) != RAYO_OK ||
         rayo_scene_create(&scene, &err) != RAYO_OK ||
@@ -326,11 +328,10 @@ static int declines_planes(void)
         rayo_scene_add_plane(scene, rayo_vec3_make(0, -1, 0),
                              rayo_vec3_make(0, 1, 0), 0, &err) != RAYO_OK)
         abort();
-    memset(row, 0xA5, sizeof row);
-    declined = !rayo_hit_spans_row(&camera, scene, 2, row) &&
-               row[0] == 0xA5 && row[7] == 0xA5;
+    plan = rayo_hit_spans_plan(&camera, scene);
+    rayo_hit_spans_free(plan);
     rayo_scene_free(scene);
-    return declined;
+    return plan == NULL;
 }
 
 /* An optional argument runs that many random scenes (default 600). */
