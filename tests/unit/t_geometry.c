@@ -8,7 +8,6 @@
  * own arithmetic.
  */
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 #include "rayo.h"
@@ -327,17 +326,12 @@ static void test_ambient_background(void)
     rayo_scene_free(s);
 }
 
-/* A seeded generator for the watertightness test (xorshift64*). */
-static uint64_t wt_state = 0x243F6A8885A308D3ull;
+/* The watertightness test's numbers: the library's seeded generator. */
+static rayo_lcg wt_lcg;
 
 static double wt_uniform(double lo, double hi)
 {
-    wt_state ^= wt_state >> 12;
-    wt_state ^= wt_state << 25;
-    wt_state ^= wt_state >> 27;
-    return lo + (hi - lo) * (double)((wt_state * 2685821657736338717ull) >>
-                                     11) /
-                    9007199254740992.0;
+    return lo + (hi - lo) * rayo_lcg_next(&wt_lcg);
 }
 
 #define WT_N 9 /* vertices a side of the mesh */
@@ -400,7 +394,7 @@ static int wt_faces_one_way(const rayo_triangle *mesh, rayo_vec3 p,
  * through.  (Where the bumps fold, a ray may meet the mesh in front of
  * its target too, which does not count either way; and a target on the
  * mesh's silhouette as seen from the ray's origin is left out.)  The Moller-Trumbore test this
- * replaced let 8.7% of these edge rays and 5.1% of the corner rays
+ * replaced let 8.8% of these edge rays and 5.9% of the corner rays
  * through.
  */
 static void test_watertight(void)
@@ -409,6 +403,7 @@ static void test_watertight(void)
     rayo_triangle mesh[WT_TRIANGLES];
     long rays[2] = {0, 0}, gaps[2] = {0, 0}, silhouette = 0;
     int i, j, n, m = 0;
+    rayo_lcg_seed(&wt_lcg, 2013);
     for (i = 0; i < WT_N; i++)
         for (j = 0; j < WT_N; j++) {
             /* One draw a statement: the same mesh whatever order a
