@@ -22,10 +22,12 @@ rayo_pbm_plain *rayo_pbm_plain_new(uint32_t width);
 void rayo_pbm_plain_free(rayo_pbm_plain *plain);
 
 /*
- * Formats row (packed bits, most significant first; padding bits
- * ignored) into out, rayo_pbm_plain_row_size() bytes, which it returns.
+ * Formats count rows (packed bits, most significant first, stride bytes
+ * apart; padding bits ignored) into out, one after the other,
+ * count * rayo_pbm_plain_row_size() bytes, which it returns.
  */
-size_t rayo_pbm_plain_row(const rayo_pbm_plain *plain,
-                          const unsigned char *row, unsigned char *out);
+size_t rayo_pbm_plain_rows(const rayo_pbm_plain *plain,
+                           const unsigned char *rows, size_t stride,
+                           size_t count, unsigned char *out);
 
 #endif

@@ -192,16 +192,23 @@ static size_t format_raw(const rayo_writer *writer, const unsigned char *row,
     return bytes;
 }
 
-/* One row in the file's layout into out (scratch_bytes() of room). */
-static size_t format_row(const rayo_writer *writer, const unsigned char *row,
-                         unsigned char *out)
+/* count rows in the file's layout into out, which has room for count
+ * times scratch_bytes(); returns the bytes written. */
+static size_t format_rows(const rayo_writer *writer,
+                          const unsigned char *rows, size_t stride,
+                          uint32_t count, unsigned char *out)
 {
     const pnm_state *state = writer->state;
-    if (!writer->options.plain)
-        return format_raw(writer, row, out);
-    if (writer->info.sample == RAYO_SAMPLE_BIT)
-        return rayo_pbm_plain_row(state->plain_bits, row, out);
-    return format_plain_samples(writer, row, out);
+    size_t used = 0;
+    uint32_t r;
+    if (state->plain_bits != NULL)
+        return rayo_pbm_plain_rows(state->plain_bits, rows, stride, count,
+                                   out);
+    for (r = 0; r < count; r++, rows += stride)
+        used += writer->options.plain
+                    ? format_plain_samples(writer, rows, out + used)
+                    : format_raw(writer, rows, out + used);
+    return used;
 }
 
 /* 1 when the rows can go to the file as they are, stride included. */
@@ -235,7 +242,7 @@ static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
                                  err);
     for (r = 0; r < count;) {
         unsigned char *room;
-        size_t available, used = 0;
+        size_t available, fits;
         rayo_status status = rayo_output_reserve(
             writer->out, state->scratch_size, &room, &available, err);
         if (status != RAYO_OK)
@@ -244,7 +251,8 @@ static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
             /* A row larger than the output's buffer. */
             status = rayo_output_write(
                 writer->out, state->scratch,
-                format_row(writer, rows + (size_t)r * stride, state->scratch),
+                format_rows(writer, rows + (size_t)r * stride, stride, 1,
+                            state->scratch),
                 err);
             if (status != RAYO_OK)
                 return status;
@@ -252,10 +260,13 @@ static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
             continue;
         }
         /* As many rows as the room surely holds, then one advance. */
-        for (; r < count && available - used >= state->scratch_size; r++)
-            used += format_row(writer, rows + (size_t)r * stride,
-                               room + used);
-        rayo_output_advance(writer->out, used);
+        fits = available / state->scratch_size;
+        if (fits > count - r)
+            fits = count - r;
+        rayo_output_advance(writer->out,
+                            format_rows(writer, rows + (size_t)r * stride,
+                                        stride, (uint32_t)fits, room));
+        r += (uint32_t)fits;
     }
     return RAYO_OK;
 }

@@ -4,7 +4,9 @@
  * every 70 digits and at the end), on seeded random rows built to hit the
  * formatter's cases: long runs of white and black, mixed bytes, black
  * runs ending at the last byte, garbage in the padding bits, and widths
- * around the multiples of 8 and 70.
+ * around the multiples of 8 and 70.  Rows are formatted in blocks of
+ * random length, strides with slack between rows, so that blocks end
+ * inside and past the formatter's template of white rows (8 KiB).
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -50,43 +52,54 @@ static void random_row(unsigned char *row, size_t bytes)
     }
 }
 
+#define ROWS 40
+
 int main(void)
 {
     static const uint32_t big[] = {65536, 65535, 4097, 8000};
     size_t cases = 0, wrong = 0, bad_size = 0;
-    uint32_t width;
     size_t i;
-    unsigned char *row = malloc(8192), *got = malloc(70000),
-                  *want = malloc(70000);
-    if (row == NULL || got == NULL || want == NULL)
+    unsigned char *rows = malloc(ROWS * 8200), *got = malloc(ROWS * 70000),
+                  *want = malloc(ROWS * 70000);
+    if (rows == NULL || got == NULL || want == NULL)
         return 1;
     for (i = 0; i < 300 + sizeof big / sizeof big[0]; i++) {
-        rayo_pbm_plain *plain;
+        uint32_t width = i < 300 ? (uint32_t)i + 1 : big[i - 300];
+        size_t bytes = (width + 7) / 8, stride = bytes + i % 3;
+        size_t size = rayo_pbm_plain_row_size(width), m = 0, n = 0;
+        rayo_pbm_plain *plain = rayo_pbm_plain_new(width);
         int r;
-        width = i < 300 ? (uint32_t)i + 1 : big[i - 300];
-        plain = rayo_pbm_plain_new(width);
         if (plain == NULL)
             return 1;
-        for (r = 0; r < 40; r++) {
-            size_t n, m;
-            random_row(row, (width + 7) / 8);
+        for (r = 0; r < ROWS; r++) {
+            unsigned char *row = rows + (size_t)r * stride;
+            random_row(row, bytes);
             if (r == 0)
-                memset(row, 0, (width + 7) / 8);
+                memset(row, 0, bytes);
             if (r == 1)
-                memset(row, 0xFF, (width + 7) / 8);
-            memset(got, '?', rayo_pbm_plain_row_size(width) + 1);
-            n = rayo_pbm_plain_row(plain, row, got);
-            m = obvious(row, width, want);
-            cases++;
-            bad_size += n != m || n != rayo_pbm_plain_row_size(width);
-            wrong += n != m || memcmp(got, want, m) != 0 || got[n] != '?';
+                memset(row, 0xFF, bytes);
+            m += obvious(row, width, want + m);
         }
+        memset(got, '?', ROWS * size + 1);
+        for (r = 0; r < ROWS;) {
+            size_t count = 1 + next() % (i % 2 ? ROWS : 4);
+            if (count > (size_t)(ROWS - r))
+                count = (size_t)(ROWS - r);
+            bad_size += rayo_pbm_plain_rows(plain, rows + (size_t)r * stride,
+                                            stride, count, got + n) !=
+                        count * size;
+            n += count * size;
+            r += (int)count;
+        }
+        cases += ROWS;
+        bad_size += n != m;
+        wrong += n != m || memcmp(got, want, m) != 0 || got[n] != '?';
         rayo_pbm_plain_free(plain);
     }
     is_int(bad_size, 0, "row sizes agree (%lu rows)", (unsigned long)cases);
     is_int(wrong, 0, "every row spelled as the obvious formatter does, "
                      "nothing written past it");
-    free(row);
+    free(rows);
     free(got);
     free(want);
     return tap_done();
