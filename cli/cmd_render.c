@@ -455,10 +455,6 @@ int cli_render(int argc, char **argv)
     render_settings(req, &options);
     options.threads = (unsigned)req->threads;
     options.progress = stop_requested;
-    /* No bar amid an image going to the terminal as text. */
-    cli_progress_init(&progress,
-                      req->quiet || (strcmp(req->output, "-") == 0 &&
-                                     cli_stdout_is_terminal()));
     options.progress_context = &progress;
     cli_interrupt_catch();
 
@@ -466,8 +462,13 @@ int cli_render(int argc, char **argv)
         rayo_image_info info = rayo_render_image_info(&camera, &options);
         cli_preview_create(&preview, &info, &err);
     }
-    if (err.status == RAYO_OK &&
-        rayo_output_open(&out, req->output, &err) == RAYO_OK) {
+    if (err.status == RAYO_OK)
+        rayo_output_open(&out, req->output, &err);
+    /* No bar amid an image going to a terminal as text (standard output
+     * on one, or -o /dev/tty). */
+    cli_progress_init(&progress, req->quiet || (err.status == RAYO_OK &&
+                                                rayo_output_is_terminal(out)));
+    if (err.status == RAYO_OK) {
         if (render_to(out, &camera, scene, &options, &write_options,
                       preview, &err) == RAYO_OK)
             rayo_output_commit(out, &err);

@@ -48,6 +48,11 @@ void rayo_output_abort(rayo_output *out);
 /* The name used in messages: the path, or "standard output". */
 const char *rayo_output_name(const rayo_output *out);
 
+/* 1 when out writes straight to a terminal (standard output on one,
+ * /dev/tty, a pseudo-terminal's device), where a progress bar on the
+ * same terminal would land amid the image. */
+int rayo_output_is_terminal(const rayo_output *out);
+
 /*
  * The temporary file being written, or NULL when writing directly.  Lets a
  * signal handler unlink(2) it before the process dies.

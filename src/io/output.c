@@ -326,3 +326,8 @@ const char *rayo_output_temp_path(const rayo_output *out)
 {
     return out->temp;
 }
+
+int rayo_output_is_terminal(const rayo_output *out)
+{
+    return out->temp == NULL && isatty(out->fd);
+}

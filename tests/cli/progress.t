@@ -189,6 +189,15 @@ long_enough "image to the terminal" &&
 tr -d '\r' <"$TMP/tty-image.tty" | cmp -s - "$TMP/notty.ppm"
 ok $? "image to the terminal: exactly the image's text"
 
+# The same through -o /dev/tty, standard output elsewhere.
+on_tty dev-tty '>/dev/null' render "$SCENE" -W "$W" -H "$H" --samples 4 -j 1 \
+    -o /dev/tty
+is "$status" 0 "image to /dev/tty: exit status 0"
+long_enough "image to /dev/tty" &&
+    is "$(grep -c 'rayo:' "$TMP/dev-tty.tty")" 0 "image to /dev/tty: no bar amid it"
+tr -d '\r' <"$TMP/dev-tty.tty" | cmp -s - "$TMP/notty.ppm"
+ok $? "image to /dev/tty: exactly the image's text"
+
 # --- a quick render: none (the bar waits a second) ------------------
 on_tty seed ">$(q "$TMP/seed.pbm")"
 is "$status" 0 "the assignment on a terminal: exit status 0"

@@ -4,12 +4,13 @@
  * (rayo_output_reserve/advance) it is given, into a regular file (its
  * large buffer) and into a pipe (its pipe-sized one); and it reports what
  * goes wrong: no room on the device, a closed pipe, a reservation larger
- * than the buffer.
+ * than the buffer.  It also tells a terminal from the rest
+ * (rayo_output_is_terminal), on a pseudo-terminal of its own.
  *
  * The expected stream is generated here from a seeded sequence and the
  * destination read back with plain read(2).
  */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 600 /* posix_openpt, grantpt, unlockpt, ptsname */
 
 #include <errno.h>
 #include <fcntl.h>
@@ -238,9 +239,49 @@ static void test_closed_pipe(void)
     is_int(status, RAYO_ERR_PIPE, "closed pipe: RAYO_ERR_PIPE");
 }
 
+/* A terminal, and only a terminal, is one: a pseudo-terminal's device,
+ * opened by its path as `-o /dev/pts/N` would; a file and /dev/null are
+ * not. */
+static void test_is_terminal(void)
+{
+    char path[] = "/tmp/rayo-t-output.XXXXXX";
+    int fd = mkstemp(path), master = posix_openpt(O_RDWR | O_NOCTTY);
+    const char *device = master < 0 || grantpt(master) != 0 ||
+                                 unlockpt(master) != 0
+                             ? NULL
+                             : ptsname(master);
+    rayo_output *out;
+    rayo_error err;
+    int opened;
+    if (fd >= 0)
+        close(fd);
+    opened = fd >= 0 && rayo_output_open(&out, path, &err) == RAYO_OK;
+    ok(opened && !rayo_output_is_terminal(out),
+       "a regular file is not a terminal");
+    if (opened)
+        rayo_output_abort(out);
+    unlink(path);
+    opened = rayo_output_open(&out, "/dev/null", &err) == RAYO_OK;
+    ok(opened && !rayo_output_is_terminal(out), "/dev/null is not a terminal");
+    if (opened)
+        rayo_output_abort(out);
+    if (device == NULL) {
+        ok(1, "# SKIP no pseudo-terminal");
+    } else {
+        opened = rayo_output_open(&out, device, &err) == RAYO_OK;
+        ok(opened && rayo_output_is_terminal(out),
+           "a pseudo-terminal (%s) is a terminal", device);
+        if (opened)
+            rayo_output_abort(out);
+    }
+    if (master >= 0)
+        close(master);
+}
+
 int main(void)
 {
     signal(SIGPIPE, SIG_IGN);
+    test_is_terminal();
     test_file();
     test_pipe();
     test_full_device();
