@@ -72,6 +72,10 @@ void bench_large(bench_table *table, const char *rayo);
 void bench_bvh(bench_table *table);
 void bench_commands(bench_table *table, const char *rows_file);
 
+/* The median time a new thread takes to start running on an idle CPU
+ * (thread_start.c), seconds; -1 when no thread could be created. */
+double bench_thread_start_seconds(void);
+
 /* The assignment's program, the baseline of seed.c (baseline.c). */
 void bench_baseline_seed(int fd);
 

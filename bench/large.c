@@ -151,6 +151,17 @@ static void throughput(bench_table *table, const large_setup *setup)
                  2.0, 0);
     bench_add(table, "p4_speedup", "16384x12288 P4, time 1 thread / all",
               one / many, "x");
+    if (all >= 2) {
+        /* A helper that starts `late` seconds in can at best halve
+         * what is left: T1 / ((T1 + late) / 2). */
+        double late = bench_thread_start_seconds();
+        bench_add(table, "thread_start_us",
+                  "a new thread starts running after (median)", late * 1e6,
+                  "us");
+        bench_add(table, "p4_speedup_bound",
+                  "16384x12288 P4, best 1 -> 2 speed-up with that start",
+                  late < 0 ? -1 : 2.0 * one / (one + late), "x");
+    }
     bench_target(table, "PNG / libpng alone", png / alone, 1.2, 1);
 }
 
