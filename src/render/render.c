@@ -2,9 +2,8 @@
  * render.c - scheduling rows: bands rendered by a pool of threads and
  * delivered to the sink in order.
  *
- * The frame is cut into bands of consecutive rows, each rendered into one
- * of a ring of slot buffers and handed to the sink in order by the
- * calling thread.  A band's pixels depend only on its rows, never on
+ * The frame is cut into bands of consecutive rows, each rendered into a
+ * slot buffer and handed to the sink in order by the calling thread.  A band's pixels depend only on its rows, never on
  * which thread rendered it, so the output is identical for any thread
  * count.  With one thread nothing is spawned.  With more, bands are first
  * rendered and delivered on the calling thread, and helpers start only
@@ -15,7 +14,11 @@
  * In parallel, the calling thread is one of the renderers: whenever the
  * next band in order is not ready, it claims and renders the next free
  * band itself, so it never idles while a helper is still starting, and a
- * frame of a millisecond still gains from a second CPU.  A thread with
+ * frame of a millisecond still gains from a second CPU.  Each thread
+ * renders into slots of its own (SLOTS_PER_THREAD, freed as their bands
+ * are delivered), so a slot's memory stays in the cache of the CPU that
+ * fills it instead of passing between CPUs as a shared ring's slots did
+ * (docs/performance.md has the measurements).  A thread with
  * nothing to do spins briefly (a band is usually microseconds from done)
  * before it sleeps on the condition variable, and a thread that changes
  * the state wakes sleepers only when there are some: futex wake-ups cost
@@ -54,9 +57,15 @@ typedef struct band_job {
     const rayo_render_options *options;
     rayo_row_plan plan;
     size_t row_bytes;
-    uint32_t rows_per_band, band_count, slot_count;
-    unsigned char *slots;  /* slot_count * rows_per_band * row_bytes */
-    uint32_t *slot_band;   /* band held ready in each slot, or UINT32_MAX */
+    uint32_t rows_per_band, band_count;
+    uint32_t slot_count;   /* SLOTS_PER_THREAD per thread: the bands in
+                              flight, claimed but not delivered, at most */
+    unsigned char *slots;  /* slot_count * rows_per_band * row_bytes;
+                              thread t owns SLOTS_PER_THREAD from
+                              t * SLOTS_PER_THREAD */
+    uint32_t *ready;       /* [band % slot_count]: 1 + the slot that
+                              holds the band once rendered, else 0 */
+    unsigned *free_slots;  /* per thread: a bit for each free slot */
 
     pthread_mutex_t lock;
     pthread_cond_t changed; /* a band was rendered or delivered, or stop */
@@ -103,26 +112,26 @@ static uint32_t band_rows(uint32_t rows, uint32_t first, uint32_t per_band)
     return rows - first < per_band ? rows - first : per_band;
 }
 
-static unsigned char *slot_memory(const band_job *job, uint32_t band)
+static unsigned char *slot_memory(const band_job *job, uint32_t slot)
 {
-    size_t slot = band % job->slot_count;
-    return job->slots + slot * job->rows_per_band * job->row_bytes;
+    return job->slots + (size_t)slot * job->rows_per_band * job->row_bytes;
 }
 
-static void render_band(const band_job *job, uint32_t band)
+static void render_band(const band_job *job, uint32_t band, uint32_t slot)
 {
     uint32_t first = band * job->rows_per_band;
     uint32_t count = band_rows(job->camera->height, first, job->rows_per_band);
     rayo_row_plan_render_rows(&job->plan, first, count,
-                              slot_memory(job, band), job->row_bytes);
+                              slot_memory(job, slot), job->row_bytes);
 }
 
-static rayo_status deliver(band_job *job, uint32_t band, rayo_row_sink sink,
-                           void *context, rayo_error *err)
+static rayo_status deliver(band_job *job, uint32_t band, uint32_t slot,
+                           rayo_row_sink sink, void *context,
+                           rayo_error *err)
 {
     uint32_t first = band * job->rows_per_band;
     uint32_t count = band_rows(job->camera->height, first, job->rows_per_band);
-    rayo_status status = sink(context, slot_memory(job, band), job->row_bytes,
+    rayo_status status = sink(context, slot_memory(job, slot), job->row_bytes,
                               first, count, err);
     if (status != RAYO_OK)
         return status;
@@ -133,15 +142,16 @@ static rayo_status deliver(band_job *job, uint32_t band, rayo_row_sink sink,
     return RAYO_OK;
 }
 
-/* Renders and delivers the bands from `band` on, on this thread. */
+/* Renders and delivers the bands from `band` on, on this thread, in its
+ * first slot. */
 static rayo_status run_serial(band_job *job, uint32_t band,
                               rayo_row_sink sink, void *context,
                               rayo_error *err)
 {
     for (; band < job->band_count; band++) {
         rayo_status status;
-        render_band(job, band);
-        status = deliver(job, band, sink, context, err);
+        render_band(job, band, 0);
+        status = deliver(job, band, 0, sink, context, err);
         if (status != RAYO_OK)
             return status;
     }
@@ -184,29 +194,53 @@ static void await_change(band_job *job, unsigned seen)
     }
 }
 
-/* Claims the next band, when its slot is free, and renders it (lock held
- * on entry and on return); 0 when there was none to claim. */
-static int claim_and_render(band_job *job)
+/* The lowest set bit of a nonzero mask. */
+static unsigned lowest_bit(unsigned mask)
 {
-    uint32_t band = job->next_band;
-    if (job->stop || band >= job->band_count ||
+    unsigned bit = 0;
+    while (!(mask & 1u)) {
+        mask >>= 1;
+        bit++;
+    }
+    return bit;
+}
+
+/* Claims the next band, when thread `thread` has a free slot, and renders
+ * it there (lock held on entry and on return); 0 when there was none to
+ * claim.  The next band to deliver is never left unclaimed for want of a
+ * slot: the calling thread's slots hold only bands after it, and so are
+ * all free when it is still unclaimed. */
+static int claim_and_render(band_job *job, unsigned thread)
+{
+    uint32_t band = job->next_band, slot;
+    unsigned free_slots = job->free_slots[thread];
+    if (job->stop || band >= job->band_count || free_slots == 0 ||
         band >= job->delivered + job->slot_count)
         return 0;
+    slot = thread * SLOTS_PER_THREAD + lowest_bit(free_slots);
+    job->free_slots[thread] = free_slots & (free_slots - 1);
     job->next_band++;
     pthread_mutex_unlock(&job->lock);
-    render_band(job, band);
+    render_band(job, band, slot);
     pthread_mutex_lock(&job->lock);
-    job->slot_band[band % job->slot_count] = band;
+    job->ready[band % job->slot_count] = slot + 1;
     announce(job);
     return 1;
 }
 
+typedef struct helper {
+    pthread_t thread;
+    band_job *job;
+    unsigned index; /* 1, 2, ...: the calling thread is 0 */
+} helper;
+
 static void *helper_main(void *argument)
 {
-    band_job *job = argument;
+    const helper *self = argument;
+    band_job *job = self->job;
     pthread_mutex_lock(&job->lock);
     while (!job->stop && job->next_band < job->band_count)
-        if (!claim_and_render(job))
+        if (!claim_and_render(job, self->index))
             await_change(job, atomic_load_explicit(&job->version,
                                                    memory_order_relaxed));
     pthread_mutex_unlock(&job->lock);
@@ -220,12 +254,16 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
                                 uint32_t first, rayo_row_sink sink,
                                 void *context, rayo_error *err)
 {
-    pthread_t *helpers = malloc((threads - 1) * sizeof *helpers);
+    helper *helpers = malloc((threads - 1) * sizeof *helpers);
     rayo_status status = RAYO_OK;
     unsigned started = 0, i;
     uint32_t band = first;
     if (helpers == NULL)
         threads = 1; /* this thread renders every band itself */
+    for (i = 0; i < threads; i++)
+        job->free_slots[i] = (1u << SLOTS_PER_THREAD) - 1;
+    for (i = 0; i < job->slot_count; i++)
+        job->ready[i] = 0;
     job->next_band = first;
     job->delivered = first;
     job->sleepers = 0;
@@ -236,19 +274,25 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     pthread_mutex_init(&job->lock, NULL);
     pthread_cond_init(&job->changed, NULL);
     for (i = 0; i + 1 < threads; i++) {
-        if (pthread_create(&helpers[started], NULL, helper_main, job) != 0)
+        helpers[started].job = job;
+        helpers[started].index = started + 1;
+        if (pthread_create(&helpers[started].thread, NULL, helper_main,
+                           &helpers[started]) != 0)
             break;
         started++;
     }
     pthread_mutex_lock(&job->lock);
     while (band < job->band_count && status == RAYO_OK) {
-        uint32_t slot = band % job->slot_count;
+        uint32_t *ready = &job->ready[band % job->slot_count];
         unsigned seen;
-        if (job->slot_band[slot] == band) {
+        if (*ready != 0) {
+            uint32_t slot = *ready - 1;
             pthread_mutex_unlock(&job->lock);
-            status = deliver(job, band, sink, context, err);
+            status = deliver(job, band, slot, sink, context, err);
             pthread_mutex_lock(&job->lock);
-            job->slot_band[slot] = UINT32_MAX;
+            *ready = 0;
+            job->free_slots[slot / SLOTS_PER_THREAD] |=
+                1u << (slot % SLOTS_PER_THREAD);
             job->delivered = ++band;
             if (status != RAYO_OK)
                 job->stop = 1;
@@ -256,14 +300,14 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
             continue;
         }
         seen = atomic_load_explicit(&job->version, memory_order_relaxed);
-        if (!claim_and_render(job))
+        if (!claim_and_render(job, 0))
             await_change(job, seen);
     }
     job->stop = 1;
     announce(job);
     pthread_mutex_unlock(&job->lock);
     for (i = 0; i < started; i++)
-        pthread_join(helpers[i], NULL);
+        pthread_join(helpers[i].thread, NULL);
     pthread_cond_destroy(&job->changed);
     pthread_mutex_destroy(&job->lock);
     free(helpers);
@@ -295,9 +339,9 @@ static rayo_status run_adaptive(band_job *job, unsigned threads,
             rendering / band * job->band_count >= SERIAL_BELOW_SECONDS)
             return run_parallel(job, threads, band, sink, context, err);
         start = seconds_now();
-        render_band(job, band);
+        render_band(job, band, 0);
         rendering += seconds_now() - start;
-        status = deliver(job, band, sink, context, err);
+        status = deliver(job, band, 0, sink, context, err);
         if (status != RAYO_OK)
             return status;
     }
@@ -312,7 +356,7 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
     rayo_image_info info = rayo_render_image_info(camera, options);
     unsigned threads = options->threads ? options->threads : rayo_cpu_count();
     band_job job;
-    uint32_t i, by_memory, by_sharing;
+    uint32_t by_memory, by_sharing;
     rayo_status status;
 
     if (threads > RAYO_MAX_THREADS)
@@ -331,29 +375,28 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
     if (threads > job.band_count)
         threads = job.band_count;
     job.slot_count = threads == 1 ? 1 : threads * SLOTS_PER_THREAD;
-    if (job.slot_count > job.band_count)
-        job.slot_count = job.band_count;
     job.next_band = 0;
     job.delivered = 0;
     job.stop = 0;
     job.slots = malloc((size_t)job.slot_count * job.rows_per_band *
                        job.row_bytes);
-    job.slot_band = malloc(job.slot_count * sizeof *job.slot_band);
-    if (job.slots == NULL || job.slot_band == NULL) {
+    job.ready = malloc(job.slot_count * sizeof *job.ready);
+    job.free_slots = malloc(threads * sizeof *job.free_slots);
+    if (job.slots == NULL || job.ready == NULL || job.free_slots == NULL) {
         free(job.slots);
-        free(job.slot_band);
+        free(job.ready);
+        free(job.free_slots);
         return rayo_error_set(err, RAYO_ERR_NOMEM,
                               "out of memory for render buffers");
     }
-    for (i = 0; i < job.slot_count; i++)
-        job.slot_band[i] = UINT32_MAX;
     rayo_row_plan_init(&job.plan, camera, scene, options);
     status = threads == 1
                  ? run_serial(&job, 0, sink, sink_context, err)
                  : run_adaptive(&job, threads, sink, sink_context, err);
     rayo_row_plan_free(&job.plan);
     free(job.slots);
-    free(job.slot_band);
+    free(job.ready);
+    free(job.free_slots);
     return status;
 }
 
