@@ -7,10 +7,12 @@
  * time, from a template of several white rows, because one long copy
  * costs less than many row-sized ones (the seed job's 480 rows of 650
  * bytes, copied alone: 6 us on the development machine; in blocks of
- * 12 rows: 4.4 us).  Each run of black bytes (0xFF) is then
- * copied from the black row, newlines included; only the bytes that mix
- * black and white are spelled out, digit by digit.  Runs are found eight
- * bytes at a time.  Rendered rows are long runs of one colour, so a row
+ * 12 rows: 4.4 us).  Each run of black pixels is then copied from the
+ * black row, newlines included.  Rows that come as runs (row_runs.h: the
+ * span renderer's, through render.c) need nothing more.  Rows that come
+ * as bits are scanned for runs of black bytes (0xFF), eight bytes at a
+ * time, and only the bytes that mix black and white are spelled out,
+ * digit by digit.  Rendered rows are long runs of one colour, so a row
  * costs a few copies instead of one store per eight pixels; a row of
  * noise costs what spelling out every byte does.
  */
@@ -168,14 +170,23 @@ static void mark_row(const rayo_pbm_plain *plain, const unsigned char *row,
 
 size_t rayo_pbm_plain_rows(const rayo_pbm_plain *plain,
                            const unsigned char *rows, size_t stride,
-                           size_t count, unsigned char *out)
+                           const rayo_row_runs *runs, size_t count,
+                           unsigned char *out)
 {
     size_t total = count * plain->size, done, r;
     size_t block = plain->white_rows * plain->size;
+    uint32_t i;
     for (done = 0; done < total; done += block)
         memcpy(out + done, plain->white,
                total - done < block ? total - done : block);
-    for (r = 0; r < count; r++)
-        mark_row(plain, rows + r * stride, out + r * plain->size);
+    for (r = 0; r < count; r++) {
+        unsigned char *row_out = out + r * plain->size;
+        if (runs == NULL || runs[r].count == RAYO_ROW_RUNS_BITS) {
+            mark_row(plain, rows + r * stride, row_out);
+            continue;
+        }
+        for (i = 0; i < runs[r].count; i++)
+            copy_black(plain, row_out, runs[r].first[i], runs[r].last[i]);
+    }
     return total;
 }

@@ -10,6 +10,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "../image/row_runs.h"
+
 typedef struct rayo_pbm_plain rayo_pbm_plain;
 
 /* Bytes one formatted row of this width takes, newlines included. */
@@ -22,12 +24,15 @@ rayo_pbm_plain *rayo_pbm_plain_new(uint32_t width);
 void rayo_pbm_plain_free(rayo_pbm_plain *plain);
 
 /*
- * Formats count rows (packed bits, most significant first, stride bytes
- * apart; padding bits ignored) into out, one after the other,
- * count * rayo_pbm_plain_row_size() bytes, which it returns.
+ * Formats count rows into out, one after the other, count *
+ * rayo_pbm_plain_row_size() bytes, which it returns.  Row r is runs[r]
+ * (normal form, image/row_runs.h) when runs is not NULL and runs[r].count
+ * is not RAYO_ROW_RUNS_BITS; otherwise its packed bits at rows + r *
+ * stride (most significant first; padding bits ignored).
  */
 size_t rayo_pbm_plain_rows(const rayo_pbm_plain *plain,
                            const unsigned char *rows, size_t stride,
-                           size_t count, unsigned char *out);
+                           const rayo_row_runs *runs, size_t count,
+                           unsigned char *out);
 
 #endif

@@ -190,5 +190,10 @@ static void png_discard(rayo_writer *writer)
     writer->state = NULL;
 }
 
-const rayo_writer_ops rayo_png_writer_ops = {png_open, png_rows, png_finish,
-                                             png_discard};
+const rayo_writer_ops rayo_png_writer_ops = {
+    .open = png_open,
+    .rows = png_rows,
+    .runs = NULL,
+    .finish = png_finish,
+    .discard = png_discard,
+};

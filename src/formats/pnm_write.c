@@ -104,6 +104,7 @@ static rayo_status pnm_open(rayo_writer *writer, rayo_error *err)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     }
     writer->state = state;
+    writer->takes_runs = state->plain_bits != NULL;
     if (writer->options.format == RAYO_FORMAT_PBM)
         length = snprintf(header, sizeof header, "P%d\n%lu %lu\n",
                           magic_number(writer),
@@ -193,17 +194,19 @@ static size_t format_raw(const rayo_writer *writer, const unsigned char *row,
 }
 
 /* count rows in the file's layout into out, which has room for count
- * times scratch_bytes(); returns the bytes written. */
+ * times scratch_bytes(); returns the bytes written.  runs (plain PBM
+ * only) is NULL or gives the rows as pnm_runs takes them. */
 static size_t format_rows(const rayo_writer *writer,
                           const unsigned char *rows, size_t stride,
-                          uint32_t count, unsigned char *out)
+                          const rayo_row_runs *runs, uint32_t count,
+                          unsigned char *out)
 {
     const pnm_state *state = writer->state;
     size_t used = 0;
     uint32_t r;
     if (state->plain_bits != NULL)
-        return rayo_pbm_plain_rows(state->plain_bits, rows, stride, count,
-                                   out);
+        return rayo_pbm_plain_rows(state->plain_bits, rows, stride, runs,
+                                   count, out);
     for (r = 0; r < count; r++, rows += stride)
         used += writer->options.plain
                     ? format_plain_samples(writer, rows, out + used)
@@ -232,14 +235,15 @@ static int raw_as_is(const rayo_writer *writer, const unsigned char *rows,
     return 1;
 }
 
-static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
-                            size_t stride, uint32_t count, rayo_error *err)
+/* Formats count rows (runs: as format_rows) into the output's buffer, as
+ * many at a time as it has room for. */
+static rayo_status write_formatted(rayo_writer *writer,
+                                   const unsigned char *rows, size_t stride,
+                                   const rayo_row_runs *runs, uint32_t count,
+                                   rayo_error *err)
 {
     pnm_state *state = writer->state;
     uint32_t r;
-    if (raw_as_is(writer, rows, stride, count))
-        return rayo_output_write(writer->out, rows, (size_t)count * stride,
-                                 err);
     for (r = 0; r < count;) {
         unsigned char *room;
         size_t available, fits;
@@ -251,7 +255,8 @@ static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
             /* A row larger than the output's buffer. */
             status = rayo_output_write(
                 writer->out, state->scratch,
-                format_rows(writer, rows + (size_t)r * stride, stride, 1,
+                format_rows(writer, rows + (size_t)r * stride, stride,
+                            runs != NULL ? runs + r : NULL, 1,
                             state->scratch),
                 err);
             if (status != RAYO_OK)
@@ -265,10 +270,29 @@ static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
             fits = count - r;
         rayo_output_advance(writer->out,
                             format_rows(writer, rows + (size_t)r * stride,
-                                        stride, (uint32_t)fits, room));
+                                        stride, runs != NULL ? runs + r : NULL,
+                                        (uint32_t)fits, room));
         r += (uint32_t)fits;
     }
     return RAYO_OK;
+}
+
+static rayo_status pnm_rows(rayo_writer *writer, const unsigned char *rows,
+                            size_t stride, uint32_t count, rayo_error *err)
+{
+    if (raw_as_is(writer, rows, stride, count))
+        return rayo_output_write(writer->out, rows, (size_t)count * stride,
+                                 err);
+    return write_formatted(writer, rows, stride, NULL, count, err);
+}
+
+/* Plain PBM rows as runs (writer_runs.h): set up by pnm_open only for
+ * plain PBM. */
+static rayo_status pnm_runs(rayo_writer *writer, const unsigned char *rows,
+                            size_t stride, const rayo_row_runs *runs,
+                            uint32_t count, rayo_error *err)
+{
+    return write_formatted(writer, rows, stride, runs, count, err);
 }
 
 static void pnm_discard(rayo_writer *writer)
@@ -289,5 +313,10 @@ static rayo_status pnm_finish(rayo_writer *writer, rayo_error *err)
     return RAYO_OK;
 }
 
-const rayo_writer_ops rayo_pnm_writer_ops = {pnm_open, pnm_rows, pnm_finish,
-                                             pnm_discard};
+const rayo_writer_ops rayo_pnm_writer_ops = {
+    .open = pnm_open,
+    .rows = pnm_rows,
+    .runs = pnm_runs,
+    .finish = pnm_finish,
+    .discard = pnm_discard,
+};

@@ -3,6 +3,7 @@
  * extensions, row bookkeeping and dispatch to the format's table.
  */
 #include "writer_impl.h"
+#include "writer_runs.h"
 
 #include <ctype.h>
 #include <stdlib.h>
@@ -98,9 +99,9 @@ rayo_status rayo_writer_open(rayo_writer **result, rayo_output *out,
     return RAYO_OK;
 }
 
-rayo_status rayo_writer_write_rows(rayo_writer *writer,
-                                   const unsigned char *rows, size_t stride,
-                                   uint32_t count, rayo_error *err)
+/* Counts count more rows; RAYO_ERR_INVALID past the image's height. */
+static rayo_status count_rows(rayo_writer *writer, uint32_t count,
+                              rayo_error *err)
 {
     if (count > writer->info.height - writer->rows_written)
         return rayo_error_set(err, RAYO_ERR_INVALID,
@@ -108,6 +109,16 @@ rayo_status rayo_writer_write_rows(rayo_writer *writer,
                               rayo_output_name(writer->out),
                               (unsigned long)writer->info.height);
     writer->rows_written += count;
+    return RAYO_OK;
+}
+
+rayo_status rayo_writer_write_rows(rayo_writer *writer,
+                                   const unsigned char *rows, size_t stride,
+                                   uint32_t count, rayo_error *err)
+{
+    rayo_status status = count_rows(writer, count, err);
+    if (status != RAYO_OK)
+        return status;
     return writer->ops->rows(writer, rows, stride, count, err);
 }
 
@@ -117,6 +128,26 @@ rayo_status rayo_writer_row_sink(void *writer, const unsigned char *rows,
 {
     (void)first_row;
     return rayo_writer_write_rows(writer, rows, stride, count, err);
+}
+
+rayo_writer *rayo_writer_taking_runs(rayo_row_sink sink, void *context)
+{
+    rayo_writer *writer = context;
+    if (sink != rayo_writer_row_sink || writer == NULL ||
+        !writer->takes_runs)
+        return NULL;
+    return writer;
+}
+
+rayo_status rayo_writer_write_runs(rayo_writer *writer,
+                                   const unsigned char *rows, size_t stride,
+                                   const rayo_row_runs *runs, uint32_t count,
+                                   rayo_error *err)
+{
+    rayo_status status = count_rows(writer, count, err);
+    if (status != RAYO_OK)
+        return status;
+    return writer->ops->runs(writer, rows, stride, runs, count, err);
 }
 
 rayo_status rayo_writer_finish(rayo_writer *writer, rayo_error *err)

@@ -10,11 +10,18 @@
 
 #include "rayo/writer.h"
 
+#include "../image/row_runs.h"
+
 typedef struct rayo_writer_ops {
     /* Checks the layout, allocates state, writes the header. */
     rayo_status (*open)(rayo_writer *writer, rayo_error *err);
     rayo_status (*rows)(rayo_writer *writer, const unsigned char *rows,
                         size_t stride, uint32_t count, rayo_error *err);
+    /* Rows as runs (writer_runs.h), for writers whose open set
+     * takes_runs; NULL for formats that never do. */
+    rayo_status (*runs)(rayo_writer *writer, const unsigned char *rows,
+                        size_t stride, const rayo_row_runs *runs,
+                        uint32_t count, rayo_error *err);
     rayo_status (*finish)(rayo_writer *writer, rayo_error *err);
     void (*discard)(rayo_writer *writer);
 } rayo_writer_ops;
@@ -25,7 +32,8 @@ struct rayo_writer {
     rayo_image_info info;
     rayo_write_options options;
     uint32_t rows_written;
-    void *state; /* the format's own */
+    int takes_runs; /* ops->runs applies to this image (set by open) */
+    void *state;    /* the format's own */
 };
 
 extern const rayo_writer_ops rayo_pnm_writer_ops;

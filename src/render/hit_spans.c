@@ -58,6 +58,8 @@
 
 #include "rayo/sphere.h"
 
+#include "../image/row_runs.h"
+
 #define UNIT_ROUNDOFF (DBL_EPSILON / 2)
 /* E and T above, in units of UNIT_ROUNDOFF * (l.l + R^2). */
 #define DELTA_ERROR 512.0
@@ -72,6 +74,13 @@
  * loop, with its bounding volume hierarchy, wins. */
 #define MAX_SPHERES_ANY_WIDTH 16u
 
+/* Where a row's hits go: its runs, while they suffice, else its bits. */
+typedef struct row_target {
+    unsigned char *bits;
+    rayo_row_runs *runs; /* NULL when the row is in its bits */
+    uint32_t width;
+} row_target;
+
 typedef struct row_frame {
     const rayo_camera *camera;
     uint32_t row;
@@ -79,7 +88,7 @@ typedef struct row_frame {
     double half_width;
     double a2, ab, b2, gram; /* a.a, a.b, b.b, a.a b.b - (a.b)^2 */
     rayo_vec3 b;
-    unsigned char *out;
+    row_target *target;
 } row_frame;
 
 typedef struct sphere_row {
@@ -121,7 +130,9 @@ typedef struct sphere_frame {
 
 struct rayo_hit_spans {
     const rayo_camera *camera;
-    double a2;        /* a.a */
+    double a2;         /* a.a */
+    double half_width; /* floor(width / 2), as a double */
+    double half_height;
     size_t count;
     sphere_frame *spheres;
 };
@@ -136,19 +147,26 @@ static void set_bit(unsigned char *out, int64_t i)
     out[i >> 3] = (unsigned char)(out[i >> 3] | (0x80u >> (i & 7)));
 }
 
-/* Sets bits first..last, inclusive. */
-static void fill_span(unsigned char *out, int64_t first, int64_t last)
+/* Moves the row from its runs to its bits, for good. */
+static void to_bits(const row_frame *f)
 {
-    size_t b0 = (size_t)(first >> 3), b1 = (size_t)(last >> 3);
-    unsigned char m0 = (unsigned char)(0xFFu >> (first & 7));
-    unsigned char m1 = (unsigned char)(0xFF00u >> (1 + (last & 7)));
-    if (b0 == b1) {
-        out[b0] = (unsigned char)(out[b0] | (m0 & m1));
+    row_target *t = f->target;
+    if (t->runs == NULL)
         return;
-    }
-    out[b0] = (unsigned char)(out[b0] | m0);
-    memset(out + b0 + 1, 0xFF, b1 - b0 - 1);
-    out[b1] = (unsigned char)(out[b1] | m1);
+    rayo_row_runs_to_bits(t->runs, t->width, t->bits);
+    t->runs->count = RAYO_ROW_RUNS_BITS;
+    t->runs = NULL;
+}
+
+/* Pixels first..last (inclusive) hit. */
+static void paint(const row_frame *f, int64_t first, int64_t last)
+{
+    row_target *t = f->target;
+    if (t->runs != NULL &&
+        rayo_row_runs_add(t->runs, (uint32_t)first, (uint32_t)last))
+        return;
+    to_bits(f);
+    rayo_row_bits_fill(t->bits, (uint32_t)first, (uint32_t)last);
 }
 
 /* The per-pixel loop's own test, for one sphere. */
@@ -156,11 +174,12 @@ static void exact_test(const row_frame *f, const rayo_sphere *sphere,
                        int64_t i)
 {
     rayo_ray ray;
-    if (bit_set(f->out, i))
+    to_bits(f); /* pixels one at a time, after other spheres' hits */
+    if (bit_set(f->target->bits, i))
         return;
     ray = rayo_camera_ray(f->camera, (double)i, (double)f->row);
     if (rayo_sphere_hit(sphere, &ray, 0.0))
-        set_bit(f->out, i);
+        set_bit(f->target->bits, i);
 }
 
 static void exact_range(const row_frame *f, const rayo_sphere *sphere,
@@ -341,7 +360,7 @@ static void resolve_between(const row_frame *f, const sphere_row *s,
         if (verdict == 0)
             exact_test(f, s->sphere, j);
     }
-    fill_span(f->out, i, j);
+    paint(f, i, j);
 }
 
 /*
@@ -382,7 +401,7 @@ static int quick_span(const row_frame *f, const sphere_row *s,
         (left > 0 && classify(f, s, left - 1) >= 0) ||
         (right < f->width - 1 && classify(f, s, right + 1) >= 0))
         return 0;
-    fill_span(f->out, left, right);
+    paint(f, left, right);
     hint->first = left;
     hint->last = right;
     return 1;
@@ -441,7 +460,7 @@ static int track_span(const row_frame *f, const sphere_row *s,
         !track_end(f, s, hint->first, -1, &left) ||
         !track_end(f, s, hint->last, 1, &right) || left > right)
         return 0;
-    fill_span(f->out, left, right);
+    paint(f, left, right);
     hint->first = left;
     hint->last = right;
     return 1;
@@ -518,7 +537,7 @@ static int trace_sphere(const row_frame *f, const sphere_frame *frame,
     sphere_row s;
     switch (frame->kind) {
     case SPHERE_AROUND:
-        fill_span(f->out, 0, f->width - 1);
+        paint(f, 0, f->width - 1);
         return 1;
     case SPHERE_NEAR:
         exact_range(f, frame->row.sphere, 0, f->width - 1);
@@ -554,6 +573,8 @@ rayo_hit_spans *rayo_hit_spans_plan(const rayo_camera *camera,
         return NULL;
     plan->camera = camera;
     plan->a2 = rayo_vec3_dot(camera->right, camera->right);
+    plan->half_width = (double)(camera->width / 2);
+    plan->half_height = (double)(camera->height / 2);
     plan->count = rayo_scene_sphere_count(scene);
     plan->spheres = malloc((plan->count ? plan->count : 1) *
                            sizeof *plan->spheres);
@@ -574,28 +595,37 @@ void rayo_hit_spans_free(rayo_hit_spans *plan)
     free(plan);
 }
 
-/* Row `row` into out; hints[i] is sphere i's span on the row before
- * (updated), or NULL. */
+/* Row `row` into out, or into *runs when that is not NULL and the row's
+ * hits fit there (runs->count is RAYO_ROW_RUNS_BITS when they did not);
+ * hints[i] is sphere i's span on the row before (updated), or NULL. */
 static void render_row(const rayo_hit_spans *plan, uint32_t row,
-                       unsigned char *out, span_hint *hints)
+                       unsigned char *out, rayo_row_runs *runs,
+                       span_hint *hints)
 {
     const rayo_camera *camera = plan->camera;
-    double y = (double)row - (double)(camera->height / 2);
+    double y = (double)row - plan->half_height;
     row_frame f;
+    row_target target;
     span_hint none;
     size_t i;
     f.camera = camera;
     f.row = row;
     f.width = camera->width;
-    f.half_width = (double)(camera->width / 2);
+    f.half_width = plan->half_width;
     f.b = rayo_vec3_add(rayo_vec3_scale(camera->up, -y),
                         rayo_vec3_scale(camera->forward, camera->focal));
     f.a2 = plan->a2;
     f.ab = rayo_vec3_dot(camera->right, f.b);
     f.b2 = rayo_vec3_dot(f.b, f.b);
     f.gram = f.a2 * f.b2 - f.ab * f.ab;
-    f.out = out;
-    memset(out, 0, ((size_t)camera->width + 7) / 8);
+    target.bits = out;
+    target.runs = runs;
+    target.width = camera->width;
+    f.target = &target;
+    if (runs != NULL)
+        runs->count = 0;
+    else
+        memset(out, 0, ((size_t)camera->width + 7) / 8);
     for (i = 0; i < plan->count; i++) {
         none.first = 1;
         none.last = 0;
@@ -609,17 +639,19 @@ static void render_row(const rayo_hit_spans *plan, uint32_t row,
             break;
         }
     }
+    if (target.runs != NULL && target.runs->count > 1)
+        rayo_row_runs_normalize(target.runs);
 }
 
 void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
                            unsigned char *out)
 {
-    render_row(plan, row, out, NULL);
+    render_row(plan, row, out, NULL, NULL);
 }
 
 void rayo_hit_spans_render_rows(const rayo_hit_spans *plan, uint32_t first,
                                 uint32_t count, unsigned char *out,
-                                size_t stride)
+                                size_t stride, rayo_row_runs *runs)
 {
     span_hint hints[TRACK_SPHERES];
     uint32_t r;
@@ -631,5 +663,5 @@ void rayo_hit_spans_render_rows(const rayo_hit_spans *plan, uint32_t first,
     }
     for (r = 0; r < count; r++)
         render_row(plan, first + r, out + (size_t)r * stride,
-                   tracking ? hints : NULL);
+                   runs != NULL ? runs + r : NULL, tracking ? hints : NULL);
 }

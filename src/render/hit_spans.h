@@ -16,6 +16,8 @@
 #include "rayo/camera.h"
 #include "rayo/scene.h"
 
+#include "../image/row_runs.h"
+
 typedef struct rayo_hit_spans rayo_hit_spans;
 
 /*
@@ -35,12 +37,19 @@ rayo_hit_spans *rayo_hit_spans_plan(const rayo_camera *camera,
 void rayo_hit_spans_render(const rayo_hit_spans *plan, uint32_t row,
                            unsigned char *out);
 
-/* Rows first..first+count-1 into out, stride bytes apart, each as
+/*
+ * Rows first..first+count-1 into out, stride bytes apart, each as
  * rayo_hit_spans_render gives it; each row's spans start from those of
- * the row before, which spares most rows the roots of their quadratic. */
+ * the row before, which spares most rows the roots of their quadratic.
+ * With runs not NULL (count of them), row r goes to runs[r] instead, in
+ * normal form, wherever its hits are found as at most RAYO_ROW_RUNS_MAX
+ * runs; where they are not (pixels tested one by one, too many runs),
+ * runs[r].count is RAYO_ROW_RUNS_BITS and the row is in out.  A row in
+ * runs leaves its bits in out unwritten.
+ */
 void rayo_hit_spans_render_rows(const rayo_hit_spans *plan, uint32_t first,
                                 uint32_t count, unsigned char *out,
-                                size_t stride);
+                                size_t stride, rayo_row_runs *runs);
 
 void rayo_hit_spans_free(rayo_hit_spans *plan);
 

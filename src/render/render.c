@@ -38,6 +38,7 @@
 
 #include "rayo/limits.h"
 
+#include "../formats/writer_runs.h"
 #include "row_plan.h"
 
 /* Bands aim at this many bytes, so sinks get large writes. */
@@ -66,6 +67,10 @@ typedef struct band_job {
     uint32_t *ready;       /* [band % slot_count]: 1 + the slot that
                               holds the band once rendered, else 0 */
     unsigned *free_slots;  /* per thread: a bit for each free slot */
+    rayo_writer *runs_writer; /* the sink's writer, when it takes rows as
+                                 runs (writer_runs.h) and the plan makes
+                                 them; else NULL */
+    rayo_row_runs *runs;   /* with runs_writer: rows_per_band a slot */
 
     pthread_mutex_t lock;
     pthread_cond_t changed; /* a band was rendered or delivered, or stop */
@@ -117,12 +122,20 @@ static unsigned char *slot_memory(const band_job *job, uint32_t slot)
     return job->slots + (size_t)slot * job->rows_per_band * job->row_bytes;
 }
 
+/* The runs of a slot's rows, or NULL when the band goes as bits. */
+static rayo_row_runs *slot_runs(const band_job *job, uint32_t slot)
+{
+    return job->runs != NULL ? job->runs + (size_t)slot * job->rows_per_band
+                             : NULL;
+}
+
 static void render_band(const band_job *job, uint32_t band, uint32_t slot)
 {
     uint32_t first = band * job->rows_per_band;
     uint32_t count = band_rows(job->camera->height, first, job->rows_per_band);
     rayo_row_plan_render_rows(&job->plan, first, count,
-                              slot_memory(job, slot), job->row_bytes);
+                              slot_memory(job, slot), job->row_bytes,
+                              slot_runs(job, slot));
 }
 
 static rayo_status deliver(band_job *job, uint32_t band, uint32_t slot,
@@ -131,8 +144,13 @@ static rayo_status deliver(band_job *job, uint32_t band, uint32_t slot,
 {
     uint32_t first = band * job->rows_per_band;
     uint32_t count = band_rows(job->camera->height, first, job->rows_per_band);
-    rayo_status status = sink(context, slot_memory(job, slot), job->row_bytes,
-                              first, count, err);
+    rayo_status status =
+        job->runs != NULL
+            ? rayo_writer_write_runs(job->runs_writer, slot_memory(job, slot),
+                                     job->row_bytes, slot_runs(job, slot),
+                                     count, err)
+            : sink(context, slot_memory(job, slot), job->row_bytes, first,
+                   count, err);
     if (status != RAYO_OK)
         return status;
     if (job->options->progress != NULL &&
@@ -357,6 +375,7 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
     unsigned threads = options->threads ? options->threads : rayo_cpu_count();
     band_job job;
     uint32_t by_memory, by_sharing;
+    size_t row_memory;
     rayo_status status;
 
     if (threads > RAYO_MAX_THREADS)
@@ -365,7 +384,12 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
     job.scene = scene;
     job.options = options;
     job.row_bytes = rayo_image_info_row_bytes(&info);
-    by_memory = (uint32_t)(BAND_TARGET_BYTES / job.row_bytes);
+    rayo_row_plan_init(&job.plan, camera, scene, options);
+    job.runs_writer = rayo_row_plan_has_runs(&job.plan)
+                          ? rayo_writer_taking_runs(sink, sink_context)
+                          : NULL;
+    row_memory = job.row_bytes + (job.runs_writer ? sizeof *job.runs : 0);
+    by_memory = (uint32_t)(BAND_TARGET_BYTES / row_memory);
     by_sharing = camera->height / (threads * BANDS_PER_THREAD);
     job.rows_per_band = by_memory < by_sharing ? by_memory : by_sharing;
     if (job.rows_per_band < 1)
@@ -382,21 +406,24 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
                        job.row_bytes);
     job.ready = malloc(job.slot_count * sizeof *job.ready);
     job.free_slots = malloc(threads * sizeof *job.free_slots);
+    /* Without memory for the runs, rows go as bits. */
+    job.runs = job.runs_writer == NULL
+                   ? NULL
+                   : malloc((size_t)job.slot_count * job.rows_per_band *
+                            sizeof *job.runs);
     if (job.slots == NULL || job.ready == NULL || job.free_slots == NULL) {
-        free(job.slots);
-        free(job.ready);
-        free(job.free_slots);
-        return rayo_error_set(err, RAYO_ERR_NOMEM,
-                              "out of memory for render buffers");
+        status = rayo_error_set(err, RAYO_ERR_NOMEM,
+                                "out of memory for render buffers");
+    } else {
+        status = threads == 1
+                     ? run_serial(&job, 0, sink, sink_context, err)
+                     : run_adaptive(&job, threads, sink, sink_context, err);
     }
-    rayo_row_plan_init(&job.plan, camera, scene, options);
-    status = threads == 1
-                 ? run_serial(&job, 0, sink, sink_context, err)
-                 : run_adaptive(&job, threads, sink, sink_context, err);
     rayo_row_plan_free(&job.plan);
     free(job.slots);
     free(job.ready);
     free(job.free_slots);
+    free(job.runs);
     return status;
 }
 

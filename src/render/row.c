@@ -51,15 +51,24 @@ void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
 
 void rayo_row_plan_render_rows(const rayo_row_plan *plan, uint32_t first,
                                uint32_t count, unsigned char *out,
-                               size_t stride)
+                               size_t stride, rayo_row_runs *runs)
 {
     uint32_t r;
     if (plan->spans != NULL) {
-        rayo_hit_spans_render_rows(plan->spans, first, count, out, stride);
+        rayo_hit_spans_render_rows(plan->spans, first, count, out, stride,
+                                   runs);
         return;
     }
-    for (r = 0; r < count; r++)
+    for (r = 0; r < count; r++) {
         rayo_row_plan_render(plan, first + r, out + (size_t)r * stride);
+        if (runs != NULL)
+            runs[r].count = RAYO_ROW_RUNS_BITS;
+    }
+}
+
+int rayo_row_plan_has_runs(const rayo_row_plan *plan)
+{
+    return plan->spans != NULL;
 }
 
 void rayo_row_plan_free(rayo_row_plan *plan)

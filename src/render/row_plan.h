@@ -34,11 +34,20 @@ void rayo_row_plan_init(rayo_row_plan *plan, const rayo_camera *camera,
 void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
                           unsigned char *out);
 
-/* Rows first..first+count-1 into out, stride bytes apart: a band, which
- * the fast path renders faster than row by row. */
+/*
+ * Rows first..first+count-1 into out, stride bytes apart: a band, which
+ * the fast path renders faster than row by row.  With runs not NULL
+ * (count of them), rows the fast path finds as runs go there instead
+ * (row_runs.h; rayo_hit_spans_render_rows says how), and every other
+ * row is marked RAYO_ROW_RUNS_BITS and goes to out.
+ */
 void rayo_row_plan_render_rows(const rayo_row_plan *plan, uint32_t first,
                                uint32_t count, unsigned char *out,
-                               size_t stride);
+                               size_t stride, rayo_row_runs *runs);
+
+/* 1 when the plan's rows can come as runs (the fast path applies), so
+ * that asking for them is worth its memory. */
+int rayo_row_plan_has_runs(const rayo_row_plan *plan);
 
 void rayo_row_plan_free(rayo_row_plan *plan);
 

@@ -6,7 +6,10 @@
  * rayo_camera_ray for every pixel, then rayo_sphere_hit on each sphere
  * (and, separately, rayo_scene_hit_any).  Each frame is checked row by
  * row and also rendered in runs of rows, as render.c renders its bands,
- * where each span is followed from the row before.  The cases aim at the places
+ * where each span is followed from the row before; half of those runs
+ * ask for rows as runs of black pixels (image/row_runs.h), which must be
+ * in normal form and, packed into bits, give the same pixels.  The cases
+ * aim at the places
  * where spans could go wrong: spheres tangent to some pixel's ray (delta
  * within rounding of zero), the camera inside a sphere or on its surface,
  * spheres behind, beside and across the camera plane, odd widths, every
@@ -141,33 +144,70 @@ static int bit_of(const unsigned char *row, uint32_t i)
 typedef struct tally {
     long rows, wrong_plain, wrong_scene, black, white, padding, refused;
     long wrong_runs, tracked_rows;
+    long rows_as_runs, rows_as_bits, bad_form;
 } tally;
+
+/* 1 when runs are in normal form for a row of width pixels: in order,
+ * apart, not touching, inside the row. */
+static int normal_form(const rayo_row_runs *runs, uint32_t width)
+{
+    uint32_t i;
+    if (runs->count > RAYO_ROW_RUNS_MAX)
+        return 0;
+    for (i = 0; i < runs->count; i++) {
+        if (runs->first[i] > runs->last[i] || runs->last[i] >= width)
+            return 0;
+        if (i > 0 && runs->first[i] <= runs->last[i - 1] + 1)
+            return 0;
+    }
+    return 1;
+}
 
 /*
  * The frame rendered the way render.c does it, in runs of consecutive
  * rows that follow each span from the row before, the runs of random
- * lengths (one row up to the whole frame); NULL when spans decline.
+ * lengths (one row up to the whole frame), half of them asking for rows
+ * as runs, which are checked and packed into the frame's bits; NULL when
+ * spans decline.
  */
 static unsigned char *render_in_runs(const rayo_camera *camera,
-                                     const rayo_scene *scene, size_t bytes)
+                                     const rayo_scene *scene, size_t bytes,
+                                     tally *t)
 {
     rayo_hit_spans *plan = rayo_hit_spans_plan(camera, scene);
     unsigned char *frame;
-    uint32_t j = 0;
+    rayo_row_runs *runs;
+    uint32_t j = 0, r;
     if (plan == NULL)
         return NULL;
     frame = malloc(bytes * camera->height);
-    if (frame == NULL)
+    runs = malloc(64 * sizeof *runs);
+    if (frame == NULL || runs == NULL)
         abort();
     while (j < camera->height) {
         uint32_t left = camera->height - j;
         uint32_t run = below(4) == 0 ? left : 1 + below(64);
+        int as_runs = below(2) == 0;
         if (run > left)
             run = left;
-        rayo_hit_spans_render_rows(plan, j, run, frame + bytes * j, bytes);
+        if (as_runs && run > 64)
+            run = 64;
+        rayo_hit_spans_render_rows(plan, j, run, frame + bytes * j, bytes,
+                                   as_runs ? runs : NULL);
+        for (r = 0; as_runs && r < run; r++) {
+            if (runs[r].count == RAYO_ROW_RUNS_BITS) {
+                t->rows_as_bits++;
+                continue;
+            }
+            t->rows_as_runs++;
+            t->bad_form += !normal_form(&runs[r], camera->width);
+            rayo_row_runs_to_bits(&runs[r], camera->width,
+                                  frame + bytes * (j + r));
+        }
         j += run;
     }
     rayo_hit_spans_free(plan);
+    free(runs);
     return frame;
 }
 
@@ -176,7 +216,7 @@ static void check_frame(const rayo_camera *camera, const rayo_scene *scene,
 {
     size_t bytes = ((size_t)camera->width + 7) / 8;
     unsigned char *row = malloc(bytes);
-    unsigned char *runs = render_in_runs(camera, scene, bytes);
+    unsigned char *runs = render_in_runs(camera, scene, bytes, t);
     rayo_hit_spans *plan = rayo_hit_spans_plan(camera, scene);
     uint32_t i, j;
     size_t k;
@@ -352,6 +392,12 @@ int main(int argc, char **argv)
            "rows rendered in runs, each span followed from the row before, "
            "equal the per-pixel test (%ld rows)",
            t.tracked_rows);
+    is_int(t.bad_form, 0,
+           "rows asked for as runs are in normal form (%ld rows as runs, "
+           "%ld as bits)",
+           t.rows_as_runs, t.rows_as_bits);
+    ok(t.rows_as_runs > 5000 && t.rows_as_bits > 1000,
+       "rows asked for as runs come both ways");
     is_int(t.padding, 0, "padding bits are zero");
     ok(t.black > 100000 && t.white > 100000,
        "the cases hold both hits and misses");
