@@ -228,7 +228,9 @@ static int raw_as_is(const rayo_writer *writer, const unsigned char *rows,
         return 1;
     if (info->sample != RAYO_SAMPLE_BIT)
         return 0;
-    padding = 0xFFu >> (info->width % 8 ? info->width % 8 : 8);
+    if (info->width % 8 == 0)
+        return 1; /* no padding bits: the rows are not even read */
+    padding = 0xFFu >> (info->width % 8);
     for (r = 0; r < count; r++)
         if (rows[(size_t)r * stride + bytes - 1] & padding)
             return 0;

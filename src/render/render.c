@@ -3,9 +3,9 @@
  * delivered to the sink in order.
  *
  * The frame is cut into bands of consecutive rows, each rendered into a
- * slot buffer and handed to the sink in order by the calling thread.  A band's pixels depend only on its rows, never on
- * which thread rendered it, so the output is identical for any thread
- * count.  With one thread nothing is spawned.  With more, bands are first
+ * slot buffer and handed to the sink in order by the calling thread.  A
+ * band's pixels depend only on its rows, never on which thread rendered
+ * it, so the output is identical for any thread count.  With one thread nothing is spawned.  With more, bands are first
  * rendered and delivered on the calling thread, and helpers start only
  * once the frame, at the pace of the bands done so far, would take
  * SERIAL_BELOW_SECONDS or more: the seed job takes a few tens of
@@ -17,12 +17,16 @@
  * frame of a millisecond still gains from a second CPU.  Each thread
  * renders into slots of its own (SLOTS_PER_THREAD, freed as their bands
  * are delivered), so a slot's memory stays in the cache of the CPU that
- * fills it instead of passing between CPUs as a shared ring's slots did
- * (docs/performance.md has the measurements).  A thread with
- * nothing to do spins briefly (a band is usually microseconds from done)
- * before it sleeps on the condition variable, and a thread that changes
- * the state wakes sleepers only when there are some: futex wake-ups cost
- * tens of microseconds on a virtual machine.
+ * fills it instead of passing between CPUs as a shared ring's slots did.
+ * A thread with nothing to do spins briefly (a band is usually
+ * microseconds from done) before it sleeps on the condition variable,
+ * and a thread that changes the state wakes sleepers only when there are
+ * some: futex wake-ups cost tens of microseconds on a virtual machine.
+ *
+ * Rows reach the sink as pixels, except for one shortcut of the
+ * library's own: when the sink is rayo_writer_row_sink and its writer
+ * takes runs (plain PBM, writer_runs.h), bands of the span path travel
+ * as runs of black pixels, which that writer spells without scanning.
  */
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 
@@ -45,7 +49,7 @@
 #define BAND_TARGET_BYTES (256u * 1024u)
 /* and at least this many bands per thread, so threads share the work. */
 #define BANDS_PER_THREAD 8u
-/* Slots per thread in the ring of band buffers. */
+/* Band buffers (slots) each thread owns. */
 #define SLOTS_PER_THREAD 3u
 /* Frames projected to take less than this stay on the calling thread. */
 #define SERIAL_BELOW_SECONDS 0.0002
