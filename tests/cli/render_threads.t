@@ -3,8 +3,8 @@
 # thread count: -j1, -j2 and -j7 give identical P1, P4 and PNG files for
 # odd sizes, several spheres, the span fast path and the per-pixel loop
 # (--samples 2 takes the sampled loop; a camera on a sphere's surface
-# makes the spans test every pixel).  Also: -j/--threads validation and
-# --quiet.
+# makes the spans test every pixel), and rows wider than a pipe's buffer.
+# Also: -j/--threads validation and --quiet.
 . "$(dirname "$0")/lib.sh"
 
 render_all() { # render_all NAME EXT ARGS...: -j1, -j2, -j7 into $TMP/NAME.jN.EXT
@@ -50,6 +50,18 @@ rayo render -W 1001 -H 97 --sphere 0.5,0.75,1.9,0.8 --sphere -1,-0.5,3,1.2 \
     -j 2 | tail -n +3 | tr -d '\n' >"$TMP/b"
 cmp -s "$TMP/a" "$TMP/b"
 ok $? "P1 and P4 carry the same pixels"
+
+# Plain rows wider than the output's buffer (a pipe's 64 KiB) are
+# formatted one at a time, and plain PBM rows of spheres reach the writer
+# as runs of black pixels, not bits: the same bytes as Netpbm's own plain
+# writer gives for the P4, which travels as bits.
+rayo render -W 65536 -H 5 --raw -o "$TMP/wide-p4.pbm"
+rayo render -W 65536 -H 5 -j 2 | cat >"$TMP/wide-p1.pbm"
+pamtopnm -plain "$TMP/wide-p4.pbm" >"$TMP/wide-netpbm.pbm" 2>/dev/null
+cmp -s "$TMP/wide-p1.pbm" "$TMP/wide-netpbm.pbm"
+ok $? "65536-pixel rows through a pipe: P1 as pamtopnm -plain writes it"
+[ "$(grep -c 1 "$TMP/wide-p1.pbm")" -gt 0 ]
+ok $? "65536-pixel rows: the sphere is in them"
 
 expect_usage_error "-j 0" "threads.*'0'" render -j 0
 expect_usage_error "-j 257" "threads.*'257'" render -j 257
