@@ -86,7 +86,7 @@ typedef struct row_frame {
     uint32_t row;
     int64_t width;
     double half_width;
-    double a2, ab, b2, gram; /* a.a, a.b, b.b, a.a b.b - (a.b)^2 */
+    double a2, ab, b2; /* a.a, a.b, b.b */
     rayo_vec3 b;
     row_target *target;
 } row_frame;
@@ -133,6 +133,7 @@ struct rayo_hit_spans {
     double a2;         /* a.a */
     double half_width; /* floor(width / 2), as a double */
     double half_height;
+    rayo_vec3 ahead;   /* forward * focal: b = ahead - y up */
     size_t count;
     sphere_frame *spheres;
 };
@@ -223,7 +224,8 @@ static int row_misses(const row_frame *f, const sphere_row *s)
 {
     double p = s->p, q = s->q;
     double h2_gram = p * p * f->b2 - 2.0 * p * q * f->ab + q * q * f->a2;
-    return h2_gram < s->miss_level * f->gram;
+    double gram = f->a2 * f->b2 - f->ab * f->ab;
+    return h2_gram < s->miss_level * gram;
 }
 
 /*
@@ -575,6 +577,7 @@ rayo_hit_spans *rayo_hit_spans_plan(const rayo_camera *camera,
     plan->a2 = rayo_vec3_dot(camera->right, camera->right);
     plan->half_width = (double)(camera->width / 2);
     plan->half_height = (double)(camera->height / 2);
+    plan->ahead = rayo_vec3_scale(camera->forward, camera->focal);
     plan->count = rayo_scene_sphere_count(scene);
     plan->spheres = malloc((plan->count ? plan->count : 1) *
                            sizeof *plan->spheres);
@@ -612,12 +615,10 @@ static void render_row(const rayo_hit_spans *plan, uint32_t row,
     f.row = row;
     f.width = camera->width;
     f.half_width = plan->half_width;
-    f.b = rayo_vec3_add(rayo_vec3_scale(camera->up, -y),
-                        rayo_vec3_scale(camera->forward, camera->focal));
+    f.b = rayo_vec3_add(rayo_vec3_scale(camera->up, -y), plan->ahead);
     f.a2 = plan->a2;
     f.ab = rayo_vec3_dot(camera->right, f.b);
     f.b2 = rayo_vec3_dot(f.b, f.b);
-    f.gram = f.a2 * f.b2 - f.ab * f.ab;
     target.bits = out;
     target.runs = runs;
     target.width = camera->width;
