@@ -48,6 +48,12 @@
  * (track_span): four estimates, and one more for each pixel an end
  * moves.  Only rows where rounding leaves a doubt take the walks and the
  * exact tests.
+ *
+ * The output.  A row goes into packed bits, or, when render.c asks for
+ * runs (for the plain PBM writer: image/row_runs.h), into the runs of
+ * black pixels the spans are; such a row never touches its bits unless a
+ * pixel must be tested alone or the runs overflow, and then moves to its
+ * bits for good (to_bits).
  */
 #include "hit_spans.h"
 
