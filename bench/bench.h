@@ -57,9 +57,9 @@ double bench_run_child(char *const argv[], const char *command,
                        long *max_rss_kib);
 
 /*
- * The job `rayo render` does, in process (render_job.c): the frame rendered through a
- * writer of format (plain or raw) into out, which is then committed, or
- * aborted on a failure.  0, or -1.
+ * The job `rayo render` does, in process (render_job.c): the frame
+ * rendered through a writer of format (plain or raw) into out, which is
+ * then committed, or aborted on a failure.  0, or -1.
  */
 int bench_render_into(rayo_output *out, const rayo_camera *camera,
                       const rayo_scene *scene,

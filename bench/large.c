@@ -156,15 +156,17 @@ static void throughput(bench_table *table, const large_setup *setup)
     bench_target(table, "16384x12288 P4 speed-up, 1 to all threads",
                  one / many, 1.8, 0);
     if (all >= 2) {
-        /* A helper that starts `late` seconds in can at best halve
-         * what is left: T1 / ((T1 + late) / 2). */
+        /* With n threads, helpers that start `late` seconds in leave the
+         * caller T1 alone until then: at best n T1 / (T1 + (n - 1) late). */
         double late = bench_thread_start_seconds();
         bench_add(table, "thread_start_us",
                   "a new thread starts running after (median)", late * 1e6,
                   "us");
         bench_add(table, "p4_speedup_bound",
-                  "16384x12288 P4, best 1 -> 2 speed-up with that start",
-                  late < 0 ? -1 : 2.0 * one / (one + late), "x");
+                  "16384x12288 P4, best speed-up, 1 to all, with that start",
+                  late < 0 ? -1
+                           : all * one / (one + (all - 1) * late),
+                  "x");
     }
     bench_target(table, "PNG / libpng alone", png / alone, 1.2, 1);
 }

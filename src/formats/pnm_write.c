@@ -10,9 +10,10 @@
  * two bytes big-endian when maxval > 255.  Each row is formatted straight
  * into the output's buffer (rayo_output_reserve), or into a scratch
  * buffer when a row is larger than that; plain PBM rows come from
- * pbm_plain.c, as bits or, from render.c, as runs (writer_runs.h).  Raw rows that need no change (bytes, or bits whose
- * padding is already zero) go to the output straight from the caller's
- * memory, a whole block of rows in one call.
+ * pbm_plain.c, as bits or, from render.c, as runs (writer_runs.h).  Raw
+ * rows that need no change (bytes, or bits whose padding is already
+ * zero) go to the output straight from the caller's memory, a whole
+ * block of rows in one call.
  */
 #include <stdio.h>
 #include <stdlib.h>

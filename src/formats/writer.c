@@ -130,11 +130,13 @@ rayo_status rayo_writer_row_sink(void *writer, const unsigned char *rows,
     return rayo_writer_write_rows(writer, rows, stride, count, err);
 }
 
-rayo_writer *rayo_writer_taking_runs(rayo_row_sink sink, void *context)
+rayo_writer *rayo_writer_taking_runs(rayo_row_sink sink, void *context,
+                                     const rayo_image_info *rows)
 {
     rayo_writer *writer = context;
     if (sink != rayo_writer_row_sink || writer == NULL ||
-        !writer->takes_runs)
+        !writer->takes_runs || rows->sample != RAYO_SAMPLE_BIT ||
+        rows->width != writer->info.width)
         return NULL;
     return writer;
 }
@@ -145,8 +147,11 @@ rayo_status rayo_writer_write_runs(rayo_writer *writer,
                                    rayo_error *err)
 {
     rayo_status status = count_rows(writer, count, err);
+    uint32_t r;
     if (status != RAYO_OK)
         return status;
+    for (r = 0; r < count; r++)
+        writer->rows_as_runs += runs[r].count != RAYO_ROW_RUNS_BITS;
     return writer->ops->runs(writer, rows, stride, runs, count, err);
 }
 

@@ -33,6 +33,8 @@ struct rayo_writer {
     rayo_write_options options;
     uint32_t rows_written;
     int takes_runs; /* ops->runs applies to this image (set by open) */
+    uint32_t rows_as_runs; /* rows that came as runs, not bits (a count
+                              for tests/unit/t_render_runs.c) */
     void *state;    /* the format's own */
 };
 

@@ -7,7 +7,7 @@
  * copies each run from a row of black digits), render.c asks the span
  * renderer for runs and hands them over here, so the rows are neither
  * packed into bits nor scanned for their runs again.  The bytes written
- * are the same either way (tests/unit/t_render.c compares the two).
+ * are the same either way (tests/unit/t_render_runs.c compares the two).
  * Private to the library.
  */
 #ifndef RAYO_WRITER_RUNS_H
@@ -21,9 +21,15 @@
 
 #include "../image/row_runs.h"
 
-/* The writer behind (sink, context) when sink is rayo_writer_row_sink and
- * the writer takes runs; else NULL. */
-rayo_writer *rayo_writer_taking_runs(rayo_row_sink sink, void *context);
+/*
+ * The writer behind (sink, context) when sink is rayo_writer_row_sink,
+ * the writer takes runs, and the rows to come (layout `rows`) are
+ * bilevel and exactly as wide as the writer's image, so that every run
+ * fits its rows; else NULL.  (A caller may hand a writer wider rows than
+ * its image; bits are then cut to the image, and runs would not be.)
+ */
+rayo_writer *rayo_writer_taking_runs(rayo_row_sink sink, void *context,
+                                     const rayo_image_info *rows);
 
 /* As rayo_writer_write_rows, each row r given by runs[r], or by its bits
  * where runs[r].count is RAYO_ROW_RUNS_BITS. */

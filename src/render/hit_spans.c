@@ -42,8 +42,8 @@
  * is worked out once a frame (rayo_hit_spans_plan).  On most rows the
  * roots of the quadratic, rounded inwards, are the first and last hit,
  * and four classified pixels prove it (quick_span): a row then costs a
- * square root, two divisions and four estimates.  Rendered in runs
- * (rayo_hit_spans_render_rows, a band at a time), a row starts from the
+ * square root, two divisions and four estimates.  Rendered in bands
+ * (rayo_hit_spans_render_rows, as render.c does), a row starts from the
  * span of the row before and moves each end while the same rules allow
  * (track_span): four estimates, and one more for each pixel an end
  * moves.  Only rows where rounding leaves a doubt take the walks and the
@@ -107,7 +107,7 @@ typedef struct sphere_row {
     double miss_level;     /* k + surely_missed */
 } sphere_row;
 
-/* A sphere's span on the row before, where rows are rendered in runs:
+/* A sphere's span on the row before, where rows are rendered in bands:
  * the first and last pixel hit, or first > last when that row had none
  * that tracking can start from. */
 typedef struct span_hint {

@@ -5,20 +5,20 @@
  * The frame is cut into bands of consecutive rows, each rendered into a
  * slot buffer and handed to the sink in order by the calling thread.  A
  * band's pixels depend only on its rows, never on which thread rendered
- * it, so the output is identical for any thread count.  With one thread nothing is spawned.  With more, bands are first
- * rendered and delivered on the calling thread, and helpers start only
- * once the frame, at the pace of the bands done so far, would take
- * SERIAL_BELOW_SECONDS or more: the seed job takes a few tens of
- * microseconds, less than waking a second CPU costs.
+ * it, so the output is identical for any thread count.  With one thread
+ * nothing is spawned.  With more, bands are first rendered and delivered
+ * on the calling thread, and helpers start only once the frame, at the
+ * pace of the bands done so far, would take SERIAL_BELOW_SECONDS or
+ * more: the seed job takes a few tens of microseconds, less than waking
+ * a second CPU costs.
  *
  * In parallel, the calling thread is one of the renderers: whenever the
  * next band in order is not ready, it claims and renders the next free
  * band itself, so it never idles while a helper is still starting, and a
  * frame of a millisecond still gains from a second CPU.  Each thread
- * renders into slots of its own (SLOTS_PER_THREAD, freed as their bands
- * are delivered), so a slot's memory stays in the cache of the CPU that
- * fills it instead of passing between CPUs as a shared ring's slots did.
- * A thread with nothing to do spins briefly (a band is usually
+ * renders into band buffers (slots) of its own, freed as their bands are
+ * delivered, so no slot is ever written by two CPUs in turn.  A thread
+ * with nothing to do spins briefly (a band is usually
  * microseconds from done) before it sleeps on the condition variable,
  * and a thread that changes the state wakes sleepers only when there are
  * some: futex wake-ups cost tens of microseconds on a virtual machine.
@@ -49,8 +49,10 @@
 #define BAND_TARGET_BYTES (256u * 1024u)
 /* and at least this many bands per thread, so threads share the work. */
 #define BANDS_PER_THREAD 8u
-/* Band buffers (slots) each thread owns. */
+/* Band buffers (slots) each thread owns, at most: a bit each in a mask. */
 #define SLOTS_PER_THREAD 3u
+_Static_assert(SLOTS_PER_THREAD < sizeof(unsigned) * 8,
+               "a thread's free slots are bits of an unsigned");
 /* Frames projected to take less than this stay on the calling thread. */
 #define SERIAL_BELOW_SECONDS 0.0002
 /* How long a thread with nothing to do spins before it sleeps. */
@@ -63,11 +65,13 @@ typedef struct band_job {
     rayo_row_plan plan;
     size_t row_bytes;
     uint32_t rows_per_band, band_count;
-    uint32_t slot_count;   /* SLOTS_PER_THREAD per thread: the bands in
+    uint32_t slots_per_thread; /* SLOTS_PER_THREAD, or fewer for a
+                                  frame of few bands */
+    uint32_t slot_count;   /* slots_per_thread per thread: the bands in
                               flight, claimed but not delivered, at most */
     unsigned char *slots;  /* slot_count * rows_per_band * row_bytes;
-                              thread t owns SLOTS_PER_THREAD from
-                              t * SLOTS_PER_THREAD */
+                              thread t owns slots_per_thread from
+                              t * slots_per_thread */
     uint32_t *ready;       /* [band % slot_count]: 1 + the slot that
                               holds the band once rendered, else 0 */
     unsigned *free_slots;  /* per thread: a bit for each free slot */
@@ -216,15 +220,14 @@ static void await_change(band_job *job, unsigned seen)
     }
 }
 
-/* The lowest set bit of a nonzero mask. */
+/* The lowest set bit of a mask (of SLOTS_PER_THREAD bits; 0 for none,
+ * which the callers rule out). */
 static unsigned lowest_bit(unsigned mask)
 {
     unsigned bit = 0;
-    while (!(mask & 1u)) {
-        mask >>= 1;
+    while (bit < SLOTS_PER_THREAD && !(mask & (1u << bit)))
         bit++;
-    }
-    return bit;
+    return bit < SLOTS_PER_THREAD ? bit : 0;
 }
 
 /* Claims the next band, when thread `thread` has a free slot, and renders
@@ -239,7 +242,7 @@ static int claim_and_render(band_job *job, unsigned thread)
     if (job->stop || band >= job->band_count || free_slots == 0 ||
         band >= job->delivered + job->slot_count)
         return 0;
-    slot = thread * SLOTS_PER_THREAD + lowest_bit(free_slots);
+    slot = thread * job->slots_per_thread + lowest_bit(free_slots);
     job->free_slots[thread] = free_slots & (free_slots - 1);
     job->next_band++;
     pthread_mutex_unlock(&job->lock);
@@ -283,7 +286,7 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     if (helpers == NULL)
         threads = 1; /* this thread renders every band itself */
     for (i = 0; i < threads; i++)
-        job->free_slots[i] = (1u << SLOTS_PER_THREAD) - 1;
+        job->free_slots[i] = (1u << job->slots_per_thread) - 1;
     for (i = 0; i < job->slot_count; i++)
         job->ready[i] = 0;
     job->next_band = first;
@@ -313,8 +316,8 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
             status = deliver(job, band, slot, sink, context, err);
             pthread_mutex_lock(&job->lock);
             *ready = 0;
-            job->free_slots[slot / SLOTS_PER_THREAD] |=
-                1u << (slot % SLOTS_PER_THREAD);
+            job->free_slots[slot / job->slots_per_thread] |=
+                1u << (slot % job->slots_per_thread);
             job->delivered = ++band;
             if (status != RAYO_OK)
                 job->stop = 1;
@@ -390,7 +393,7 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
     job.row_bytes = rayo_image_info_row_bytes(&info);
     rayo_row_plan_init(&job.plan, camera, scene, options);
     job.runs_writer = rayo_row_plan_has_runs(&job.plan)
-                          ? rayo_writer_taking_runs(sink, sink_context)
+                          ? rayo_writer_taking_runs(sink, sink_context, &info)
                           : NULL;
     row_memory = job.row_bytes + (job.runs_writer ? sizeof *job.runs : 0);
     by_memory = (uint32_t)(BAND_TARGET_BYTES / row_memory);
@@ -402,7 +405,12 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
                      job.rows_per_band;
     if (threads > job.band_count)
         threads = job.band_count;
-    job.slot_count = threads == 1 ? 1 : threads * SLOTS_PER_THREAD;
+    /* No more slots than the frame has bands. */
+    job.slots_per_thread = SLOTS_PER_THREAD;
+    while (job.slots_per_thread > 1 &&
+           threads * job.slots_per_thread > job.band_count)
+        job.slots_per_thread--;
+    job.slot_count = threads == 1 ? 1 : threads * job.slots_per_thread;
     job.next_band = 0;
     job.delivered = 0;
     job.stop = 0;

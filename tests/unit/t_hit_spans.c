@@ -5,8 +5,8 @@
  * The reference is the loop row.c ran before the fast path existed:
  * rayo_camera_ray for every pixel, then rayo_sphere_hit on each sphere
  * (and, separately, rayo_scene_hit_any).  Each frame is checked row by
- * row and also rendered in runs of rows, as render.c renders its bands,
- * where each span is followed from the row before; half of those runs
+ * row and also rendered in bands of consecutive rows, as render.c does,
+ * where each span is followed from the row before; half of those bands
  * ask for rows as runs of black pixels (image/row_runs.h), which must be
  * in normal form and, packed into bits, give the same pixels.  The cases
  * aim at the places
@@ -143,7 +143,7 @@ static int bit_of(const unsigned char *row, uint32_t i)
 
 typedef struct tally {
     long rows, wrong_plain, wrong_scene, black, white, padding, refused;
-    long wrong_runs, tracked_rows;
+    long wrong_bands, tracked_rows;
     long rows_as_runs, rows_as_bits, bad_form;
 } tally;
 
@@ -164,13 +164,13 @@ static int normal_form(const rayo_row_runs *runs, uint32_t width)
 }
 
 /*
- * The frame rendered the way render.c does it, in runs of consecutive
- * rows that follow each span from the row before, the runs of random
- * lengths (one row up to the whole frame), half of them asking for rows
+ * The frame rendered the way render.c does it, in bands of consecutive
+ * rows that follow each span from the row before, the bands of random
+ * heights (one row up to the whole frame), half of them asking for rows
  * as runs, which are checked and packed into the frame's bits; NULL when
  * spans decline.
  */
-static unsigned char *render_in_runs(const rayo_camera *camera,
+static unsigned char *render_in_bands(const rayo_camera *camera,
                                      const rayo_scene *scene, size_t bytes,
                                      tally *t)
 {
@@ -186,15 +186,15 @@ static unsigned char *render_in_runs(const rayo_camera *camera,
         abort();
     while (j < camera->height) {
         uint32_t left = camera->height - j;
-        uint32_t run = below(4) == 0 ? left : 1 + below(64);
+        uint32_t band = below(4) == 0 ? left : 1 + below(64);
         int as_runs = below(2) == 0;
-        if (run > left)
-            run = left;
-        if (as_runs && run > 64)
-            run = 64;
-        rayo_hit_spans_render_rows(plan, j, run, frame + bytes * j, bytes,
+        if (band > left)
+            band = left;
+        if (as_runs && band > 64)
+            band = 64;
+        rayo_hit_spans_render_rows(plan, j, band, frame + bytes * j, bytes,
                                    as_runs ? runs : NULL);
-        for (r = 0; as_runs && r < run; r++) {
+        for (r = 0; as_runs && r < band; r++) {
             if (runs[r].count == RAYO_ROW_RUNS_BITS) {
                 t->rows_as_bits++;
                 continue;
@@ -204,7 +204,7 @@ static unsigned char *render_in_runs(const rayo_camera *camera,
             rayo_row_runs_to_bits(&runs[r], camera->width,
                                   frame + bytes * (j + r));
         }
-        j += run;
+        j += band;
     }
     rayo_hit_spans_free(plan);
     free(runs);
@@ -216,7 +216,7 @@ static void check_frame(const rayo_camera *camera, const rayo_scene *scene,
 {
     size_t bytes = ((size_t)camera->width + 7) / 8;
     unsigned char *row = malloc(bytes);
-    unsigned char *runs = render_in_runs(camera, scene, bytes, t);
+    unsigned char *banded = render_in_bands(camera, scene, bytes, t);
     rayo_hit_spans *plan = rayo_hit_spans_plan(camera, scene);
     uint32_t i, j;
     size_t k;
@@ -241,18 +241,18 @@ static void check_frame(const rayo_camera *camera, const rayo_scene *scene,
                                          0.0);
             t->wrong_plain += got != plain;
             t->wrong_scene += got != rayo_scene_hit_any(scene, &ray, 0.0);
-            if (runs != NULL)
-                t->wrong_runs += bit_of(runs + bytes * j, i) != plain;
+            if (banded != NULL)
+                t->wrong_bands += bit_of(banded + bytes * j, i) != plain;
             if (plain)
                 t->black++;
             else
                 t->white++;
         }
     }
-    if (runs != NULL)
+    if (banded != NULL)
         t->tracked_rows += camera->height;
     rayo_hit_spans_free(plan);
-    free(runs);
+    free(banded);
     free(row);
 }
 
@@ -388,8 +388,8 @@ int main(int argc, char **argv)
            "spans equal rayo_sphere_hit per pixel (%ld black, %ld white)",
            t.black, t.white);
     is_int(t.wrong_scene, 0, "spans equal rayo_scene_hit_any per pixel");
-    is_int(t.wrong_runs, 0,
-           "rows rendered in runs, each span followed from the row before, "
+    is_int(t.wrong_bands, 0,
+           "rows rendered in bands, each span followed from the row before, "
            "equal the per-pixel test (%ld rows)",
            t.tracked_rows);
     is_int(t.bad_form, 0,
