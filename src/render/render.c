@@ -18,10 +18,10 @@
  * frame of a millisecond still gains from a second CPU.  Each thread
  * renders into band buffers (slots) of its own, freed as their bands are
  * delivered, so no slot is ever written by two CPUs in turn.  A thread
- * with nothing to do spins briefly (a band is usually
- * microseconds from done) before it sleeps on the condition variable,
- * and a thread that changes the state wakes sleepers only when there are
- * some: futex wake-ups cost tens of microseconds on a virtual machine.
+ * with nothing to do spins briefly (a band is usually microseconds from
+ * done) before it sleeps on the condition variable, and a thread that
+ * changes the state wakes sleepers only when there are some: futex
+ * wake-ups cost tens of microseconds on a virtual machine.
  *
  * Rows reach the sink as pixels, except for one shortcut of the
  * library's own: when the sink is rayo_writer_row_sink and its writer
