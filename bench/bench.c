@@ -97,6 +97,15 @@ int bench_repeats(const bench_table *table)
     return table->repeats;
 }
 
+double bench_best(double a, double b)
+{
+    if (a < 0)
+        return b;
+    if (b < 0)
+        return a;
+    return a < b ? a : b;
+}
+
 static int target_met(const target *t)
 {
     return t->value >= 0 && (t->at_most ? t->value <= t->limit

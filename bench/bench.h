@@ -22,6 +22,10 @@ typedef struct bench_table bench_table;
 /* Seconds on a monotonic clock. */
 double bench_now(void);
 
+/* The smaller of two times, where a negative one stands for none (not
+ * measured yet, or failed): the best-of-N every figure takes. */
+double bench_best(double a, double b);
+
 /* Adds a measured figure (label as printed; key as in the JSON). */
 void bench_add(bench_table *table, const char *key, const char *label,
                double value, const char *unit);

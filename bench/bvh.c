@@ -128,8 +128,7 @@ static double frame_ns_per_pixel(const rayo_scene *scene, bvh_view view,
             return -1;
         seconds = cpu_now() - start;
         rayo_image_free(&image);
-        if (best < 0 || seconds < best)
-            best = seconds;
+        best = bench_best(best, seconds);
     }
     return best * 1e9 / ((double)BVH_WIDTH * BVH_HEIGHT);
 }
@@ -157,8 +156,7 @@ static double grid_ns_per_ray(const rayo_scene *scene, int repeats,
             }
         seconds = cpu_now() - start;
         *stats = pass;
-        if (best < 0 || seconds < best)
-            best = seconds;
+        best = bench_best(best, seconds);
     }
     return best * 1e9 / (double)stats->rays;
 }

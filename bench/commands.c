@@ -40,8 +40,7 @@ static void run_row(bench_table *table, const char *key, const char *label,
             best = -1;
             break;
         }
-        if (best < 0 || seconds < best)
-            best = seconds;
+        best = bench_best(best, seconds);
     }
     if (best >= 0 && bench_run_child(NULL, command, &rss_max) < 0)
         rss_max = -1;

@@ -107,15 +107,6 @@ static double libpng_alone(const rayo_image *image)
     return bench_now() - start;
 }
 
-static double best_of(double a, double b)
-{
-    if (a < 0)
-        return b;
-    if (b < 0)
-        return a;
-    return a < b ? a : b;
-}
-
 static void throughput(bench_table *table, const large_setup *setup)
 {
     unsigned all = rayo_cpu_count();
@@ -133,10 +124,10 @@ static void throughput(bench_table *table, const large_setup *setup)
         return;
     }
     for (r = 0; r < bench_repeats(table); r++) {
-        one = best_of(one, render_to_null(setup, RAYO_FORMAT_PBM, 1));
-        many = best_of(many, render_to_null(setup, RAYO_FORMAT_PBM, all));
-        png = best_of(png, render_to_null(setup, RAYO_FORMAT_PNG, all));
-        alone = best_of(alone, libpng_alone(&image));
+        one = bench_best(one, render_to_null(setup, RAYO_FORMAT_PBM, 1));
+        many = bench_best(many, render_to_null(setup, RAYO_FORMAT_PBM, all));
+        png = bench_best(png, render_to_null(setup, RAYO_FORMAT_PNG, all));
+        alone = bench_best(alone, libpng_alone(&image));
     }
     rayo_image_free(&image);
     bench_add(table, "p4_1thread_gpps", "16384x12288 P4, 1 thread",
@@ -233,13 +224,13 @@ static void loop_scaling(bench_table *table)
         double cpu, wall = timed_render(&setup, 1, &cpu);
         if (wall > 0 && (one < 0 || wall < one))
             one = wall;
-        cpu_one = best_of(cpu_one, cpu);
+        cpu_one = bench_best(cpu_one, cpu);
         wall = timed_render(&setup, all, &cpu);
         if (wall > 0 && (many < 0 || wall < many)) {
             many = wall;
             cores = cpu / wall;
         }
-        cpu_many = best_of(cpu_many, cpu);
+        cpu_many = bench_best(cpu_many, cpu);
     }
     rayo_scene_free(setup.scene);
     bench_add(table, "loop_cpu_ratio",

@@ -130,15 +130,6 @@ static double seed_run(const seed_setup *setup, const memory_sink *bytes,
     return failed ? -1 : seconds;
 }
 
-static double min_positive(double a, double b)
-{
-    if (a < 0)
-        return b;
-    if (b < 0)
-        return a;
-    return a < b ? a : b;
-}
-
 /* Best of runs of each kind, interleaved so a busy moment hurts all
  * alike; the baseline, a hundred times slower, runs a twentieth as
  * often. */
@@ -151,7 +142,7 @@ static void seed_best(const seed_setup *setup, const memory_sink *bytes,
     for (r = 0; r < repeats; r++)
         for (k = 0; k < 3; k++)
             if (k != SEED_BASELINE || r % 20 == 0)
-                best[k] = min_positive(best[k],
+                best[k] = bench_best(best[k],
                                        seed_run(setup, bytes,
                                                 (seed_kind)k, path));
 }

@@ -237,24 +237,6 @@ static rayo_status make_buffer(rayo_output *out, rayo_error *err)
     return RAYO_OK;
 }
 
-rayo_status rayo_output_write(rayo_output *out, const void *data,
-                              size_t size, rayo_error *err)
-{
-    rayo_status status;
-    if (size >= OUTPUT_DIRECT_WRITE) {
-        status = flush(out, err);
-        return status == RAYO_OK ? write_all(out, data, size, err) : status;
-    }
-    if (out->buffer == NULL && (status = make_buffer(out, err)) != RAYO_OK)
-        return status;
-    if (size > out->capacity - out->used &&
-        (status = flush(out, err)) != RAYO_OK)
-        return status;
-    memcpy(out->buffer + out->used, data, size);
-    out->used += size;
-    return RAYO_OK;
-}
-
 rayo_status rayo_output_reserve(rayo_output *out, size_t size,
                                 unsigned char **room, size_t *available,
                                 rayo_error *err)
@@ -271,6 +253,25 @@ rayo_status rayo_output_reserve(rayo_output *out, size_t size,
         return status;
     *room = out->buffer + out->used;
     *available = out->capacity - out->used;
+    return RAYO_OK;
+}
+
+rayo_status rayo_output_write(rayo_output *out, const void *data,
+                              size_t size, rayo_error *err)
+{
+    unsigned char *room;
+    size_t available;
+    rayo_status status;
+    if (size >= OUTPUT_DIRECT_WRITE) {
+        status = flush(out, err);
+        return status == RAYO_OK ? write_all(out, data, size, err) : status;
+    }
+    /* Smaller than every buffer (the assertion above): room is found. */
+    status = rayo_output_reserve(out, size, &room, &available, err);
+    if (status != RAYO_OK)
+        return status;
+    memcpy(room, data, size);
+    out->used += size;
     return RAYO_OK;
 }
 

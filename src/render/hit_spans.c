@@ -84,7 +84,6 @@
 typedef struct row_target {
     unsigned char *bits;
     rayo_row_runs *runs; /* NULL when the row is in its bits */
-    uint32_t width;
 } row_target;
 
 typedef struct row_frame {
@@ -160,7 +159,7 @@ static void to_bits(const row_frame *f)
     row_target *t = f->target;
     if (t->runs == NULL)
         return;
-    rayo_row_runs_to_bits(t->runs, t->width, t->bits);
+    rayo_row_runs_to_bits(t->runs, (uint32_t)f->width, t->bits);
     t->runs->count = RAYO_ROW_RUNS_BITS;
     t->runs = NULL;
 }
@@ -627,7 +626,6 @@ static void render_row(const rayo_hit_spans *plan, uint32_t row,
     f.b2 = rayo_vec3_dot(f.b, f.b);
     target.bits = out;
     target.runs = runs;
-    target.width = camera->width;
     f.target = &target;
     if (runs != NULL)
         runs->count = 0;
