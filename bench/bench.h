@@ -80,6 +80,10 @@ void bench_commands(bench_table *table, const char *rows_file);
  * (thread_start.c), seconds; -1 when no thread could be created. */
 double bench_thread_start_seconds(void);
 
+/* bytes set to zero in bands by `threads` threads started for it
+ * (band_fill.c), seconds; -1 when memory ran out. */
+double bench_band_fill_seconds(size_t bytes, unsigned threads);
+
 /* The assignment's program, the baseline of seed.c (baseline.c). */
 void bench_baseline_seed(int fd);
 

@@ -6,9 +6,11 @@
  * Output goes to /dev/null (through rayo_output, as `-o /dev/null`
  * would), so the figures measure rendering, formatting and compression,
  * not the disk.  With the span fast path the hit-mode P4 frame takes
- * about half a millisecond, mostly memset, so its thread scaling is
+ * about half a millisecond, mostly memset.  Its thread scaling is
  * bounded by how late a helper starts (thread_start.c; the table gives
- * the bound next to the speed-up); thread scaling is also measured on
+ * the bound next to the speed-up) and by how well the CPUs store bytes
+ * at the same time (band_fill.c: the frame's bytes zeroed in bands, no
+ * rendering, 1 thread against all).  Thread scaling is also measured on
  * the per-pixel loop, arithmetic rather than memory, by adding to the
  * scene a plane behind the camera (it changes no pixel, but spans only
  * take sphere-only scenes).  "libpng alone" is the rows already rendered
@@ -112,6 +114,8 @@ static void throughput(bench_table *table, const large_setup *setup)
     unsigned all = rayo_cpu_count();
     double pixels = (double)LARGE_WIDTH * LARGE_HEIGHT;
     double one = -1, many = -1, png = -1, alone = -1;
+    double fill_one = -1, fill_many = -1;
+    size_t frame_bytes = (size_t)LARGE_WIDTH / 8 * LARGE_HEIGHT;
     rayo_render_options options;
     rayo_image image;
     rayo_error err;
@@ -128,6 +132,10 @@ static void throughput(bench_table *table, const large_setup *setup)
         many = bench_best(many, render_to_null(setup, RAYO_FORMAT_PBM, all));
         png = bench_best(png, render_to_null(setup, RAYO_FORMAT_PNG, all));
         alone = bench_best(alone, libpng_alone(&image));
+        fill_one =
+            bench_best(fill_one, bench_band_fill_seconds(frame_bytes, 1));
+        fill_many =
+            bench_best(fill_many, bench_band_fill_seconds(frame_bytes, all));
     }
     rayo_image_free(&image);
     bench_add(table, "p4_1thread_gpps", "16384x12288 P4, 1 thread",
@@ -158,6 +166,16 @@ static void throughput(bench_table *table, const large_setup *setup)
                   late < 0 ? -1
                            : all * one / (one + (all - 1) * late),
                   "x");
+        /* The machine's own scaling on the frame's bytes (band_fill.c). */
+        bench_add(table, "fill_1thread_ms",
+                  "the frame's bytes zeroed in bands, 1 thread",
+                  fill_one * 1e3, "ms");
+        bench_add(table, "fill_all_ms",
+                  "the frame's bytes zeroed in bands, all threads",
+                  fill_many * 1e3, "ms");
+        bench_add(table, "fill_speedup",
+                  "zeroing the frame's bytes, speed-up, 1 to all",
+                  fill_one / fill_many, "x");
     }
     bench_target(table, "PNG / libpng alone", png / alone, 1.2, 1);
 }

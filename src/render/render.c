@@ -28,7 +28,8 @@
  * takes runs (plain PBM, writer_runs.h), bands of the span path travel
  * as runs of black pixels, which that writer spells without scanning.
  */
-#define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
+#define _GNU_SOURCE /* sched_getaffinity, sched_getcpu, CPU_COUNT, thread
+                       affinity */
 
 #include "rayo/render.h"
 
@@ -79,6 +80,8 @@ typedef struct band_job {
                                  runs (writer_runs.h) and the plan makes
                                  them; else NULL */
     rayo_row_runs *runs;   /* with runs_writer: rows_per_band a slot */
+
+    const struct helper_cpus *cpus; /* where helpers start (run_parallel) */
 
     pthread_mutex_t lock;
     pthread_cond_t changed; /* a band was rendered or delivered, or stop */
@@ -259,10 +262,72 @@ typedef struct helper {
     unsigned index; /* 1, 2, ...: the calling thread is 0 */
 } helper;
 
+/*
+ * Where helpers start.  Left to itself, Linux often puts a new thread on
+ * the CPU of the thread that creates it, even with another CPU idle, and
+ * there it waits until the creator (rendering, never sleeping) is
+ * preempted or done: on the development machine half the helpers of a
+ * half-millisecond frame rendered nothing.  So a helper is created
+ * allowed only the CPUs other than the caller's, and, once running
+ * there, is given back all the CPUs the process may use.
+ */
+typedef struct helper_cpus {
+#ifdef CPU_COUNT
+    cpu_set_t allowed; /* the process's CPUs, for helpers once started */
+    cpu_set_t start;   /* those less the calling thread's */
+#endif
+    int steer;         /* 1 when start is set and not empty */
+} helper_cpus;
+
+static void helper_cpus_init(helper_cpus *cpus)
+{
+    cpus->steer = 0;
+#ifdef CPU_COUNT
+    {
+        int here = sched_getcpu();
+        if (here < 0 || here >= CPU_SETSIZE ||
+            sched_getaffinity(0, sizeof cpus->allowed, &cpus->allowed) != 0)
+            return;
+        cpus->start = cpus->allowed;
+        CPU_CLR(here, &cpus->start);
+        cpus->steer = CPU_COUNT(&cpus->start) > 0;
+    }
+#endif
+}
+
+/* Creates a helper thread, started on cpus->start when steering (and
+ * anywhere when that fails); 0 on success. */
+static int helper_create(helper *h, const helper_cpus *cpus,
+                         void *(*main)(void *))
+{
+#ifdef CPU_COUNT
+    if (cpus->steer) {
+        pthread_attr_t attr;
+        int created = 0;
+        if (pthread_attr_init(&attr) == 0) {
+            created = pthread_attr_setaffinity_np(&attr, sizeof cpus->start,
+                                                  &cpus->start) == 0 &&
+                      pthread_create(&h->thread, &attr, main, h) == 0;
+            pthread_attr_destroy(&attr);
+        }
+        if (created)
+            return 0;
+    }
+#else
+    (void)cpus;
+#endif
+    return pthread_create(&h->thread, NULL, main, h) != 0 ? -1 : 0;
+}
+
 static void *helper_main(void *argument)
 {
     const helper *self = argument;
     band_job *job = self->job;
+#ifdef CPU_COUNT
+    if (job->cpus->steer)
+        pthread_setaffinity_np(pthread_self(), sizeof job->cpus->allowed,
+                               &job->cpus->allowed);
+#endif
     pthread_mutex_lock(&job->lock);
     while (!job->stop && job->next_band < job->band_count)
         if (!claim_and_render(job, self->index))
@@ -280,6 +345,7 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
                                 void *context, rayo_error *err)
 {
     helper *helpers = malloc((threads - 1) * sizeof *helpers);
+    helper_cpus cpus;
     rayo_status status = RAYO_OK;
     unsigned started = 0, i;
     uint32_t band = first;
@@ -298,11 +364,12 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     atomic_init(&job->version, 0);
     pthread_mutex_init(&job->lock, NULL);
     pthread_cond_init(&job->changed, NULL);
+    helper_cpus_init(&cpus);
+    job->cpus = &cpus;
     for (i = 0; i + 1 < threads; i++) {
         helpers[started].job = job;
         helpers[started].index = started + 1;
-        if (pthread_create(&helpers[started].thread, NULL, helper_main,
-                           &helpers[started]) != 0)
+        if (helper_create(&helpers[started], &cpus, helper_main) != 0)
             break;
         started++;
     }

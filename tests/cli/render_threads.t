@@ -63,6 +63,20 @@ ok $? "65536-pixel rows through a pipe: P1 as pamtopnm -plain writes it"
 [ "$(grep -c 1 "$TMP/wide-p1.pbm")" -gt 0 ]
 ok $? "65536-pixel rows: the sphere is in them"
 
+# Helpers start on a CPU other than the caller's (render.c); confined to
+# one CPU there is none, and they start on that one: the same bytes.
+if command -v taskset >/dev/null 2>&1 && taskset -c 0 true 2>/dev/null; then
+    for j in 2 7; do
+        taskset -c 0 "$RAYO" render -W 257 -H 65 --raw --sphere 0,0,2,2 \
+            -j "$j" -o "$TMP/one-cpu.j$j.pbm"
+        cmp -s "$TMP/surface-p4.j1.pbm" "$TMP/one-cpu.j$j.pbm"
+        ok $? "one CPU (taskset), -j$j: the bytes of -j1"
+    done
+else
+    ok 0 "one CPU, -j2 # SKIP taskset cannot confine rayo to one CPU here"
+    ok 0 "one CPU, -j7 # SKIP taskset cannot confine rayo to one CPU here"
+fi
+
 expect_usage_error "-j 0" "threads.*'0'" render -j 0
 expect_usage_error "-j 257" "threads.*'257'" render -j 257
 expect_usage_error "-j x" "threads.*'x'" render --threads x
