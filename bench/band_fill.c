@@ -3,14 +3,15 @@
  * kind of work, with no rendering at all: the frame's bytes set to zero
  * in bands of 256 KiB, each thread filling slot buffers of its own, by
  * one thread or by the calling thread and helpers started for the fill,
- * as rayo_render starts them.  No ordering, no system calls: what is
+ * as rayo_render starts them: on CPUs other than the caller's.  No ordering, no system calls: what is
  * left is starting threads and storing bytes, so a renderer whose frame
  * is mostly those two things cannot be expected to scale better than
  * this does on the same machine.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* CPU affinity, as render.c */
 
 #include <pthread.h>
+#include <sched.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,6 +32,31 @@ typedef struct fill_thread {
     fill_job *job;
     unsigned index;
 } fill_thread;
+
+/* Starts a helper away from the calling thread's CPU when there is
+ * another (render.c's helper_create); 0 on success. */
+static int start_helper(fill_thread *h, void *(*main)(void *))
+{
+#ifdef CPU_COUNT
+    cpu_set_t others;
+    int here = sched_getcpu();
+    if (here >= 0 && here < CPU_SETSIZE &&
+        sched_getaffinity(0, sizeof others, &others) == 0) {
+        pthread_attr_t attr;
+        int created = 0;
+        CPU_CLR(here, &others);
+        if (CPU_COUNT(&others) > 0 && pthread_attr_init(&attr) == 0) {
+            created = pthread_attr_setaffinity_np(&attr, sizeof others,
+                                                  &others) == 0 &&
+                      pthread_create(&h->thread, &attr, main, h) == 0;
+            pthread_attr_destroy(&attr);
+        }
+        if (created)
+            return 0;
+    }
+#endif
+    return pthread_create(&h->thread, NULL, main, h) != 0 ? -1 : 0;
+}
 
 static void fill_bands(fill_job *job, unsigned index)
 {
@@ -55,6 +81,27 @@ static void *fill_helper(void *argument)
     return NULL;
 }
 
+/*
+ * The slots stay allocated from one call to the next, as a render's come
+ * back from malloc where the last render's were, faulted in and cached
+ * wherever they were last written.
+ */
+static unsigned char *fill_slots(unsigned threads)
+{
+    static unsigned char *slots;
+    static unsigned capacity;
+    if (threads > capacity) {
+        unsigned char *grown =
+            realloc(slots, (size_t)threads * FILL_SLOTS * FILL_BAND_BYTES);
+        if (grown == NULL)
+            return NULL;
+        memset(grown, 1, (size_t)threads * FILL_SLOTS * FILL_BAND_BYTES);
+        slots = grown;
+        capacity = threads;
+    }
+    return slots;
+}
+
 double bench_band_fill_seconds(size_t bytes, unsigned threads)
 {
     fill_job job;
@@ -62,23 +109,19 @@ double bench_band_fill_seconds(size_t bytes, unsigned threads)
     unsigned started = 0, i;
     double start, seconds;
     job.band_count = (bytes + FILL_BAND_BYTES - 1) / FILL_BAND_BYTES;
-    job.slots = malloc((size_t)threads * FILL_SLOTS * FILL_BAND_BYTES);
+    job.slots = fill_slots(threads);
     if (threads > 1)
         helpers = malloc((threads - 1) * sizeof *helpers);
     if (job.slots == NULL || (threads > 1 && helpers == NULL)) {
-        free(job.slots);
         free(helpers);
         return -1;
     }
-    /* Every slot touched once, as a render's reused buffers are. */
-    memset(job.slots, 1, (size_t)threads * FILL_SLOTS * FILL_BAND_BYTES);
     atomic_init(&job.next_band, 0);
     start = bench_now();
     for (i = 0; i + 1 < threads; i++) {
         helpers[started].job = &job;
         helpers[started].index = started + 1;
-        if (pthread_create(&helpers[started].thread, NULL, fill_helper,
-                           &helpers[started]) != 0)
+        if (start_helper(&helpers[started], fill_helper) != 0)
             break;
         started++;
     }
@@ -86,7 +129,6 @@ double bench_band_fill_seconds(size_t bytes, unsigned threads)
     for (i = 0; i < started; i++)
         pthread_join(helpers[i].thread, NULL);
     seconds = bench_now() - start;
-    free(job.slots);
     free(helpers);
     return seconds;
 }
