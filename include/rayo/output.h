@@ -39,6 +39,8 @@ rayo_status rayo_output_write(rayo_output *out, const void *data,
 /*
  * Flushes, syncs and (for a regular file) renames into place, then frees
  * out.  On failure the temporary file is removed and out is freed too.
+ * Once a write has failed, bytes are missing, and the commit fails with
+ * that write's error.
  */
 rayo_status rayo_output_commit(rayo_output *out, rayo_error *err);
 

@@ -87,6 +87,13 @@ void rayo_pbm_plain_free(rayo_pbm_plain *plain)
     free(plain);
 }
 
+const unsigned char *rayo_pbm_plain_white(const rayo_pbm_plain *plain,
+                                          size_t *rows)
+{
+    *rows = plain->white_rows;
+    return plain->white;
+}
+
 /* Digits first..last (inclusive) from the black template. */
 static void copy_black(const rayo_pbm_plain *plain, unsigned char *out,
                        size_t first, size_t last)

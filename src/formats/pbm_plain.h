@@ -23,6 +23,12 @@ rayo_pbm_plain *rayo_pbm_plain_new(uint32_t width);
 
 void rayo_pbm_plain_free(rayo_pbm_plain *plain);
 
+/* The formatted bytes of white rows, one after the other, as many as
+ * *rows is set to (at least one); they stay as they are until
+ * rayo_pbm_plain_free. */
+const unsigned char *rayo_pbm_plain_white(const rayo_pbm_plain *plain,
+                                          size_t *rows);
+
 /*
  * Formats count rows into out, one after the other, count *
  * rayo_pbm_plain_row_size() bytes, which it returns.  Row r is runs[r]

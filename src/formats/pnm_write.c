@@ -238,20 +238,90 @@ static int raw_as_is(const rayo_writer *writer, const unsigned char *rows,
     return 1;
 }
 
+/*
+ * Plain PBM rows given as runs that are all white, this many bytes of
+ * them in a row at least, are not formatted: the output takes them by
+ * reference to the formatter's white rows (output_reserve.h), and the
+ * kernel copies them from there.  Shorter stretches are copied: a
+ * reference costs the kernel about what copying 1 KB does.
+ */
+#define WHITE_REFER_BYTES 4096u
+
+/* The first row from r on that starts min_rows white rows (runs with no
+ * run), or count. */
+static uint32_t white_stretch(const rayo_row_runs *runs, uint32_t r,
+                              uint32_t count, uint32_t min_rows)
+{
+    uint32_t start = r, length = 0;
+    for (; r < count; r++) {
+        if (runs[r].count != 0) {
+            length = 0;
+            continue;
+        }
+        if (length++ == 0)
+            start = r;
+        if (length == min_rows)
+            return start;
+    }
+    return count;
+}
+
+/* The white rows from r on, by reference; returns the next row. */
+static rayo_status refer_white(rayo_writer *writer,
+                               const rayo_row_runs *runs, uint32_t *r,
+                               uint32_t count, rayo_error *err)
+{
+    const pnm_state *state = writer->state;
+    size_t per_block;
+    const unsigned char *white =
+        rayo_pbm_plain_white(state->plain_bits, &per_block);
+    while (*r < count && runs[*r].count == 0) {
+        size_t rows = 0;
+        rayo_status status;
+        while (rows < per_block && *r + rows < count &&
+               runs[*r + rows].count == 0)
+            rows++;
+        status = rayo_output_refer(writer->out, white,
+                                   rows * state->scratch_size, err);
+        if (status != RAYO_OK)
+            return status;
+        *r += (uint32_t)rows;
+        writer->rows_referred += (uint32_t)rows;
+    }
+    return RAYO_OK;
+}
+
 /* Formats count rows (runs: as format_rows) into the output's buffer, as
- * many at a time as it has room for. */
+ * many at a time as it has room for; long stretches of white rows given
+ * as runs go by reference instead. */
 static rayo_status write_formatted(rayo_writer *writer,
                                    const unsigned char *rows, size_t stride,
                                    const rayo_row_runs *runs, uint32_t count,
                                    rayo_error *err)
 {
     pnm_state *state = writer->state;
-    uint32_t r;
+    uint32_t r, min_white = 0, stop = count;
+    if (runs != NULL && state->plain_bits != NULL) {
+        min_white = (uint32_t)((WHITE_REFER_BYTES + state->scratch_size - 1) /
+                               state->scratch_size);
+        stop = 0; /* where the next white stretch starts: not looked for */
+    }
     for (r = 0; r < count;) {
         unsigned char *room;
         size_t available, fits;
-        rayo_status status = rayo_output_reserve(
-            writer->out, state->scratch_size, &room, &available, err);
+        rayo_status status;
+        if (min_white > 0 && stop <= r) {
+            stop = white_stretch(runs, r, count, min_white);
+            if (stop == r) {
+                status = refer_white(writer, runs, &r, count, err);
+                if (status != RAYO_OK)
+                    return status;
+                stop = r; /* look again from here */
+                continue;
+            }
+        }
+        status = rayo_output_reserve(writer->out, state->scratch_size,
+                                     &room, &available, err);
         if (status != RAYO_OK)
             return status;
         if (room == NULL) {
@@ -267,10 +337,11 @@ static rayo_status write_formatted(rayo_writer *writer,
             r++;
             continue;
         }
-        /* As many rows as the room surely holds, then one advance. */
+        /* As many rows as the room surely holds, up to the next white
+         * stretch, then one advance. */
         fits = available / state->scratch_size;
-        if (fits > count - r)
-            fits = count - r;
+        if (fits > stop - r)
+            fits = stop - r;
         rayo_output_advance(writer->out,
                             format_rows(writer, rows + (size_t)r * stride,
                                         stride, runs != NULL ? runs + r : NULL,
@@ -302,6 +373,11 @@ static void pnm_discard(rayo_writer *writer)
 {
     pnm_state *state = writer->state;
     if (state != NULL) {
+        /* The output may hold references to the white rows: written out
+         * now, before they go (should that fail, the output's commit
+         * fails too). */
+        rayo_error ignored;
+        (void)rayo_output_release(writer->out, &ignored);
         free(state->scratch);
         rayo_pbm_plain_free(state->plain_bits);
         free(state);
@@ -311,9 +387,9 @@ static void pnm_discard(rayo_writer *writer)
 
 static rayo_status pnm_finish(rayo_writer *writer, rayo_error *err)
 {
-    (void)err;
+    rayo_status status = rayo_output_release(writer->out, err);
     pnm_discard(writer);
-    return RAYO_OK;
+    return status;
 }
 
 const rayo_writer_ops rayo_pnm_writer_ops = {

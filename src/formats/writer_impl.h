@@ -35,6 +35,8 @@ struct rayo_writer {
     int takes_runs; /* ops->runs applies to this image (set by open) */
     uint32_t rows_as_runs; /* rows that came as runs, not bits (a count
                               for tests/unit/t_render_runs.c) */
+    uint32_t rows_referred; /* white rows of those, handed to the output
+                               by reference (pnm_write.c; the same) */
     void *state;    /* the format's own */
 };
 

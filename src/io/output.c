@@ -15,6 +15,13 @@
  * amount besides its bytes, so fewer, larger writes are faster (the seed
  * job, 312 KB, goes out in one).  Blocks at least OUTPUT_DIRECT_WRITE
  * long skip the buffer and are written from the caller's memory.
+ *
+ * The library's formatters may also hand over bytes by reference
+ * (rayo_output_refer, output_reserve.h): bytes that stay put until the
+ * next write, such as plain PBM's template of white rows.  They are not
+ * copied into the buffer; the next write gathers them, in order, with
+ * the buffer's bytes around them (writev), so the kernel copies them
+ * once, straight from where they are.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE
@@ -26,20 +33,32 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 #define OUTPUT_PIPE_BUFFER (64u * 1024u)    /* Linux's default pipe size */
 #define OUTPUT_FILE_BUFFER (1024u * 1024u)  /* regular files */
 #define OUTPUT_DIRECT_WRITE (64u * 1024u)
+/* References held between two writes, at most (a writev gathers twice
+ * as many pieces and one, far below any system's IOV_MAX). */
+#define OUTPUT_REFERENCES 64
 
 /* A write smaller than OUTPUT_DIRECT_WRITE must fit an empty buffer. */
 _Static_assert(OUTPUT_DIRECT_WRITE <= OUTPUT_PIPE_BUFFER &&
                    OUTPUT_DIRECT_WRITE <= OUTPUT_FILE_BUFFER,
                "small writes must fit every buffer");
+
+/* Bytes by reference: size bytes at data, after the buffer's first at. */
+typedef struct output_reference {
+    size_t at;
+    const unsigned char *data;
+    size_t size;
+} output_reference;
 
 struct rayo_output {
     int fd;
@@ -50,6 +69,11 @@ struct rayo_output {
     unsigned char *buffer; /* allocated at the first write */
     size_t capacity;
     size_t used;
+    output_reference references[OUTPUT_REFERENCES];
+    size_t reference_count;
+    size_t referenced; /* bytes the references hold */
+    int write_errno;   /* why a write failed, once one has: bytes were
+                          lost, so the output can no longer be committed */
 };
 
 static rayo_status system_error(const rayo_output *out, int code,
@@ -85,6 +109,9 @@ static rayo_output *output_new(const char *display)
     out->buffer = NULL;
     out->capacity = 0;
     out->used = 0;
+    out->reference_count = 0;
+    out->referenced = 0;
+    out->write_errno = 0;
     out->display = strdup(display);
     if (out->display == NULL) {
         free(out);
@@ -207,6 +234,7 @@ static rayo_status write_all(rayo_output *out, const unsigned char *data,
         if (n < 0) {
             if (errno == EINTR)
                 continue;
+            out->write_errno = errno;
             return system_error(out, errno, err);
         }
         data += n;
@@ -215,10 +243,64 @@ static rayo_status write_all(rayo_output *out, const unsigned char *data,
     return RAYO_OK;
 }
 
+/* Writes count pieces, whatever part of them each writev takes. */
+static rayo_status writev_all(rayo_output *out, struct iovec *pieces,
+                              int count, rayo_error *err)
+{
+    while (count > 0) {
+        ssize_t n = writev(out->fd, pieces, count);
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            out->write_errno = errno;
+            return system_error(out, errno, err);
+        }
+        while (count > 0 && (size_t)n >= pieces->iov_len) {
+            n -= (ssize_t)pieces->iov_len;
+            pieces++;
+            count--;
+        }
+        if (count > 0) {
+            pieces->iov_base = (char *)pieces->iov_base + n;
+            pieces->iov_len -= (size_t)n;
+        }
+    }
+    return RAYO_OK;
+}
+
+/* The buffer and the references, in order, in one writev. */
+static rayo_status flush_gathered(rayo_output *out, rayo_error *err)
+{
+    struct iovec pieces[2 * OUTPUT_REFERENCES + 1];
+    size_t at = 0, i;
+    int count = 0;
+    for (i = 0; i < out->reference_count; i++) {
+        const output_reference *r = &out->references[i];
+        if (r->at > at) {
+            pieces[count].iov_base = out->buffer + at;
+            pieces[count++].iov_len = r->at - at;
+            at = r->at;
+        }
+        pieces[count].iov_base = (void *)(uintptr_t)r->data;
+        pieces[count++].iov_len = r->size;
+    }
+    if (out->used > at) {
+        pieces[count].iov_base = out->buffer + at;
+        pieces[count++].iov_len = out->used - at;
+    }
+    return writev_all(out, pieces, count, err);
+}
+
+/* Writes out the buffer and the references; both are empty after, even
+ * when the write fails. */
 static rayo_status flush(rayo_output *out, rayo_error *err)
 {
-    rayo_status status = write_all(out, out->buffer, out->used, err);
+    rayo_status status = out->reference_count > 0
+                             ? flush_gathered(out, err)
+                             : write_all(out, out->buffer, out->used, err);
     out->used = 0;
+    out->reference_count = 0;
+    out->referenced = 0;
     return status;
 }
 
@@ -248,11 +330,11 @@ rayo_status rayo_output_reserve(rayo_output *out, size_t size,
         return status;
     if (size > out->capacity)
         return RAYO_OK;
-    if (size > out->capacity - out->used &&
+    if (size > out->capacity - out->used - out->referenced &&
         (status = flush(out, err)) != RAYO_OK)
         return status;
     *room = out->buffer + out->used;
-    *available = out->capacity - out->used;
+    *available = out->capacity - out->used - out->referenced;
     return RAYO_OK;
 }
 
@@ -275,14 +357,49 @@ rayo_status rayo_output_write(rayo_output *out, const void *data,
     return RAYO_OK;
 }
 
+rayo_status rayo_output_refer(rayo_output *out, const void *data,
+                              size_t size, rayo_error *err)
+{
+    rayo_status status;
+    output_reference *r;
+    if (size == 0)
+        return RAYO_OK;
+    if (out->buffer == NULL && (status = make_buffer(out, err)) != RAYO_OK)
+        return status;
+    /* No more pending than a buffer's worth: a pipe's reader still gets
+     * it in pieces, and a full list of references goes out first. */
+    if (out->reference_count == OUTPUT_REFERENCES ||
+        size > out->capacity - out->used - out->referenced) {
+        status = flush(out, err);
+        if (status != RAYO_OK)
+            return status;
+        if (size > out->capacity)
+            return write_all(out, data, size, err);
+    }
+    r = &out->references[out->reference_count++];
+    r->at = out->used;
+    r->data = data;
+    r->size = size;
+    out->referenced += size;
+    return RAYO_OK;
+}
+
+rayo_status rayo_output_release(rayo_output *out, rayo_error *err)
+{
+    return out->reference_count > 0 ? flush(out, err) : RAYO_OK;
+}
+
 void rayo_output_advance(rayo_output *out, size_t n)
 {
-    out->used += n < out->capacity - out->used ? n : out->capacity - out->used;
+    size_t room = out->capacity - out->used - out->referenced;
+    out->used += n < room ? n : room;
 }
 
 rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
 {
-    rayo_status status = flush(out, err);
+    rayo_status status = out->write_errno != 0
+                             ? system_error(out, out->write_errno, err)
+                             : flush(out, err);
     if (status == RAYO_OK && out->temp != NULL) {
         int failed = fsync(out->fd) != 0, code = errno;
         if (close(out->fd) != 0 && !failed) {

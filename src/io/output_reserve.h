@@ -1,8 +1,10 @@
 /*
- * output_reserve.h - writing in place into a rayo_output's buffer, for
- * the library's own formatters (pnm_write.c): a row formatted straight
- * into the buffer is not formatted elsewhere and copied.  Not a public
- * header: the buffer's size and the bookkeeping are output.c's business.
+ * output_reserve.h - writing in place into a rayo_output's buffer, and
+ * handing it bytes by reference, for the library's own formatters
+ * (pnm_write.c): a row formatted straight into the buffer is not
+ * formatted elsewhere and copied, and a template's bytes are not copied
+ * at all.  Not a public header: the buffer's size and the bookkeeping
+ * are output.c's business.
  */
 #ifndef RAYO_OUTPUT_RESERVE_H
 #define RAYO_OUTPUT_RESERVE_H
@@ -26,5 +28,20 @@ rayo_status rayo_output_reserve(rayo_output *out, size_t size,
 /* Adds n bytes written at the room to the output; n must not exceed the
  * room available (more is cut to it). */
 void rayo_output_advance(rayo_output *out, size_t n);
+
+/*
+ * Adds size bytes at data to the output, after everything added before,
+ * without copying them: they are written from data by the next write,
+ * so they must stay as they are until the output writes them out, which
+ * rayo_output_release makes happen at once (rayo_output_commit too).
+ * The output forgets them when a write fails and on rayo_output_abort.
+ * Errors are those of rayo_output_write.
+ */
+rayo_status rayo_output_refer(rayo_output *out, const void *data,
+                              size_t size, rayo_error *err);
+
+/* Writes out whatever is pending when any of it is held by reference,
+ * so that the memory referred to may change or go. */
+rayo_status rayo_output_release(rayo_output *out, rayo_error *err);
 
 #endif

@@ -1,10 +1,11 @@
 /*
  * t_output.c - rayo_output gets every byte to its destination in order,
- * whatever mix of small writes, large writes and in-place formatting
- * (rayo_output_reserve/advance) it is given, into a regular file (its
- * large buffer) and into a pipe (its pipe-sized one); and it reports what
- * goes wrong: no room on the device, a closed pipe, a reservation larger
- * than the buffer.  It also tells a terminal from the rest
+ * whatever mix of small writes, large writes, in-place formatting
+ * (rayo_output_reserve/advance) and bytes by reference
+ * (rayo_output_refer) it is given, into a regular file (its large
+ * buffer) and into a pipe (its pipe-sized one); and it reports what goes
+ * wrong: no room on the device, a closed pipe, a reservation larger than
+ * the buffer, a commit after bytes were lost.  It also tells a terminal from the rest
  * (rayo_output_is_terminal), on a pseudo-terminal of its own.
  *
  * The expected stream is generated here from a seeded sequence and the
@@ -19,6 +20,8 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/time.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "../../src/io/output_reserve.h"
@@ -31,26 +34,63 @@ static unsigned char stream_byte(size_t i)
     return (unsigned char)((i * 2654435761u) >> 13);
 }
 
-/* Sizes of the pieces, around every buffer and threshold the output has
- * (64 KiB, 1 MiB) and a plain PBM row of the seed (651 bytes). */
+/* Sizes of the first pieces, around every buffer and threshold the
+ * output has (64 KiB, 1 MiB) and a plain PBM row of the seed (651 bytes). */
 static const size_t piece_sizes[] = {
     0,      1,           651,         7,           65535,   65536,
     65537,  3,           200000,      1048575,     1048576, 1048577,
-    651,    64 * 1024,   2,           1024 * 1024 - 651,     5};
-#define PIECES (sizeof piece_sizes / sizeof piece_sizes[0])
+    651,    64 * 1024,   2,           1024 * 1024 - 651,     5,
+    8192,   1,           4096};
+#define LARGE_PIECES (sizeof piece_sizes / sizeof piece_sizes[0])
+/* Then small pieces, two references out of three: more references than
+ * the output holds between two writes, some of them back to back. */
+#define SMALL_PIECES 300
+#define PIECES (LARGE_PIECES + SMALL_PIECES)
+
+static size_t piece_size(size_t i)
+{
+    return i < LARGE_PIECES ? piece_sizes[i]
+                            : 1 + (i * 7) % 13 + (i % 5 == 0 ? 700 : 0);
+}
+
+/* How piece i reaches the output. */
+typedef enum piece_kind { IN_PLACE, COPIED, REFERRED } piece_kind;
+
+static piece_kind piece_kind_of(size_t i)
+{
+    if (i < LARGE_PIECES)
+        return (piece_kind)(i % 3);
+    return i % 3 == 0 ? IN_PLACE : REFERRED;
+}
 
 static size_t stream_length(void)
 {
     size_t i, n = 0;
     for (i = 0; i < PIECES; i++)
-        n += piece_sizes[i];
+        n += piece_size(i);
     return n;
 }
 
+/* The whole stream, where references point: it never changes. */
+static const unsigned char *whole_stream(void)
+{
+    static unsigned char *bytes;
+    if (bytes == NULL) {
+        size_t i, n = stream_length();
+        bytes = malloc(n);
+        if (bytes == NULL)
+            abort();
+        for (i = 0; i < n; i++)
+            bytes[i] = stream_byte(i);
+    }
+    return bytes;
+}
+
 /*
- * Writes the stream into out: odd pieces through rayo_output_write, even
- * ones formatted in place when the buffer has room for them.  Returns
- * the status of the first failure; *in_place counts pieces placed.
+ * Writes the stream into out: pieces through rayo_output_write, formatted
+ * in place when the buffer has room for them, and by reference
+ * (rayo_output_refer).  Returns the status of the first failure;
+ * *in_place counts pieces placed.
  */
 static rayo_status write_stream(rayo_output *out, int *in_place,
                                 rayo_error *err)
@@ -59,11 +99,19 @@ static rayo_status write_stream(rayo_output *out, int *in_place,
     size_t i, at = 0, j;
     *in_place = 0;
     for (i = 0; i < PIECES; i++) {
-        size_t n = piece_sizes[i];
+        size_t n = piece_size(i);
+        piece_kind kind = piece_kind_of(i);
         rayo_status status;
         unsigned char *room = NULL;
         size_t available = 0;
-        if (i % 2 == 0) {
+        if (kind == REFERRED) {
+            status = rayo_output_refer(out, whole_stream() + at, n, err);
+            if (status != RAYO_OK)
+                return status;
+            at += n;
+            continue;
+        }
+        if (kind == IN_PLACE) {
             status = rayo_output_reserve(out, n, &room, &available, err);
             if (status != RAYO_OK)
                 return status;
@@ -135,6 +183,45 @@ static void *read_pipe(void *argument)
     return NULL;
 }
 
+/* For test_interrupted_pipe: counts interruptions. */
+static volatile sig_atomic_t alarms;
+
+static void count_alarm(int signal_number)
+{
+    (void)signal_number;
+    alarms++;
+}
+
+/* A reader that takes a while: the writer blocks in the middle of its
+ * writes, where a signal cuts them short. */
+static void *read_pipe_slowly(void *argument)
+{
+    pipe_reader *reader = argument;
+    unsigned char chunk[16384];
+    size_t at = 0;
+    long bad = 0;
+    sigset_t blocked;
+    sigemptyset(&blocked);
+    sigaddset(&blocked, SIGALRM);
+    pthread_sigmask(SIG_BLOCK, &blocked, NULL);
+    for (;;) {
+        struct timespec pause = {0, 100000};
+        ssize_t n = read(reader->fd, chunk, sizeof chunk), j;
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break;
+        for (j = 0; j < n; j++)
+            if (at + (size_t)j >= reader->length ||
+                chunk[j] != stream_byte(at + (size_t)j))
+                bad++;
+        at += (size_t)n;
+        nanosleep(&pause, NULL);
+    }
+    reader->mismatches = at == reader->length ? bad : -1;
+    return NULL;
+}
+
 static void test_file(void)
 {
     char path[] = "/tmp/rayo-t-output.XXXXXX";
@@ -200,6 +287,51 @@ static void test_pipe(void)
            (unsigned long)reader.length);
 }
 
+/*
+ * Writes cut short: a signal (without SA_RESTART) arriving while a write
+ * or writev is blocked on a full pipe ends it early with what it wrote,
+ * and the output goes on from the first byte not written, in the middle
+ * of a reference or of the buffer.
+ */
+static void test_interrupted_pipe(void)
+{
+    int fds[2], in_place = 0;
+    pipe_reader reader;
+    pthread_t thread;
+    rayo_output *out;
+    rayo_error err;
+    rayo_status status = RAYO_ERR_IO;
+    struct sigaction action, previous;
+    struct itimerval every = {{0, 300}, {0, 300}}, off = {{0, 0}, {0, 0}};
+    memset(&action, 0, sizeof action);
+    action.sa_handler = count_alarm; /* no SA_RESTART */
+    sigemptyset(&action.sa_mask);
+    if (pipe(fds) != 0 || sigaction(SIGALRM, &action, &previous) != 0) {
+        ok(0, "a pipe and a signal handler");
+        return;
+    }
+    reader.fd = fds[0];
+    reader.length = stream_length();
+    alarms = 0;
+    if (pthread_create(&thread, NULL, read_pipe_slowly, &reader) != 0) {
+        ok(0, "a reading thread");
+        return;
+    }
+    setitimer(ITIMER_REAL, &every, NULL);
+    if (rayo_output_open_fd(&out, fds[1], "pipe", &err) == RAYO_OK)
+        status = write_stream_and_commit(out, &in_place, &err);
+    setitimer(ITIMER_REAL, &off, NULL);
+    sigaction(SIGALRM, &previous, NULL);
+    close(fds[1]);
+    pthread_join(thread, NULL);
+    close(fds[0]);
+    is_int(status, RAYO_OK, "interrupted pipe: every piece written");
+    ok(alarms > 10, "interrupted pipe: writes were interrupted (%d signals)",
+       (int)alarms);
+    is_int(reader.mismatches, 0, "interrupted pipe: %lu bytes, all in order",
+           (unsigned long)reader.length);
+}
+
 static void test_full_device(void)
 {
     int fd = open("/dev/full", O_WRONLY), in_place;
@@ -219,6 +351,37 @@ static void test_full_device(void)
            strstr(err.message, strerror(ENOSPC)) != NULL,
        "/dev/full: the message names the file and the reason");
     printf("# %s\n", err.message);
+}
+
+/* Once a write has failed, bytes are lost: the commit fails too, even
+ * when nothing was pending (a writer releasing its references on the
+ * way out ignores the failure, as rayo_writer_discard does). */
+static void test_lost_bytes(void)
+{
+    int fd = open("/dev/full", O_WRONLY);
+    rayo_output *out;
+    rayo_error err;
+    rayo_status status;
+    if (fd < 0) {
+        ok(1, "# SKIP no /dev/full");
+        ok(1, "# SKIP no /dev/full");
+        return;
+    }
+    status = rayo_output_open_fd(&out, fd, "/dev/full", &err);
+    if (status == RAYO_OK)
+        status = rayo_output_refer(out, "P1\n", 3, &err);
+    if (status == RAYO_OK)
+        status = rayo_output_release(out, &err);
+    is_int(status, RAYO_ERR_IO, "/dev/full: releasing references fails");
+    if (status != RAYO_ERR_IO) {
+        ok(0, "no output to commit");
+    } else {
+        status = rayo_output_commit(out, &err);
+        ok(status == RAYO_ERR_IO &&
+               strstr(err.message, strerror(ENOSPC)) != NULL,
+           "and the commit after it fails with the write's reason");
+    }
+    close(fd);
 }
 
 static void test_closed_pipe(void)
@@ -284,7 +447,9 @@ int main(void)
     test_is_terminal();
     test_file();
     test_pipe();
+    test_interrupted_pipe();
     test_full_device();
+    test_lost_bytes();
     test_closed_pipe();
     return tap_done();
 }

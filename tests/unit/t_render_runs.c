@@ -11,7 +11,10 @@
  * around and behind the camera), cameras turned or not, odd sizes, 1, 2
  * and 3 threads, and frames tall enough (65,536 rows) that render.c
  * brings in helper threads from the first band.  The writer counts the
- * rows that came as runs, so the test knows the runs path was taken.  A
+ * rows that came as runs, and the white ones among them it handed to the
+ * output by reference (pnm_write.c), so the test knows both paths were
+ * taken; the tall frames refer to more rows than an output holds
+ * references at once, so references are written out mid-frame too.  A
  * writer narrower than the frame gets bits (its rows are cut to its
  * width), never runs too long for its rows.
  */
@@ -48,6 +51,7 @@ typedef struct written {
     unsigned char *bytes; /* NULL on a failure */
     size_t size;
     uint32_t rows_as_runs;
+    uint32_t rows_referred;
 } written;
 
 /* The frame as plain PBM width pixels wide (the camera's, or fewer),
@@ -64,7 +68,7 @@ static written write_frame(const rayo_camera *camera, const rayo_scene *scene,
     rayo_output *out;
     rayo_writer *writer;
     rayo_error err;
-    written result = {NULL, 0, 0};
+    written result = {NULL, 0, 0, 0};
     off_t end;
     if (fd < 0)
         return result;
@@ -83,6 +87,7 @@ static written write_frame(const rayo_camera *camera, const rayo_scene *scene,
         failed = rayo_render(camera, scene, &options, sink, writer, &err) !=
                  RAYO_OK;
         result.rows_as_runs = writer->rows_as_runs;
+        result.rows_referred = writer->rows_referred;
         if (failed)
             rayo_writer_discard(writer);
         else
@@ -105,7 +110,7 @@ static written write_frame(const rayo_camera *camera, const rayo_scene *scene,
 
 typedef struct tally {
     int frames, differing;
-    long rows_as_runs, bits_path_runs;
+    long rows_as_runs, bits_path_runs, rows_referred;
 } tally;
 
 /* Writes the frame both ways and compares. */
@@ -121,6 +126,7 @@ static void both_ways(const rayo_camera *camera, const rayo_scene *scene,
                     memcmp(runs.bytes, bits.bytes, runs.size) != 0;
     t->rows_as_runs += runs.rows_as_runs;
     t->bits_path_runs += bits.rows_as_runs;
+    t->rows_referred += runs.rows_referred;
     free(runs.bytes);
     free(bits.bytes);
 }
@@ -198,7 +204,8 @@ static void random_camera(rayo_camera *camera, uint32_t width,
 
 int main(void)
 {
-    tally t = {0, 0, 0, 0}, tall = {0, 0, 0, 0}, narrow = {0, 0, 0, 0};
+    tally t = {0, 0, 0, 0, 0}, tall = {0, 0, 0, 0, 0},
+          narrow = {0, 0, 0, 0, 0};
     int n;
     unsigned threads;
     who_takes_runs();
@@ -214,6 +221,8 @@ int main(void)
     is_int(t.differing, 0, "runs and bits give the same plain PBM (%d frames)",
            t.frames);
     ok(t.rows_as_runs > 10000, "rows went as runs (%ld)", t.rows_as_runs);
+    ok(t.rows_referred > 1000, "white rows went by reference (%ld)",
+       t.rows_referred);
     is_int(t.bits_path_runs, 0, "no rows as runs through another sink");
 
     /* Tall frames: helpers from the first band, several at once. */
@@ -231,6 +240,10 @@ int main(void)
            tall.frames);
     ok(tall.rows_as_runs > 100000, "tall frames: rows went as runs (%ld)",
        tall.rows_as_runs);
+    ok(tall.rows_referred > 10000,
+       "tall frames: white rows went by reference (%ld), more than an "
+       "output holds at once",
+       tall.rows_referred);
 
     /* A writer narrower than the frame: its rows cut to its width. */
     {
