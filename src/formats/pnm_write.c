@@ -373,11 +373,9 @@ static void pnm_discard(rayo_writer *writer)
 {
     pnm_state *state = writer->state;
     if (state != NULL) {
-        /* The output may hold references to the white rows: written out
-         * now, before they go (should that fail, the output's commit
-         * fails too). */
-        rayo_error ignored;
-        (void)rayo_output_release(writer->out, &ignored);
+        /* The image is abandoned, and the output may hold references to
+         * the white rows: dropped, not written, before the rows go. */
+        rayo_output_forget(writer->out);
         free(state->scratch);
         rayo_pbm_plain_free(state->plain_bits);
         free(state);
@@ -388,7 +386,7 @@ static void pnm_discard(rayo_writer *writer)
 static rayo_status pnm_finish(rayo_writer *writer, rayo_error *err)
 {
     rayo_status status = rayo_output_release(writer->out, err);
-    pnm_discard(writer);
+    pnm_discard(writer); /* nothing is held by reference any more */
     return status;
 }
 

@@ -33,8 +33,9 @@ void rayo_output_advance(rayo_output *out, size_t n);
  * Adds size bytes at data to the output, after everything added before,
  * without copying them: they are written from data by the next write,
  * so they must stay as they are until the output writes them out, which
- * rayo_output_release makes happen at once (rayo_output_commit too).
- * The output forgets them when a write fails and on rayo_output_abort.
+ * rayo_output_release makes happen at once (rayo_output_commit too), or
+ * until rayo_output_forget drops them.  The output also drops them when
+ * a write fails and on rayo_output_abort.
  * Errors are those of rayo_output_write.
  */
 rayo_status rayo_output_refer(rayo_output *out, const void *data,
@@ -43,5 +44,9 @@ rayo_status rayo_output_refer(rayo_output *out, const void *data,
 /* Writes out whatever is pending when any of it is held by reference,
  * so that the memory referred to may change or go. */
 rayo_status rayo_output_release(rayo_output *out, rayo_error *err);
+
+/* Drops, unwritten, whatever is pending when any of it is held by
+ * reference, for a writer abandoning its image; a commit then fails. */
+void rayo_output_forget(rayo_output *out);
 
 #endif

@@ -354,8 +354,9 @@ static void test_full_device(void)
 }
 
 /* Once a write has failed, bytes are lost: the commit fails too, even
- * when nothing was pending (a writer releasing its references on the
- * way out ignores the failure, as rayo_writer_discard does). */
+ * with nothing pending any more; and so it does after pending bytes held
+ * by reference were dropped (rayo_output_forget, what a plain PBM writer
+ * abandoned on the way does). */
 static void test_lost_bytes(void)
 {
     int fd = open("/dev/full", O_WRONLY);
@@ -381,6 +382,23 @@ static void test_lost_bytes(void)
                strstr(err.message, strerror(ENOSPC)) != NULL,
            "and the commit after it fails with the write's reason");
     }
+    close(fd);
+
+    fd = open("/dev/null", O_WRONLY);
+    status = rayo_output_open_fd(&out, fd, "/dev/null", &err);
+    if (status == RAYO_OK) {
+        status = rayo_output_write(out, "P1\n", 3, &err);
+        if (status == RAYO_OK)
+            status = rayo_output_refer(out, "1 1\n", 4, &err);
+        rayo_output_forget(out);
+        if (status == RAYO_OK)
+            status = rayo_output_commit(out, &err);
+        else
+            rayo_output_abort(out);
+    }
+    ok(status == RAYO_ERR_INVALID && strstr(err.message, "abandoned") != NULL,
+       "references dropped: the commit fails");
+    printf("# %s\n", err.message);
     close(fd);
 }
 
