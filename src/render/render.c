@@ -29,7 +29,7 @@
  * as runs of black pixels, which that writer spells without scanning.
  */
 #define _GNU_SOURCE /* sched_getaffinity, sched_getcpu, CPU_COUNT, thread
-                       affinity */
+                       affinity, pthread_tryjoin_np */
 
 #include "rayo/render.h"
 
@@ -337,6 +337,31 @@ static void *helper_main(void *argument)
     return NULL;
 }
 
+/*
+ * Waits for a helper to end.  It usually ends a few microseconds after
+ * the last band is delivered, and a joiner that sleeps meanwhile is woken
+ * only when its CPU is (30 to 45 us of the P4 frame's 0.5 ms on the
+ * development machine, against 2 to 6 us spinning): so, with a CPU per
+ * thread, spin a while first, where the C library can tell without
+ * waiting whether a thread has ended.
+ */
+static void join_helper(pthread_t thread, int spin)
+{
+#if defined(__GLIBC__)
+    if (spin) {
+        double start = seconds_now();
+        do {
+            if (pthread_tryjoin_np(thread, NULL) == 0)
+                return;
+            sched_yield();
+        } while (seconds_now() - start < SPIN_SECONDS);
+    }
+#else
+    (void)spin;
+#endif
+    pthread_join(thread, NULL);
+}
+
 /* Bands from `first` on: this thread delivers them in order and renders
  * whatever it can claim while the next one is not ready; `threads` - 1
  * helpers render too. */
@@ -399,7 +424,7 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     announce(job);
     pthread_mutex_unlock(&job->lock);
     for (i = 0; i < started; i++)
-        pthread_join(helpers[i].thread, NULL);
+        join_helper(helpers[i].thread, job->spin);
     pthread_cond_destroy(&job->changed);
     pthread_mutex_destroy(&job->lock);
     free(helpers);
