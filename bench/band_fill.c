@@ -38,7 +38,7 @@ typedef struct fill_thread {
  * another (render.c's helper_create); 0 on success. */
 static int start_helper(fill_thread *h, void *(*main)(void *))
 {
-#ifdef CPU_COUNT
+#if defined(__GLIBC__) && defined(CPU_COUNT)
     cpu_set_t others;
     int here = sched_getcpu();
     if (here >= 0 && here < CPU_SETSIZE &&
@@ -128,6 +128,7 @@ double bench_band_fill_seconds(size_t bytes, unsigned threads)
     }
     fill_bands(&job, 0);
     for (i = 0; i < started; i++) {
+#if defined(__GLIBC__)
         /* As render.c's join_helper: spin, not sleep, while it ends. */
         double asked = bench_now();
         while (pthread_tryjoin_np(helpers[i].thread, NULL) != 0)
@@ -135,6 +136,9 @@ double bench_band_fill_seconds(size_t bytes, unsigned threads)
                 pthread_join(helpers[i].thread, NULL);
                 break;
             }
+#else
+        pthread_join(helpers[i].thread, NULL);
+#endif
     }
     seconds = bench_now() - start;
     free(helpers);

@@ -167,15 +167,16 @@ static void throughput(bench_table *table, const large_setup *setup)
                            : all * one / (one + (all - 1) * late),
                   "x");
         /* The machine's own scaling on the frame's bytes (band_fill.c). */
+        int filled = fill_one > 0 && fill_many > 0; /* -1: no memory */
         bench_add(table, "fill_1thread_ms",
                   "the frame's bytes zeroed in bands, 1 thread",
-                  fill_one * 1e3, "ms");
+                  filled ? fill_one * 1e3 : -1, "ms");
         bench_add(table, "fill_all_ms",
                   "the frame's bytes zeroed in bands, all threads",
-                  fill_many * 1e3, "ms");
+                  filled ? fill_many * 1e3 : -1, "ms");
         bench_add(table, "fill_speedup",
                   "zeroing the frame's bytes, speed-up, 1 to all",
-                  fill_one / fill_many, "x");
+                  filled ? fill_one / fill_many : -1, "x");
     }
     bench_target(table, "PNG / libpng alone", png / alone, 1.2, 1);
 }

@@ -64,9 +64,10 @@ typedef struct rayo_write_options {
 typedef struct rayo_writer rayo_writer;
 
 /*
- * Starts an image on out (which stays the caller's: commit or abort it
- * after the writer is finished).  RAYO_ERR_INVALID when the format cannot
- * hold this layout.
+ * Starts an image on out, which stays the caller's: finish or discard
+ * the writer first, then commit or abort out (the writer may leave bytes
+ * of its own memory pending in out until it is finished).
+ * RAYO_ERR_INVALID when the format cannot hold this layout.
  */
 rayo_status rayo_writer_open(rayo_writer **writer, rayo_output *out,
                              const rayo_image_info *info,
@@ -92,7 +93,8 @@ rayo_status rayo_writer_row_sink(void *writer, const unsigned char *rows,
  */
 rayo_status rayo_writer_finish(rayo_writer *writer, rayo_error *err);
 
-/* Frees a writer without ending its image (after an error). */
+/* Frees a writer without ending its image (after an error): the image
+ * is incomplete, so its output's commit fails from then on (abort it). */
 void rayo_writer_discard(rayo_writer *writer);
 
 /* Writes a whole image: open, all rows, finish. */

@@ -373,9 +373,6 @@ static void pnm_discard(rayo_writer *writer)
 {
     pnm_state *state = writer->state;
     if (state != NULL) {
-        /* The image is abandoned, and the output may hold references to
-         * the white rows: dropped, not written, before the rows go. */
-        rayo_output_forget(writer->out);
         free(state->scratch);
         rayo_pbm_plain_free(state->plain_bits);
         free(state);
@@ -383,10 +380,12 @@ static void pnm_discard(rayo_writer *writer)
     }
 }
 
+/* The output may hold references to the white rows: written out before
+ * the rows go.  (rayo_writer_discard drops them instead.) */
 static rayo_status pnm_finish(rayo_writer *writer, rayo_error *err)
 {
     rayo_status status = rayo_output_release(writer->out, err);
-    pnm_discard(writer); /* nothing is held by reference any more */
+    pnm_discard(writer);
     return status;
 }
 

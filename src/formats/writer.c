@@ -2,6 +2,7 @@
  * writer.c - the format-independent half of rayo_writer: format names,
  * extensions, row bookkeeping and dispatch to the format's table.
  */
+#include "../io/output_reserve.h"
 #include "writer_impl.h"
 #include "writer_runs.h"
 
@@ -176,6 +177,10 @@ void rayo_writer_discard(rayo_writer *writer)
 {
     if (writer == NULL)
         return;
+    /* What is pending is part of an incomplete image, and may point into
+     * the writer's memory (output_reserve.h): dropped, and the output
+     * can no longer be committed. */
+    rayo_output_abandon(writer->out);
     writer->ops->discard(writer);
     free(writer);
 }

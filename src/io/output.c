@@ -74,8 +74,8 @@ struct rayo_output {
     size_t referenced; /* bytes the references hold */
     int write_errno;   /* why a write failed, once one has: bytes were
                           lost, so the output can no longer be committed */
-    int dropped;       /* bytes were dropped (rayo_output_forget): the
-                          same */
+    int abandoned;     /* an image on it was abandoned
+                          (rayo_output_abandon): the same */
 };
 
 static rayo_status system_error(const rayo_output *out, int code,
@@ -114,7 +114,7 @@ static rayo_output *output_new(const char *display)
     out->reference_count = 0;
     out->referenced = 0;
     out->write_errno = 0;
-    out->dropped = 0;
+    out->abandoned = 0;
     out->display = strdup(display);
     if (out->display == NULL) {
         free(out);
@@ -392,14 +392,12 @@ rayo_status rayo_output_release(rayo_output *out, rayo_error *err)
     return out->reference_count > 0 ? flush(out, err) : RAYO_OK;
 }
 
-void rayo_output_forget(rayo_output *out)
+void rayo_output_abandon(rayo_output *out)
 {
-    if (out->reference_count == 0)
-        return;
     out->used = 0;
     out->reference_count = 0;
     out->referenced = 0;
-    out->dropped = 1;
+    out->abandoned = 1;
 }
 
 void rayo_output_advance(rayo_output *out, size_t n)
@@ -412,7 +410,7 @@ rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
 {
     rayo_status status =
         out->write_errno != 0 ? system_error(out, out->write_errno, err)
-        : out->dropped
+        : out->abandoned
             ? rayo_error_set(err, RAYO_ERR_INVALID,
                              "%s: incomplete: an image written to it was "
                              "abandoned",

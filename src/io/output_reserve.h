@@ -34,7 +34,7 @@ void rayo_output_advance(rayo_output *out, size_t n);
  * without copying them: they are written from data by the next write,
  * so they must stay as they are until the output writes them out, which
  * rayo_output_release makes happen at once (rayo_output_commit too), or
- * until rayo_output_forget drops them.  The output also drops them when
+ * until rayo_output_abandon drops them.  The output also drops them when
  * a write fails and on rayo_output_abort.
  * Errors are those of rayo_output_write.
  */
@@ -45,8 +45,9 @@ rayo_status rayo_output_refer(rayo_output *out, const void *data,
  * so that the memory referred to may change or go. */
 rayo_status rayo_output_release(rayo_output *out, rayo_error *err);
 
-/* Drops, unwritten, whatever is pending when any of it is held by
- * reference, for a writer abandoning its image; a commit then fails. */
-void rayo_output_forget(rayo_output *out);
+/* For rayo_writer_discard: drops whatever is pending, unwritten (the
+ * memory referred to may go), and marks out as holding an incomplete
+ * image, so that its commit fails from then on. */
+void rayo_output_abandon(rayo_output *out);
 
 #endif

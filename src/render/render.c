@@ -54,6 +54,13 @@
 #define SLOTS_PER_THREAD 3u
 _Static_assert(SLOTS_PER_THREAD < sizeof(unsigned) * 8,
                "a thread's free slots are bits of an unsigned");
+/* Helpers are started on chosen CPUs (helper_cpus) with glibc's
+ * pthread_attr_setaffinity_np; elsewhere, wherever the system puts them. */
+#if defined(__GLIBC__) && defined(CPU_COUNT)
+#define STEER_HELPERS 1
+#else
+#define STEER_HELPERS 0
+#endif
 /* Frames projected to take less than this stay on the calling thread. */
 #define SERIAL_BELOW_SECONDS 0.0002
 /* How long a thread with nothing to do spins before it sleeps. */
@@ -272,7 +279,7 @@ typedef struct helper {
  * there, is given back all the CPUs the process may use.
  */
 typedef struct helper_cpus {
-#ifdef CPU_COUNT
+#if STEER_HELPERS
     cpu_set_t allowed; /* the process's CPUs, for helpers once started */
     cpu_set_t start;   /* those less the calling thread's */
 #endif
@@ -282,7 +289,7 @@ typedef struct helper_cpus {
 static void helper_cpus_init(helper_cpus *cpus)
 {
     cpus->steer = 0;
-#ifdef CPU_COUNT
+#if STEER_HELPERS
     {
         int here = sched_getcpu();
         if (here < 0 || here >= CPU_SETSIZE ||
@@ -300,7 +307,7 @@ static void helper_cpus_init(helper_cpus *cpus)
 static int helper_create(helper *h, const helper_cpus *cpus,
                          void *(*main)(void *))
 {
-#ifdef CPU_COUNT
+#if STEER_HELPERS
     if (cpus->steer) {
         pthread_attr_t attr;
         int created = 0;
@@ -323,7 +330,7 @@ static void *helper_main(void *argument)
 {
     const helper *self = argument;
     band_job *job = self->job;
-#ifdef CPU_COUNT
+#if STEER_HELPERS
     if (job->cpus->steer)
         pthread_setaffinity_np(pthread_self(), sizeof job->cpus->allowed,
                                &job->cpus->allowed);
