@@ -229,23 +229,6 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
     return RAYO_OK;
 }
 
-static rayo_status write_all(rayo_output *out, const unsigned char *data,
-                             size_t size, rayo_error *err)
-{
-    while (size > 0) {
-        ssize_t n = write(out->fd, data, size);
-        if (n < 0) {
-            if (errno == EINTR)
-                continue;
-            out->write_errno = errno;
-            return system_error(out, errno, err);
-        }
-        data += n;
-        size -= (size_t)n;
-    }
-    return RAYO_OK;
-}
-
 /* Writes count pieces, whatever part of them each writev takes. */
 static rayo_status writev_all(rayo_output *out, struct iovec *pieces,
                               int count, rayo_error *err)
@@ -269,6 +252,15 @@ static rayo_status writev_all(rayo_output *out, struct iovec *pieces,
         }
     }
     return RAYO_OK;
+}
+
+static rayo_status write_all(rayo_output *out, const void *data,
+                             size_t size, rayo_error *err)
+{
+    struct iovec piece;
+    piece.iov_base = (void *)(uintptr_t)data;
+    piece.iov_len = size;
+    return writev_all(out, &piece, size > 0, err);
 }
 
 /* The buffer and the references, in order, in one writev. */
