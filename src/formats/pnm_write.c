@@ -13,7 +13,8 @@
  * pbm_plain.c, as bits or, from render.c, as runs (writer_runs.h).  Raw
  * rows that need no change (bytes, or bits whose padding is already
  * zero) go to the output straight from the caller's memory, a whole
- * block of rows in one call.
+ * block of rows in one call; long stretches of white plain PBM rows
+ * given as runs go to it by reference to the formatter's white rows.
  */
 #include <stdio.h>
 #include <stdlib.h>

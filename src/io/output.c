@@ -400,14 +400,16 @@ void rayo_output_advance(rayo_output *out, size_t n)
 
 rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
 {
-    rayo_status status =
-        out->write_errno != 0 ? system_error(out, out->write_errno, err)
-        : out->abandoned
-            ? rayo_error_set(err, RAYO_ERR_INVALID,
-                             "%s: incomplete: an image written to it was "
-                             "abandoned",
-                             out->display)
-            : flush(out, err);
+    rayo_status status;
+    if (out->write_errno != 0)
+        status = system_error(out, out->write_errno, err);
+    else if (out->abandoned)
+        status = rayo_error_set(err, RAYO_ERR_INVALID,
+                                "%s: incomplete: an image written to it "
+                                "was abandoned",
+                                out->display);
+    else
+        status = flush(out, err);
     if (status == RAYO_OK && out->temp != NULL) {
         int failed = fsync(out->fd) != 0, code = errno;
         if (close(out->fd) != 0 && !failed) {
