@@ -36,7 +36,7 @@ typedef struct fill_thread {
 
 /* Starts a helper away from the calling thread's CPU when there is
  * another (render.c's helper_create); 0 on success. */
-static int start_helper(fill_thread *h, void *(*main)(void *))
+static int start_helper(fill_thread *h, void *(*body)(void *))
 {
 #if defined(__GLIBC__) && defined(CPU_COUNT)
     cpu_set_t others;
@@ -49,14 +49,14 @@ static int start_helper(fill_thread *h, void *(*main)(void *))
         if (CPU_COUNT(&others) > 0 && pthread_attr_init(&attr) == 0) {
             created = pthread_attr_setaffinity_np(&attr, sizeof others,
                                                   &others) == 0 &&
-                      pthread_create(&h->thread, &attr, main, h) == 0;
+                      pthread_create(&h->thread, &attr, body, h) == 0;
             pthread_attr_destroy(&attr);
         }
         if (created)
             return 0;
     }
 #endif
-    return pthread_create(&h->thread, NULL, main, h) != 0 ? -1 : 0;
+    return pthread_create(&h->thread, NULL, body, h) != 0 ? -1 : 0;
 }
 
 static void fill_bands(fill_job *job, unsigned index)

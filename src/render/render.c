@@ -21,7 +21,9 @@
  * with nothing to do spins briefly (a band is usually microseconds from
  * done) before it sleeps on the condition variable, and a thread that
  * changes the state wakes sleepers only when there are some: futex
- * wake-ups cost tens of microseconds on a virtual machine.
+ * wake-ups cost tens of microseconds on a virtual machine.  For the same
+ * reason helpers are started on another CPU than the caller's
+ * (helper_cpus), and the caller spins while they end (join_helper).
  *
  * Rows reach the sink as pixels, except for one shortcut of the
  * library's own: when the sink is rayo_writer_row_sink and its writer
@@ -305,7 +307,7 @@ static void helper_cpus_init(helper_cpus *cpus)
 /* Creates a helper thread, started on cpus->start when steering (and
  * anywhere when that fails); 0 on success. */
 static int helper_create(helper *h, const helper_cpus *cpus,
-                         void *(*main)(void *))
+                         void *(*body)(void *))
 {
 #if STEER_HELPERS
     if (cpus->steer) {
@@ -314,7 +316,7 @@ static int helper_create(helper *h, const helper_cpus *cpus,
         if (pthread_attr_init(&attr) == 0) {
             created = pthread_attr_setaffinity_np(&attr, sizeof cpus->start,
                                                   &cpus->start) == 0 &&
-                      pthread_create(&h->thread, &attr, main, h) == 0;
+                      pthread_create(&h->thread, &attr, body, h) == 0;
             pthread_attr_destroy(&attr);
         }
         if (created)
@@ -323,7 +325,7 @@ static int helper_create(helper *h, const helper_cpus *cpus,
 #else
     (void)cpus;
 #endif
-    return pthread_create(&h->thread, NULL, main, h) != 0 ? -1 : 0;
+    return pthread_create(&h->thread, NULL, body, h) != 0 ? -1 : 0;
 }
 
 static void *helper_main(void *argument)
