@@ -17,9 +17,10 @@
  * Walk: iterative, with the ray's reciprocal direction precomputed; both
  * children of a node are tested at once, in the two lanes of an SSE2
  * register where there is one (pair_entry), with the same arithmetic as
- * one at a time; the nearest-hit query visits the nearer child first and skips any subtree
- * whose box begins beyond the best hit so far; the any-hit query also
- * goes nearer child first, as near objects are the likelier blockers.
+ * one at a time; the nearest-hit query visits the nearer child first and
+ * skips any subtree whose box begins beyond the best hit so far; the
+ * any-hit query also goes nearer child first, as near objects are the
+ * likelier blockers.
  * Box tests treat NaN (a zero direction component on a slab's plane) as
  * "may hit", so culling is conservative.
  */
@@ -409,8 +410,10 @@ static inline void pair_entry(const bvh_node *pair, const box_ray *r,
     int a;
     for (a = 0; a < 3; a++) {
         __m128d o = _mm_set1_pd(r->origin[a]), inv = _mm_set1_pd(r->inv[a]);
-        __m128d lo = _mm_set_pd((double)b1[r->near[a]], (double)b0[r->near[a]]);
-        __m128d hi = _mm_set_pd((double)b1[r->far[a]], (double)b0[r->far[a]]);
+        __m128d lo =
+            _mm_set_pd((double)b1[r->near[a]], (double)b0[r->near[a]]);
+        __m128d hi =
+            _mm_set_pd((double)b1[r->far[a]], (double)b0[r->far[a]]);
         tn = _mm_max_pd(_mm_mul_pd(_mm_sub_pd(lo, o), inv), tn);
         tf = _mm_min_pd(_mm_mul_pd(_mm_sub_pd(hi, o), inv), tf);
     }

@@ -5,8 +5,9 @@
  * (rayo_output_refer) it is given, into a regular file (its large
  * buffer) and into a pipe (its pipe-sized one); and it reports what goes
  * wrong: no room on the device, a closed pipe, a reservation larger than
- * the buffer, a commit after bytes were lost.  It also tells a terminal from the rest
- * (rayo_output_is_terminal), on a pseudo-terminal of its own.
+ * the buffer, a commit after bytes were lost or an image abandoned.  It
+ * also tells a terminal from the rest (rayo_output_is_terminal), on a
+ * pseudo-terminal of its own.
  *
  * The expected stream is generated here from a seeded sequence and the
  * destination read back with plain read(2).
