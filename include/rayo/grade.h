@@ -27,6 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/course.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
 
@@ -69,7 +70,9 @@ typedef struct rayo_grade_exercise {
     const char *name;        /* "ej1" */
     const char *title;       /* "Ejercicio obligatorio 1: the sphere" */
     uint32_t width, height;  /* the image the program must write */
-    int check_functions;     /* the ej1 functions are checked */
+    char magic;              /* its plain Netpbm format: '1' PBM, '2' PGM,
+                                '3' PPM */
+    rayo_course_exercise course; /* its scene (course.h) */
     /* Renders the exercise's reference image into image. */
     rayo_status (*reference)(rayo_image *image, rayo_error *err);
 } rayo_grade_exercise;

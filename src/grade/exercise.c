@@ -45,7 +45,7 @@ static rayo_status reference_ej1(rayo_image *image, rayo_error *err)
 
 static const rayo_grade_exercise exercises[] = {
     {"ej1", "Ejercicio obligatorio 1: the sphere, plain PBM 640x480",
-     RAYO_SEED_WIDTH, RAYO_SEED_HEIGHT, 1, reference_ej1},
+     RAYO_SEED_WIDTH, RAYO_SEED_HEIGHT, '1', RAYO_COURSE_EJ1, reference_ej1},
 };
 
 const rayo_grade_exercise *rayo_grade_exercises(size_t *count)

@@ -115,8 +115,7 @@ static rayo_status run_steps(grade_context *ctx, const rayo_image *reference,
     memset(&image, 0, sizeof image);
     if (status != RAYO_OK || ctx->program == NULL)
         return status;
-    if (ctx->options->exercise->check_functions)
-        status = grade_step_functions(ctx, err);
+    status = grade_step_functions(ctx, err);
     if (status == RAYO_OK)
         status = grade_step_run(ctx, err);
     if (status == RAYO_OK && report->items[RAYO_GRADE_RUN].result ==
@@ -150,9 +149,6 @@ static void skip_the_rest(grade_context *ctx, rayo_error *err,
              status);
         return;
     }
-    if (!ctx->options->exercise->check_functions)
-        skip(ctx, RAYO_GRADE_FUNCTIONS, "this exercise has no functions to "
-                                        "check", err, status);
     if (r->items[RAYO_GRADE_RUN].result != RAYO_GRADE_PASS)
         skip(ctx, RAYO_GRADE_OUTPUT, "not checked: the program did not run "
                                      "to the end", err, status);
