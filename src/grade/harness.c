@@ -1,0 +1,321 @@
+/*
+ * harness.c - the shared machinery of the "functions" criterion
+ * (harness.h): generated sources, the compiler, probes, building and
+ * running the harness and reading its log.  The exercises' cases and
+ * their expected values live in functions_ej1.c, functions_ej2.c and
+ * functions_ej3.c; nothing here knows a function of the course.
+ *
+ * The compiler is trusted and runs in the current directory (as the
+ * compile step's does); the harness is the student's code and runs in
+ * the temporary directory under the program's limits.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+
+extern char **environ;
+
+#define COMPILE_SECONDS 120.0
+#define LOG_LIMIT (1u << 20)
+
+void harness_append(harness_text *t, const char *format, ...)
+{
+    va_list args;
+    int n;
+    if (t->failed)
+        return;
+    for (;;) {
+        size_t room = t->capacity - t->length;
+        va_start(args, format);
+        n = vsnprintf(t->data != NULL ? t->data + t->length : NULL, room,
+                      format, args);
+        va_end(args);
+        if (n < 0) {
+            t->failed = 1;
+            return;
+        }
+        if ((size_t)n < room) {
+            t->length += (size_t)n;
+            return;
+        }
+        if (t->capacity > ((size_t)-1) / 2 - (size_t)n - 256) {
+            t->failed = 1;
+            return;
+        }
+        {
+            size_t capacity = t->capacity * 2 + (size_t)n + 256;
+            char *grown = realloc(t->data, capacity);
+            if (grown == NULL) {
+                t->failed = 1;
+                return;
+            }
+            t->data = grown;
+            t->capacity = capacity;
+        }
+    }
+}
+
+rayo_status harness_cc(grade_context *ctx, const char *const *words,
+                       size_t count, int *ok, char **errors,
+                       rayo_error *err)
+{
+    char **argv = grade_cc_argv(ctx, words, count);
+    char *out = grade_path_join(ctx->dir, "probe.out");
+    char *errpath = grade_path_join(ctx->dir, "probe.err");
+    grade_limits limits = grade_compiler_limits(ctx->options,
+                                                COMPILE_SECONDS);
+    grade_outcome outcome;
+    size_t size;
+    rayo_status status;
+    *errors = NULL;
+    if (argv == NULL || out == NULL || errpath == NULL)
+        status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    else
+        status = grade_process_run(argv, environ, ".", out, errpath, &limits,
+                                   1, &outcome, err);
+    if (status == RAYO_OK)
+        status = grade_read_file(errpath, LOG_LIMIT, errors, &size, err);
+    if (status == RAYO_OK)
+        *ok = outcome.ending == GRADE_EXITED && outcome.status == 0;
+    free(argv);
+    free(out);
+    free(errpath);
+    return status;
+}
+
+void harness_clean(const char *in, size_t length, char *out, size_t room)
+{
+    static const char hex[] = "0123456789abcdef";
+    size_t i, n = 0;
+    if (room == 0)
+        return;
+    for (i = 0; i < length && in[i] != '\0' && n + 5 < room; i++) {
+        unsigned char c = (unsigned char)in[i];
+        if (c < 0x20 || c == 0x7f) {
+            out[n++] = '\\';
+            out[n++] = 'x';
+            out[n++] = hex[c >> 4];
+            out[n++] = hex[c & 15];
+        } else {
+            out[n++] = (char)c;
+        }
+    }
+    out[n] = '\0';
+}
+
+void harness_first_error(const char *errors, char *out, size_t room)
+{
+    const char *p = errors != NULL ? strstr(errors, "error: ") : NULL;
+    if (p == NULL) {
+        snprintf(out, room, "the compiler refused it");
+        return;
+    }
+    p += 7;
+    harness_clean(p, strcspn(p, "\n"), out, room);
+}
+
+rayo_status harness_probe(grade_context *ctx, size_t i, const char *before,
+                          const char *after, int *ok, char *reason,
+                          size_t room, rayo_error *err)
+{
+    char *path = grade_path_join(ctx->dir, "probe.c");
+    harness_text t = {NULL, 0, 0, 0};
+    char *errors = NULL;
+    const char *words[4];
+    rayo_status status;
+    *ok = 0;
+    if (path == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    harness_append(&t, "%s#include \"%s\"\n%s", before, ctx->absolute[i],
+                   after);
+    if (t.failed)
+        status = rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    else
+        status = grade_write_file(path, t.data, err);
+    free(t.data);
+    words[0] = "-std=c99";
+    words[1] = "-w";
+    words[2] = "-fsyntax-only";
+    words[3] = path;
+    if (status == RAYO_OK)
+        status = harness_cc(ctx, words, 4, ok, &errors, err);
+    if (status == RAYO_OK && !*ok)
+        harness_first_error(errors, reason, room);
+    free(errors);
+    free(path);
+    return status;
+}
+
+rayo_status harness_build(grade_context *ctx, const char *source,
+                          const char *const *extra, size_t extra_count,
+                          int *ok, char **errors, rayo_error *err)
+{
+    char *harness_c = grade_path_join(ctx->dir, "harness.c");
+    char *harness = grade_path_join(ctx->dir, "harness");
+    const char **words =
+        malloc((ctx->source_count + extra_count + 8) * sizeof *words);
+    char **objects = calloc(ctx->source_count + 1, sizeof *objects);
+    size_t i, n;
+    rayo_status status = RAYO_OK;
+    *ok = 1;
+    *errors = NULL;
+    if (source == NULL || harness_c == NULL || harness == NULL ||
+        words == NULL || objects == NULL)
+        status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    if (status == RAYO_OK)
+        status = grade_write_file(harness_c, source, err);
+    for (i = 0; i < ctx->source_count && status == RAYO_OK && *ok; i++) {
+        char name[32];
+        snprintf(name, sizeof name, "student%zu.o", i);
+        objects[i] = grade_path_join(ctx->dir, name);
+        if (objects[i] == NULL) {
+            status = rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+            break;
+        }
+        words[0] = "-std=c99";
+        words[1] = "-w";
+        words[2] = "-Dmain=rayo_student_main";
+        words[3] = "-c";
+        words[4] = "-o";
+        words[5] = objects[i];
+        words[6] = ctx->sources[i];
+        free(*errors);
+        status = harness_cc(ctx, words, 7, ok, errors, err);
+    }
+    if (status == RAYO_OK && *ok) {
+        n = 0;
+        words[n++] = "-w";
+        words[n++] = "-o";
+        words[n++] = harness;
+        words[n++] = harness_c;
+        for (i = 0; i < ctx->source_count; i++)
+            words[n++] = objects[i];
+        for (i = 0; i < extra_count; i++)
+            words[n++] = extra[i];
+        words[n++] = "-lm";
+        free(*errors);
+        status = harness_cc(ctx, words, n, ok, errors, err);
+    }
+    for (i = 0; objects != NULL && i < ctx->source_count; i++)
+        free(objects[i]);
+    free(objects);
+    free(words);
+    free(harness_c);
+    free(harness);
+    return status;
+}
+
+rayo_status harness_run(grade_context *ctx, char **log,
+                        grade_outcome *outcome, rayo_error *err)
+{
+    char *argv[2];
+    char *out = grade_path_join(ctx->dir, "harness.out");
+    char *errpath = grade_path_join(ctx->dir, "harness.err");
+    grade_limits limits = grade_run_limits(ctx->options);
+    size_t size;
+    rayo_status status = RAYO_OK;
+    *log = NULL;
+    argv[0] = grade_path_join(ctx->dir, "harness");
+    argv[1] = NULL;
+    if (argv[0] == NULL || out == NULL || errpath == NULL)
+        status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    if (status == RAYO_OK)
+        status = grade_process_run(argv, NULL, ctx->dir, out, errpath,
+                                   &limits, 0, outcome, err);
+    if (status == RAYO_OK)
+        status = grade_read_file(out, LOG_LIMIT, log, &size, err);
+    free(argv[0]);
+    free(out);
+    free(errpath);
+    return status;
+}
+
+/* The start of the line that begins with key, or NULL. */
+static const char *line_with(const char *log, const char *key)
+{
+    const char *p = log;
+    size_t n = strlen(key);
+    while (p != NULL && (p = strstr(p, key)) != NULL) {
+        if (p == log || p[-1] == '\n')
+            return p + n;
+        p += n;
+    }
+    return NULL;
+}
+
+int harness_missing(const char *log, const char *name)
+{
+    char key[80];
+    const char *p;
+    snprintf(key, sizeof key, "missing %s", name);
+    p = line_with(log, key);
+    return p != NULL && (*p == '\n' || *p == '\0');
+}
+
+int harness_result_text(const char *log, const char *name, unsigned k,
+                        char *out, size_t room)
+{
+    char key[80];
+    const char *p;
+    size_t n;
+    snprintf(key, sizeof key, "result %s %u ", name, k);
+    p = line_with(log, key);
+    if (p == NULL || room == 0)
+        return 0;
+    n = strcspn(p, "\n");
+    if (n >= room)
+        n = room - 1;
+    memcpy(out, p, n);
+    out[n] = '\0';
+    return 1;
+}
+
+int harness_result(const char *log, const char *name, unsigned k,
+                   double *values, int max)
+{
+    char line[512], *p, *end;
+    int count = 0;
+    if (!harness_result_text(log, name, k, line, sizeof line))
+        return -1;
+    p = line;
+    while (count < max) {
+        double v = strtod(p, &end);
+        if (end == p)
+            break;
+        values[count++] = v;
+        p = end;
+    }
+    return count;
+}
+
+rayo_status harness_judge_ending(grade_context *ctx, const char *log,
+                                 const grade_outcome *outcome,
+                                 harness_describe describe, rayo_error *err)
+{
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
+    const char *last = NULL, *p = log;
+    char name[64] = "", call[512] = "a function";
+    unsigned c = 0;
+    if (outcome->ending == GRADE_EXITED && outcome->status == 0)
+        return RAYO_OK;
+    while (p != NULL && (p = strstr(p, "call ")) != NULL) {
+        if (p == log || p[-1] == '\n')
+            last = p;
+        p++;
+    }
+    if (last != NULL && sscanf(last, "call %63s %u", name, &c) == 2)
+        describe(name, c, call, sizeof call);
+    if (outcome->ending == GRADE_TIMED_OUT)
+        return grade_fail(item, err, "%s did not return within %g seconds",
+                          call, ctx->options->timeout);
+    if (outcome->ending == GRADE_SIGNALED)
+        return grade_fail(item, err, "%s crashed: %s", call,
+                          grade_signal_name(outcome->status));
+    return grade_fail(item, err, "%s ended the program with exit status %d",
+                      call, outcome->status);
+}

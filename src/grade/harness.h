@@ -1,0 +1,95 @@
+/*
+ * harness.h - the machinery the "functions" criterion shares between the
+ * course's exercises: a growing text for generated C sources, running
+ * the (trusted) compiler, probing a student's file against prototypes,
+ * building a harness program around the student's objects, running it
+ * and reading what it printed.
+ *
+ * The harness protocol: before each call the generated program prints
+ * "call NAME K" and flushes, after it "result NAME K V1 V2 ..." (numbers
+ * as %.9g, or words); "missing NAME" when a weak function is absent.
+ * So a crash or a hang is pinned on the last call announced.  What the
+ * cases are and what they expect is each exercise's own business
+ * (functions_ej1.c, functions_ej2.c, functions_ej3.c).
+ *
+ * Private to src/grade; not a public interface.
+ */
+#ifndef RAYO_GRADE_HARNESS_H
+#define RAYO_GRADE_HARNESS_H
+
+#include <stddef.h>
+
+#include "grade_impl.h"
+
+#define HARNESS_REASON 400 /* room for one probe's reason */
+
+/* A growing string; failed is set once memory runs out. */
+typedef struct harness_text {
+    char *data;
+    size_t length, capacity;
+    int failed;
+} harness_text;
+
+void harness_append(harness_text *t, const char *format, ...)
+    GRADE_PRINTF(2, 3);
+
+/* Runs the compiler words (its own first) in the current directory: ok
+   when it exits 0; its standard error in *errors (allocated). */
+rayo_status harness_cc(grade_context *ctx, const char *const *words,
+                       size_t count, int *ok, char **errors,
+                       rayo_error *err);
+
+/* The compiler's first "error: " message, without the file position,
+   one line, control bytes escaped. */
+void harness_first_error(const char *errors, char *out, size_t room);
+
+/* Checks source i: before, then #include "the source", then after, with
+   -fsyntax-only.  ok when it compiles; else the first error in reason. */
+rayo_status harness_probe(grade_context *ctx, size_t i, const char *before,
+                          const char *after, int *ok, char *reason,
+                          size_t room, rayo_error *err);
+
+/* Compiles each source with main renamed to rayo_student_main, then
+   source (the harness) with them into ctx->dir/harness, with the extra
+   link words (e.g. -Wl,--wrap=realloc) before -lm.  ok when both worked;
+   else the compiler's messages in *errors. */
+rayo_status harness_build(grade_context *ctx, const char *source,
+                          const char *const *extra, size_t extra_count,
+                          int *ok, char **errors, rayo_error *err);
+
+/* Runs the harness under the program's limits: its standard output in
+   *log (allocated, NUL-terminated), how it ended in *outcome. */
+rayo_status harness_run(grade_context *ctx, char **log,
+                        grade_outcome *outcome, rayo_error *err);
+
+/* 1 when the log has "missing NAME". */
+int harness_missing(const char *log, const char *name);
+
+/* The numbers after "result NAME K ": how many were read (at most max),
+   -1 when there is no such line (the run ended before). */
+int harness_result(const char *log, const char *name, unsigned k,
+                   double *values, int max);
+
+/* The rest of the line "result NAME K ..." (into out), 0 when none. */
+int harness_result_text(const char *log, const char *name, unsigned k,
+                        char *out, size_t room);
+
+/* What a call looks like to a student: "norma(0.5, 0.5, 0.5)". */
+typedef void (*harness_describe)(const char *name, unsigned k, char *out,
+                                 size_t room);
+
+/* When the harness did not end with exit status 0: one reason naming the
+   last call announced (described by describe) and how it ended. */
+rayo_status harness_judge_ending(grade_context *ctx, const char *log,
+                                 const grade_outcome *outcome,
+                                 harness_describe describe, rayo_error *err);
+
+/* Escapes control bytes and bounds the length: for untrusted text. */
+void harness_clean(const char *in, size_t length, char *out, size_t room);
+
+/* The step for each exercise (functions_ejN.c). */
+rayo_status grade_functions_ej1(grade_context *ctx, rayo_error *err);
+rayo_status grade_functions_ej2(grade_context *ctx, rayo_error *err);
+rayo_status grade_functions_ej3(grade_context *ctx, rayo_error *err);
+
+#endif
