@@ -3,30 +3,49 @@
  * (preview.h), scaled to fit the width.
  *
  * Width: --cols N, else $COLUMNS when it is a number, else 80.  Blocks by
- * default; --braille for finer detail, --ascii for terminals without
- * Unicode.  `rayo render --preview` uses the same library call.
+ * default: gray and colour images in colour blocks when standard output
+ * is a terminal (24-bit when $COLORTERM says so, else 256 colours; none
+ * under $NO_COLOR; --color=WHEN decides otherwise), bilevel images and
+ * everything else as the black/white silhouette.  --braille for finer
+ * detail, --ascii for terminals without Unicode (both silhouettes).
+ * `rayo render --preview` draws the same picture (render_preview.c).
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <getopt.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cli.h"
+#include "render_preview.h"
 
 static void print_help(void)
 {
-    printf("usage: rayo view FILE [--cols N] [--braille | --ascii]\n\n"
+    printf("usage: rayo view FILE [--cols N] [--braille | --ascii] "
+           "[--color[=WHEN]]\n\n"
            "Shows FILE (PBM, PGM, PPM or PNG; '-' = standard input) in the "
-           "terminal, shrunk\nto fit the width: black pixels are drawn as "
-           "ink, in Unicode half blocks\n(two pixels a character cell), "
-           "Braille patterns (2x4) or ASCII ('#' black,\n'+' partly black). "
-           "Gray and colour are shown black below half the maximum.\n\n"
+           "terminal, shrunk\nto fit the width, two pixels a character "
+           "cell (Unicode half blocks).\n\n"
+           "Gray and colour images are drawn in colour, each half the mean "
+           "of the pixels it\ncovers: 24-bit colour when $COLORTERM is "
+           "'truecolor' or '24bit', else xterm's\n256 colours.  Only on a "
+           "terminal, and not when $NO_COLOR is set (--color\nchanges "
+           "that).  Otherwise, and for bilevel images, the picture is a "
+           "black/white\nsilhouette (gray and colour black below half the "
+           "maximum), black pixels drawn\nas ink: half blocks, Braille "
+           "patterns (2x4) or ASCII ('#' black, '+' partly).\n\n"
            "options:\n"
            "      --cols N     at most N characters a line (default: "
            "$COLUMNS, else 80)\n"
-           "      --braille    Braille patterns: the finest detail\n"
-           "      --ascii      plain ASCII, for terminals without Unicode\n"
+           "      --braille    Braille patterns: the finest detail "
+           "(silhouette)\n"
+           "      --ascii      plain ASCII, for terminals without Unicode "
+           "(silhouette)\n"
+           "      --color[=WHEN]  colour: auto (default: on a terminal "
+           "without $NO_COLOR),\n"
+           "                   always (also into files and pipes, e.g. "
+           "for 'less -R'), never\n"
            "  -h, --help       this help\n\n"
            "exit status: 0 success, 1 output failure, 2 unreadable input or "
            "bad options.\n");
@@ -46,6 +65,37 @@ unsigned cli_terminal_columns(void)
     return (unsigned)v;
 }
 
+rayo_preview_color cli_preview_color(FILE *stream, cli_color_when when)
+{
+    const char *no_color = getenv("NO_COLOR"), *term = getenv("COLORTERM");
+    if (when == CLI_COLOR_NEVER)
+        return RAYO_PREVIEW_COLOR_NONE;
+    if (when == CLI_COLOR_AUTO &&
+        ((no_color != NULL && *no_color != '\0') || !isatty(fileno(stream))))
+        return RAYO_PREVIEW_COLOR_NONE;
+    if (term != NULL &&
+        (strcmp(term, "truecolor") == 0 || strcmp(term, "24bit") == 0))
+        return RAYO_PREVIEW_COLOR_TRUECOLOR;
+    return RAYO_PREVIEW_COLOR_256;
+}
+
+/* --color's WHEN (none: always); 0 and a message for anything else. */
+static int parse_color(const char *text, cli_color_when *when)
+{
+    if (text == NULL || strcmp(text, "always") == 0)
+        *when = CLI_COLOR_ALWAYS;
+    else if (strcmp(text, "auto") == 0)
+        *when = CLI_COLOR_AUTO;
+    else if (strcmp(text, "never") == 0)
+        *when = CLI_COLOR_NEVER;
+    else {
+        cli_usage_error("--color: '%.40s'; expected auto, always or never",
+                        text);
+        return 0;
+    }
+    return 1;
+}
+
 int cli_print_preview(const rayo_image *image,
                       const rayo_preview_options *options, FILE *stream)
 {
@@ -62,13 +112,17 @@ int cli_print_preview(const rayo_image *image,
                                                    : "standard error");
 }
 
+/* Options into *options, colour included (for the style, cli_view
+ * looks at the image). */
 static int parse_options(int argc, char **argv,
                          rayo_preview_options *options, const char **file)
 {
+    cli_color_when when = CLI_COLOR_AUTO;
     static const struct option long_options[] = {
         {"cols", required_argument, NULL, 'c'},
         {"ascii", no_argument, NULL, 'a'},
         {"braille", no_argument, NULL, 'b'},
+        {"color", optional_argument, NULL, 'C'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
     unsigned long cols;
@@ -88,6 +142,10 @@ static int parse_options(int argc, char **argv,
         case 'b':
             options->style = RAYO_PREVIEW_BRAILLE;
             break;
+        case 'C':
+            if (!parse_color(optarg, &when))
+                return CLI_EXIT_USAGE;
+            break;
         case 'h':
             print_help();
             return -1;
@@ -98,6 +156,7 @@ static int parse_options(int argc, char **argv,
     if (argc - optind != 1)
         return cli_wrong_operands("view", argc - optind, "one FILE");
     *file = argv[optind];
+    options->color = cli_preview_color(stdout, when);
     return CLI_EXIT_OK;
 }
 
@@ -117,6 +176,11 @@ int cli_view(int argc, char **argv)
     memset(&image, 0, sizeof image);
     if (rayo_image_read_file(file, &image, NULL, &err) != RAYO_OK)
         return cli_unreadable(&err);
+    /* Colour blocks for gray and colour; a bilevel image's silhouette is
+     * already all it holds. */
+    if (options.style == RAYO_PREVIEW_BLOCKS &&
+        image.info.sample != RAYO_SAMPLE_BIT)
+        options.style = RAYO_PREVIEW_COLOR_BLOCKS;
     status = cli_print_preview(&image, &options, stdout);
     rayo_image_free(&image);
     return status;

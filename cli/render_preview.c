@@ -1,10 +1,12 @@
 /*
- * render_preview.c - the bilevel copy behind `rayo render --preview`
+ * render_preview.c - the summary behind `rayo render --preview`
  * (render_preview.h).
  *
- * Bilevel rows are copied as they are; gray and colour rows (the shaded
- * modes) are thresholded at half their maximum by rayo_image_to_bit, one
- * band at a time, exactly as `rayo view` would see the written file.
+ * Rows are added to a rayo_preview as they pass on to the writer, in the
+ * style `rayo view` would choose for the written file: silhouette blocks
+ * for bilevel images, colour blocks for gray and colour ones.  The colour
+ * mode waits for the stream, so a picture into a file or a pipe has no
+ * escape sequences, as before.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -13,8 +15,8 @@
 #include "render_preview.h"
 
 struct cli_preview {
-    rayo_image_info info; /* of the rows coming in */
-    rayo_image mask;      /* the copy */
+    rayo_preview *summary;
+    rayo_preview_options options;
     rayo_row_sink next;
     void *next_context;
 };
@@ -22,15 +24,17 @@ struct cli_preview {
 rayo_status cli_preview_create(cli_preview **preview,
                                const rayo_image_info *info, rayo_error *err)
 {
-    rayo_image_info bits = rayo_image_info_bit(info->width, info->height);
     cli_preview *p = calloc(1, sizeof *p);
     rayo_status s;
     *preview = NULL;
     if (p == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM,
                               "--preview: out of memory");
-    p->info = *info;
-    s = rayo_image_create(&p->mask, &bits, err);
+    rayo_preview_options_init(&p->options);
+    p->options.columns = cli_terminal_columns();
+    if (info->sample != RAYO_SAMPLE_BIT)
+        p->options.style = RAYO_PREVIEW_COLOR_BLOCKS;
+    s = rayo_preview_create(&p->summary, info, &p->options, err);
     if (s != RAYO_OK) {
         free(p);
         return s;
@@ -46,38 +50,13 @@ void cli_preview_forward(cli_preview *preview, rayo_row_sink next,
     preview->next_context = next_context;
 }
 
-static rayo_status copy_rows(cli_preview *p, const unsigned char *rows,
-                             size_t stride, uint32_t first_row,
-                             uint32_t count, rayo_error *err)
-{
-    rayo_image band, bits;
-    size_t n = rayo_image_info_row_bytes(&p->mask.info);
-    uint32_t i;
-    rayo_status s;
-    memset(&bits, 0, sizeof bits);
-    band.info = p->info;
-    band.info.height = count;
-    band.stride = stride;
-    band.pixels = (unsigned char *)rows; /* read only */
-    if (p->info.sample != RAYO_SAMPLE_BIT) {
-        if ((s = rayo_image_to_bit(&band, &bits, err)) != RAYO_OK)
-            return s;
-        rows = bits.pixels;
-        stride = bits.stride;
-    }
-    for (i = 0; i < count; i++)
-        memcpy(rayo_image_row(&p->mask, first_row + i), rows + i * stride,
-               n);
-    rayo_image_free(&bits);
-    return RAYO_OK;
-}
-
 rayo_status cli_preview_rows(void *preview, const unsigned char *rows,
                              size_t stride, uint32_t first_row,
                              uint32_t count, rayo_error *err)
 {
     cli_preview *p = preview;
-    rayo_status s = copy_rows(p, rows, stride, first_row, count, err);
+    rayo_status s =
+        rayo_preview_rows(p->summary, rows, stride, first_row, count, err);
     if (s != RAYO_OK || p->next == NULL)
         return s;
     return p->next(p->next_context, rows, stride, first_row, count, err);
@@ -85,16 +64,25 @@ rayo_status cli_preview_rows(void *preview, const unsigned char *rows,
 
 int cli_preview_print(const cli_preview *preview, FILE *stream)
 {
-    rayo_preview_options options;
-    rayo_preview_options_init(&options);
-    options.columns = cli_terminal_columns();
-    return cli_print_preview(&preview->mask, &options, stream);
+    rayo_preview_options options = preview->options;
+    rayo_error err;
+    char *text;
+    size_t length;
+    rayo_error_clear(&err);
+    options.color = cli_preview_color(stream, CLI_COLOR_AUTO);
+    if (rayo_preview_text(preview->summary, &options, &text, &length, NULL,
+                          NULL, &err) != RAYO_OK)
+        return cli_report(&err);
+    fwrite(text, 1, length, stream);
+    free(text);
+    return cli_flush_text(stream, stream == stdout ? "standard output"
+                                                   : "standard error");
 }
 
 void cli_preview_free(cli_preview *preview)
 {
     if (preview == NULL)
         return;
-    rayo_image_free(&preview->mask);
+    rayo_preview_free(preview->summary);
     free(preview);
 }
