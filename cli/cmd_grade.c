@@ -186,6 +186,125 @@ static int parse_request(int argc, char **argv, grade_request *req)
 
 /* ---- text ---- */
 
+/*
+ * What the report prints comes partly from outside: folder names from a
+ * class's archive, a compiler's quote of the student's source.  In the
+ * text report every such string is shown on one line as it would be
+ * typed: control bytes as \n, \t, \r or \xHH, a byte that is not
+ * valid UTF-8 as \xHH (and, in names, a backslash as \\); valid UTF-8
+ * is kept (one column per character, for the table).
+ */
+#define STUDENT_COLUMNS 40 /* the widest the table's student column gets */
+
+/* Bytes in the valid UTF-8 sequence of 2 to 4 bytes at s, else 0. */
+static size_t utf8_sequence(const unsigned char *s)
+{
+    unsigned long cp;
+    size_t n, i;
+    if (s[0] >= 0xC2 && s[0] <= 0xDF) {
+        n = 2;
+        cp = s[0] & 0x1Fu;
+    } else if (s[0] >= 0xE0 && s[0] <= 0xEF) {
+        n = 3;
+        cp = s[0] & 0x0Fu;
+    } else if (s[0] >= 0xF0 && s[0] <= 0xF4) {
+        n = 4;
+        cp = s[0] & 0x07u;
+    } else {
+        return 0;
+    }
+    for (i = 1; i < n; i++) {
+        if ((s[i] & 0xC0u) != 0x80u)
+            return 0; /* also stops at the terminating NUL */
+        cp = cp << 6 | (s[i] & 0x3Fu);
+    }
+    if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) ||
+        cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
+        return 0;
+    return n;
+}
+
+/* The character at s as shown (into text, NUL-terminated): returns the
+   bytes of s it stands for; *columns is how wide it is.  A backslash is
+   doubled only in names (so "a\\nb" and "a", newline, "b" differ); in
+   reason lines, which quote C source and shell words, it stays one. */
+static size_t escape_unit(const char *s, int names, char text[8],
+                          size_t *columns)
+{
+    const unsigned char *p = (const unsigned char *)s;
+    size_t n = p[0] >= 0x80 ? utf8_sequence(p) : 0;
+    if (n > 0) {
+        memcpy(text, s, n);
+        text[n] = '\0';
+        *columns = 1;
+        return n;
+    }
+    if (p[0] == '\n')
+        strcpy(text, "\\n");
+    else if (p[0] == '\t')
+        strcpy(text, "\\t");
+    else if (p[0] == '\r')
+        strcpy(text, "\\r");
+    else if (p[0] == '\\' && names)
+        strcpy(text, "\\\\");
+    else if (p[0] < 0x20 || p[0] >= 0x7f)
+        snprintf(text, 8, "\\x%02x", p[0]);
+    else {
+        text[0] = s[0];
+        text[1] = '\0';
+    }
+    *columns = strlen(text);
+    return 1;
+}
+
+/* Writes s escaped (names: a name, else a reason line). */
+static void print_escaped(const char *s, int names)
+{
+    while (*s != '\0') {
+        char text[8];
+        size_t columns;
+        s += escape_unit(s, names, text, &columns);
+        fputs(text, stdout);
+    }
+}
+
+/* How many columns the name s takes escaped. */
+static size_t escaped_columns(const char *s)
+{
+    size_t total = 0;
+    while (*s != '\0') {
+        char text[8];
+        size_t columns;
+        s += escape_unit(s, 1, text, &columns);
+        total += columns;
+    }
+    return total;
+}
+
+/* Writes the name s escaped in exactly width columns: padded with
+   spaces, or cut and ended with "..." when it is wider. */
+static void print_column(const char *s, size_t width)
+{
+    size_t used = 0, room = width;
+    if (escaped_columns(s) > width)
+        room = width > 3 ? width - 3 : 0;
+    while (*s != '\0') {
+        char text[8];
+        size_t columns, n = escape_unit(s, 1, text, &columns);
+        if (used + columns > room)
+            break;
+        fputs(text, stdout);
+        used += columns;
+        s += n;
+    }
+    if (*s != '\0') {
+        fputs("...", stdout);
+        used += 3;
+    }
+    for (; used < width; used++)
+        putchar(' ');
+}
+
 static void print_text(const rayo_grade_report *r)
 {
     size_t c, i, failed = 0, skipped = 0, warnings = 0;
@@ -195,10 +314,14 @@ static void print_text(const rayo_grade_report *r)
         const char *result = item->result == RAYO_GRADE_FAIL
                                  ? "FAIL"
                                  : rayo_grade_result_name(item->result);
-        printf("%-10s %-8s %s\n", rayo_grade_criterion_name(c), result,
-               item->line_count > 0 ? item->lines[0] : "");
-        for (i = 1; i < item->line_count; i++)
-            printf("%-19s %s\n", "", item->lines[i]);
+        printf("%-10s %-8s ", rayo_grade_criterion_name(c), result);
+        print_escaped(item->line_count > 0 ? item->lines[0] : "", 0);
+        putchar('\n');
+        for (i = 1; i < item->line_count; i++) {
+            printf("%-19s ", "");
+            print_escaped(item->lines[i], 0);
+            putchar('\n');
+        }
         warnings += item->warnings;
         if (item->result == RAYO_GRADE_SKIPPED)
             skipped++;
@@ -225,12 +348,21 @@ static void print_text(const rayo_grade_report *r)
 
 /* ---- JSON ---- */
 
+/* s as a JSON string: control bytes escaped, and a byte that is not
+   valid UTF-8 (a folder name in another encoding) as U+FFFD, so that
+   the document stays valid JSON. */
 static void json_string(const char *s)
 {
     putchar('"');
     for (; *s != '\0'; s++) {
         unsigned char ch = (unsigned char)*s;
-        if (ch == '"' || ch == '\\')
+        size_t n = ch >= 0x80 ? utf8_sequence((const unsigned char *)s) : 0;
+        if (n > 0) {
+            fwrite(s, 1, n, stdout);
+            s += n - 1;
+        } else if (ch >= 0x80)
+            printf("\\ufffd");
+        else if (ch == '"' || ch == '\\')
             printf("\\%c", ch);
         else if (ch == '\n')
             printf("\\n");
@@ -336,19 +468,20 @@ static int grade_single(int argc, char **argv, int first, grade_request *req)
 
 /* ---- a class ---- */
 
-static void print_table_header(void)
+static void print_table_header(size_t width)
 {
     size_t c;
-    printf("%-20s", "student");
+    print_column("student", width);
     for (c = 0; c < RAYO_GRADE_CRITERIA; c++)
         printf(" %-9s", rayo_grade_criterion_name(c));
     printf(" result\n");
 }
 
-static void print_table_row(const char *student, const rayo_grade_report *r)
+static void print_table_row(const char *student, size_t width,
+                            const rayo_grade_report *r)
 {
     size_t c;
-    printf("%-20s", student);
+    print_column(student, width);
     for (c = 0; c < RAYO_GRADE_CRITERIA; c++)
         printf(" %-9s", r->items[c].result == RAYO_GRADE_FAIL
                             ? "FAIL"
@@ -363,18 +496,32 @@ static const char *base_name(const char *path)
     return slash != NULL ? slash + 1 : path;
 }
 
+/* The student column: as wide as the widest name (escaped), at least
+   "student", at most STUDENT_COLUMNS (wider names are cut). */
+static size_t student_width(char **folders, size_t count)
+{
+    size_t width = strlen("student"), i;
+    for (i = 0; i < count; i++) {
+        size_t columns = escaped_columns(base_name(folders[i]));
+        if (columns > width)
+            width = columns;
+    }
+    return width < STUDENT_COLUMNS ? width : STUDENT_COLUMNS;
+}
+
 static int grade_each(const char *dir, grade_request *req)
 {
     char **folders = NULL;
-    size_t count = 0, i, passed = 0;
+    size_t count = 0, i, passed = 0, width;
     rayo_error err;
     rayo_error_clear(&err);
     if (rayo_grade_submissions(dir, &folders, &count, &err) != RAYO_OK)
         return cli_report(&err);
+    width = student_width(folders, count);
     if (req->json)
         printf("[");
     else
-        print_table_header();
+        print_table_header(width);
     for (i = 0; i < count && cli_interrupted() == 0; i++) {
         rayo_grade_report report;
         const char *student = base_name(folders[i]);
@@ -392,12 +539,15 @@ static int grade_each(const char *dir, grade_request *req)
                 json_string(err.message);
                 printf("}");
             } else {
-                printf("%-20s error: %s\n", student, err.message);
+                print_column(student, width);
+                printf(" error: ");
+                print_escaped(err.message, 0);
+                putchar('\n');
             }
             continue;
         }
         if (!req->json)
-            print_table_row(student, &report);
+            print_table_row(student, width, &report);
         if (rayo_grade_overall(&report) == RAYO_GRADE_PASS)
             passed++;
         rayo_grade_report_free(&report);

@@ -5,9 +5,11 @@
  * The compiler is the user's own (trusted) and runs in the current
  * directory, so its messages name the files as the user typed them; only
  * the program it makes goes into the temporary directory.  -g is added
- * so valgrind can name lines; it changes no warning.  On failure the
- * first messages are quoted, and a warning that -Werror made fatal is
- * pointed out as such.
+ * so valgrind can name lines; it changes no warning.  The report shows
+ * the command word for word as it ran.  On failure the first messages
+ * are quoted; when every error is a warning that -Werror made fatal that
+ * is pointed out as such, and when a real error is among them, that one
+ * is named as the thing to fix.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -26,49 +28,193 @@ static const char *const course_flags[] = {"-std=c99", "-Wall", "-Werror",
                                            "-pedantic"};
 #define COURSE_FLAGS (sizeof course_flags / sizeof course_flags[0])
 
-/* The command as a student would type it, for the report. */
-static rayo_status say_command(grade_context *ctx, rayo_grade_item *item,
-                               rayo_error *err)
+#define SHOWN_COMMAND 1000 /* characters of the compile line shown */
+#define SHOWN_ERROR 300    /* characters of a quoted error line */
+
+/* Counts c and stores it while there is room: *n past room - 1 means
+   the text was cut. */
+static void put(char *buffer, size_t room, size_t *n, char c)
 {
-    char sources[400];
-    size_t i, n = 0;
-    sources[0] = '\0';
-    for (i = 0; i < ctx->source_count && n < sizeof sources; i++)
-        n += (size_t)snprintf(sources + n, sizeof sources - n, "%s%s",
-                              i > 0 ? " " : "", ctx->sources[i]);
-    return grade_say(item, err, "%s -std=c99 -Wall -Werror -pedantic -o "
-                                "programa %s%s -lm",
-                     ctx->cc[0], sources,
-                     n >= sizeof sources ? "..." : "");
+    if (*n + 1 < room)
+        buffer[*n] = c;
+    (*n)++;
 }
 
-/* The text after "error: " on the first line that has it, or NULL. */
-static const char *werror_hint(const char *text, size_t *length)
+static void put_text(char *buffer, size_t room, size_t *n, const char *s)
 {
-    const char *p = strstr(text, "[-Werror");
-    const char *start;
-    if (p == NULL)
+    for (; *s != '\0'; s++)
+        put(buffer, room, n, *s);
+}
+
+/*
+ * One word of the command, as a shell reads it back: bare when it holds
+ * only characters no shell treats specially, else in single quotes,
+ * else (control bytes) in $'...' with the bytes escaped.
+ */
+static void put_word(char *buffer, size_t room, size_t *n, const char *word)
+{
+    static const char safe[] = "abcdefghijklmnopqrstuvwxyz"
+                               "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                               "0123456789_@%+=:,./-";
+    const unsigned char *p;
+    int control = 0;
+    if (word[0] != '\0' && strspn(word, safe) == strlen(word)) {
+        put_text(buffer, room, n, word);
+        return;
+    }
+    for (p = (const unsigned char *)word; *p != '\0'; p++)
+        if (*p < 0x20 || *p == 0x7f)
+            control = 1;
+    if (!control) {
+        put(buffer, room, n, '\'');
+        for (p = (const unsigned char *)word; *p != '\0'; p++) {
+            if (*p == '\'')
+                put_text(buffer, room, n, "'\\''");
+            else
+                put(buffer, room, n, (char)*p);
+        }
+        put(buffer, room, n, '\'');
+        return;
+    }
+    put_text(buffer, room, n, "$'");
+    for (p = (const unsigned char *)word; *p != '\0'; p++) {
+        char escaped[8];
+        if (*p == '\n')
+            put_text(buffer, room, n, "\\n");
+        else if (*p == '\t')
+            put_text(buffer, room, n, "\\t");
+        else if (*p == '\\' || *p == '\'') {
+            put(buffer, room, n, '\\');
+            put(buffer, room, n, (char)*p);
+        } else if (*p < 0x20 || *p == 0x7f) {
+            snprintf(escaped, sizeof escaped, "\\x%02x", *p);
+            put_text(buffer, room, n, escaped);
+        } else
+            put(buffer, room, n, (char)*p);
+    }
+    put(buffer, room, n, '\'');
+}
+
+/*
+ * The command that ran, word for word, for the report: the compiler's
+ * own words (all of --cc or $CC), the course's flags, -g, and the
+ * sources as given.  One exception: the program it makes is in a
+ * temporary directory that is gone when the student reads this, so that
+ * word is shown as "programa", the name a student would give it.
+ */
+static rayo_status say_command(grade_context *ctx, rayo_grade_item *item,
+                               char *const *argv, rayo_error *err)
+{
+    char line[SHOWN_COMMAND + 1];
+    size_t i, n = 0;
+    for (i = 0; argv[i] != NULL; i++) {
+        if (i > 0)
+            put(line, sizeof line, &n, ' ');
+        put_word(line, sizeof line, &n,
+                 argv[i] == ctx->program ? "programa" : argv[i]);
+    }
+    if (n >= sizeof line) {
+        n = sizeof line - 4;
+        memcpy(line + n, "...", 3);
+        n += 3;
+    }
+    line[n] = '\0';
+    return grade_say(item, err, "%s", line);
+}
+
+/* The line at p, without its newline: its start and length. */
+static size_t line_at(const char *text, const char *p, const char **start)
+{
+    while (p > text && p[-1] != '\n')
+        p--;
+    *start = p;
+    return strcspn(p, "\n");
+}
+
+/*
+ * The compiler's error lines (those with "error: " in them, as gcc and
+ * clang write "FILE:LINE:COL: error: ..." and "fatal error: ..."), told
+ * apart: *werror the first that -Werror made of a warning ("[-Werror"
+ * on the line), *plain the first that is an error of its own.  Each is
+ * the start of its line, or NULL when there is none.
+ */
+static void find_errors(const char *text, const char **werror,
+                        const char **plain)
+{
+    const char *p = text;
+    *werror = NULL;
+    *plain = NULL;
+    while (*p != '\0') {
+        size_t length = strcspn(p, "\n");
+        const char *mark = strstr(p, "error: ");
+        if (mark != NULL && (size_t)(mark - p) < length) {
+            const char *flag = strstr(p, "[-Werror");
+            int is_werror = flag != NULL && (size_t)(flag - p) < length;
+            if (is_werror && *werror == NULL)
+                *werror = p;
+            if (!is_werror && *plain == NULL)
+                *plain = p;
+        }
+        p += length;
+        if (*p == '\n')
+            p++;
+    }
+}
+
+/* The text between "error: " and " [-Werror..." on the line at start. */
+static const char *werror_hint(const char *start, size_t *length)
+{
+    const char *end = start + strcspn(start, "\n");
+    const char *flag = strstr(start, "[-Werror");
+    const char *text = strstr(start, "error: ");
+    if (flag == NULL || text == NULL || flag > end || text > flag)
         return NULL;
-    start = p;
-    while (start > text && start[-1] != '\n')
-        start--;
-    start = strstr(start, "error: ");
-    if (start == NULL || start > p)
-        return NULL;
-    start += 7;
-    *length = (size_t)(p - start);
-    while (*length > 0 && start[*length - 1] == ' ')
+    text += 7;
+    *length = (size_t)(flag - text);
+    while (*length > 0 && text[*length - 1] == ' ')
         (*length)--;
-    return start;
+    return text;
+}
+
+/*
+ * The hint after the quote: when every error is a warning -Werror made
+ * fatal, that the course wants code without warnings; when a plain error
+ * is among them, that this one (quoted, as it may be past the quoted
+ * lines) is the thing to fix: the warnings alone would not stop it.
+ */
+static rayo_status explain_errors(rayo_grade_item *item, const char *errors,
+                                  rayo_error *err)
+{
+    const char *werror, *plain, *line;
+    size_t length = 0;
+    find_errors(errors, &werror, &plain);
+    if (werror == NULL)
+        return RAYO_OK;
+    if (plain == NULL) {
+        const char *hint = werror_hint(werror, &length);
+        if (hint == NULL)
+            return RAYO_OK;
+        return grade_say(item, err, "a warning (%.*s) that -Werror turns "
+                                    "into an error: the course requires "
+                                    "code without warnings",
+                         (int)length, hint);
+    }
+    length = line_at(errors, plain, &line);
+    while (length > 0 && (line[0] == ' ' || line[0] == '\t')) {
+        line++;
+        length--;
+    }
+    return grade_say(item, err, "the first real error, not a warning, is "
+                                "the one to fix first: %.*s%s",
+                     (int)(length > SHOWN_ERROR ? SHOWN_ERROR : length),
+                     line, length > SHOWN_ERROR ? "..." : "");
 }
 
 static rayo_status explain_failure(grade_context *ctx, const char *errors,
                                    const grade_outcome *outcome,
-                                   rayo_error *err)
+                                   char *const *argv, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_COMPILE];
-    size_t length = 0;
-    const char *hint = werror_hint(errors, &length);
     rayo_status status;
     if (outcome->ending == GRADE_TIMED_OUT)
         status = grade_fail(item, err, "the compiler did not finish in "
@@ -78,13 +224,10 @@ static rayo_status explain_failure(grade_context *ctx, const char *errors,
                                        "flags; the compiler says:");
     if (status == RAYO_OK)
         status = grade_quote(item, errors, QUOTED_LINES, err);
-    if (status == RAYO_OK && hint != NULL)
-        status = grade_say(item, err, "a warning (%.*s) that -Werror turns "
-                                      "into an error: the course requires "
-                                      "code without warnings",
-                           (int)length, hint);
     if (status == RAYO_OK)
-        status = say_command(ctx, item, err);
+        status = explain_errors(item, errors, err);
+    if (status == RAYO_OK)
+        status = say_command(ctx, item, argv, err);
     return status;
 }
 
@@ -145,16 +288,16 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
         goto done;
     if (outcome.ending == GRADE_EXITED && outcome.status == 0) {
         item->result = RAYO_GRADE_PASS;
-        status = say_command(ctx, item, err);
+        status = say_command(ctx, item, argv, err);
         if (status == RAYO_OK && errors[0] != '\0')
             status = grade_say(item, err, "warning: the compiler printed "
                                           "messages but succeeded:");
         if (status == RAYO_OK && errors[0] != '\0')
             status = grade_quote(item, errors, QUOTED_LINES, err);
     } else {
+        status = explain_failure(ctx, errors, &outcome, argv, err);
         free(ctx->program);
         ctx->program = NULL;
-        status = explain_failure(ctx, errors, &outcome, err);
     }
 done:
     free(errors);

@@ -10,6 +10,13 @@
  * the time (memcheck is that much slower); memcheck writes its log into
  * the temporary directory and this file reads the log's words, not its
  * exit status.  Skipped when valgrind is not installed.
+ *
+ * Where the frame valgrind names is one of the constructors exercise 3's
+ * statement gives (esfera_crear, luz_crear, arreglo_agregar), the
+ * mistake is also said in the statement's terms: which destructor was
+ * not called, or that arreglo_agregar writes past the end of v.  The
+ * explanations go by the frame's function name, so they apply to any
+ * exercise whose program has those functions (ej1's have none).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -21,6 +28,31 @@
 
 #define SLOWDOWN 10.0
 #define SHOWN_ERRORS 4
+
+/* A statement's constructor, and what a leak of its blocks means. */
+typedef struct constructor_leak {
+    const char *function;
+    const char *explanation;
+} constructor_leak;
+
+static const constructor_leak constructor_leaks[] = {
+    {"esfera_crear", "spheres made by esfera_crear are never destroyed: "
+                     "call esfera_destruir on each before freeing the "
+                     "array"},
+    {"luz_crear", "lights made by luz_crear are never destroyed: call "
+                  "luz_destruir on each before freeing the array"},
+    {"arreglo_agregar", "the arrays' v is never freed: free each array's "
+                        "v after destroying its elements"}};
+#define CONSTRUCTOR_LEAKS \
+    (sizeof constructor_leaks / sizeof constructor_leaks[0])
+
+/* 1 when the frame "name (file.c:12)" is in the function called name. */
+static int frame_is(const char *frame, const char *name)
+{
+    size_t n = strlen(name);
+    return strncmp(frame, name, n) == 0 &&
+           (frame[n] == ' ' || frame[n] == '\0');
+}
 
 static const char *const error_kinds[] = {
     "Invalid read of size", "Invalid write of size", "Invalid free",
@@ -118,12 +150,43 @@ static rayo_status report_errors(rayo_grade_item *item, const char *log,
                 status = grade_fail(item, err, "%s, at %s", line, frame);
             else
                 status = grade_fail(item, err, "%s", line);
+            if (status == RAYO_OK && frame_is(frame, "arreglo_agregar") &&
+                strncmp(line, "Invalid write", 13) == 0)
+                status = grade_say(item, err, "a write past the end of v: "
+                                              "grow it to n + 1 elements "
+                                              "before writing v[n]");
             break;
         }
     }
     if (status == RAYO_OK && *count > SHOWN_ERRORS)
         status = grade_say(item, err, "... and %u more errors",
                            *count - SHOWN_ERRORS);
+    return status;
+}
+
+/* For each lost block made by one of the statement's constructors,
+   once, what was not destroyed or freed. */
+static rayo_status explain_constructor_leaks(rayo_grade_item *item,
+                                             const char *log,
+                                             rayo_error *err)
+{
+    static const char record_words[] = " lost in loss record";
+    int said[CONSTRUCTOR_LEAKS] = {0};
+    const char *p = log;
+    rayo_status status = RAYO_OK;
+    while (status == RAYO_OK && (p = strstr(p, record_words)) != NULL) {
+        char frame[512];
+        size_t k;
+        first_frame(p, frame, sizeof frame);
+        p += sizeof record_words - 1;
+        for (k = 0; k < CONSTRUCTOR_LEAKS && status == RAYO_OK; k++) {
+            if (said[k] || !frame_is(frame, constructor_leaks[k].function))
+                continue;
+            said[k] = 1;
+            status = grade_say(item, err, "%s",
+                               constructor_leaks[k].explanation);
+        }
+    }
     return status;
 }
 
@@ -156,6 +219,8 @@ static rayo_status report_leaks(rayo_grade_item *item, const char *log,
             status = grade_say(item, err, "the biggest leak was allocated "
                                           "in %s",
                                frame);
+        if (status == RAYO_OK)
+            status = explain_constructor_leaks(item, log, err);
     }
     bytes = leak_bytes(log, "still reachable", &blocks);
     if (status == RAYO_OK && bytes > 0)

@@ -1,0 +1,23 @@
+/*
+ * leak_array.c - destroys every sphere and light but never frees the
+ * arrays' v, which arreglo_agregar grew with realloc.
+ */
+#include "escena.c"
+
+int main(void)
+{
+    arreglo_t esferas = {NULL, 0}, luces = {NULL, 0};
+    size_t i;
+    vector_t o = {0, 0, 1};
+    color_t c = {1, 1, 1};
+    if (!arreglo_agregar(&esferas, esfera_crear(o, 1, c, 0.2f, 0.8f)) ||
+        !arreglo_agregar(&luces, luz_crear(o, c, true)))
+        return 1;
+    for (i = 0; i < esferas.n; i++)
+        esfera_destruir(esferas.v[i]);
+    for (i = 0; i < luces.n; i++)
+        luz_destruir(luces.v[i]);
+    esferas.v = NULL;
+    luces.v = NULL;
+    return 0;
+}
