@@ -36,6 +36,7 @@
 #include "rayo/compare.h"
 #include "rayo/preview.h"
 
+#include "rayo/course.h"
 #include "rayo/grade.h"
 #include "rayo/pbm_check.h"
 

@@ -1,0 +1,226 @@
+/*
+ * course.c - the course's exercises by name, which mistakes each can
+ * show, what to tell a student about each, and rayo_course_render, which
+ * sends the correct image to the renderer (course_exact.c) and a
+ * mistake's to the student model (course_student.c).
+ *
+ * The texts are one sentence each, in the student's terms, naming the
+ * formula or the statement's line: they go into JSON and one-line
+ * reports as they are, so they hold no newline, double quote or
+ * backslash (t_course checks).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "course_impl.h"
+
+static const char *const exercise_names[RAYO_COURSE_EXERCISES] = {
+    "ej1", "ej2", "ej3"};
+
+static const char *const mistake_names[RAYO_MISTAKE_COUNT] = {
+    "none",
+    "no-shadows",
+    "self-shadow",
+    "no-ambient",
+    "ambient-not-absorbed",
+    "light-reversed",
+    "no-ln-test",
+    "wrapped",
+    "first-sphere",
+    "far-root",
+    "point-as-directional",
+    "ka-kd-swapped",
+    "unnormalised-normal",
+    "unnormalised-light",
+};
+
+/*
+ * EJ2's sentences; NULL where the mistake does not apply.  FIRST_SPHERE
+ * does not: in scene 2 the first sphere of the array a ray meets is
+ * always the nearest (the student model's image is the correct one, not
+ * a pixel differs), so no image can show it.
+ */
+static const char *const ej2_texts[RAYO_MISTAKE_COUNT] = {
+    "no mistake: each pixel is I = IA + II (L.N) at the nearest sphere "
+    "when L.N > 0 and no other sphere lies on the ray from P towards L, "
+    "else IA, and 0 where the ray meets no sphere",
+    "there are no shadows: II (L.N) counts only when no other sphere lies "
+    "on the ray from P towards L, so test every other sphere with "
+    "distancia_esfera from P along L and give IA when one is hit",
+    "the lit side is speckled with shadow: the shadow ray from P also "
+    "tests the sphere P lies on, whose root near t = 0 counts as a hit "
+    "as rounding falls; skip that sphere (no OTHER sphere on the ray "
+    "from P towards L)",
+    "the ambient term is missing: I = IA + II (L.N) where lit and I = IA "
+    "where not, so the unlit parts of the spheres must be IA, not black",
+    "the spheres are lit from the wrong side: L is the direction from P "
+    "towards the light, luz as given, not its negative, both in L.N and "
+    "in the shadow ray",
+    "the side facing away from the light is darker than IA: II (L.N) is "
+    "added only when L.N > 0, and a negative L.N must give I = IA",
+    "the brightest parts turn black: values of I above 255 must become "
+    "255 before the conversion to an integer, not wrap around 256",
+    NULL, /* FIRST_SPHERE: see below */
+    "the spheres show their far side: t = beta - sqrt(delta) when that "
+    "is positive, and beta + sqrt(delta) only when it is not",
+    NULL,
+    NULL,
+    "the shading is wrong in brightness: N = (P - C) / r must be the unit "
+    "normal in I = IA + II (L.N), with normal_esfera dividing by the "
+    "radius",
+    NULL,
+};
+
+/* EJ3's sentences; NULL where the mistake does not apply. */
+static const char *const ej3_texts[RAYO_MISTAKE_COUNT] = {
+    "no mistake: each pixel is C = Ia ka + sum delta_i Ii kd (Li.N) at "
+    "the nearest sphere, then C (x) M, each channel above 1 becoming 1 "
+    "and the byte the integer part of 255 c",
+    "there are no shadows: a light counts only when no other sphere lies "
+    "on the ray from P towards it (delta_i in C = Ia ka + sum delta_i Ii "
+    "kd (Li.N))",
+    "the lit side is speckled with shadow: the shadow ray from P also "
+    "tests the sphere P lies on, whose root near t = 0 counts as a hit as "
+    "rounding falls; delta_i asks whether another sphere lies on the ray "
+    "from P towards light i",
+    "the ambient term is missing: C = Ia ka + sum delta_i Ii kd (Li.N) "
+    "starts at Ia ka, so the unlit parts must not be black",
+    "the ambient light is not tinted by the sphere's colour: Ia ka "
+    "belongs in C before the product C (x) M, not added after it",
+    "the spheres are lit from the wrong side: Li points from P towards "
+    "light i, normalise(posicion - P) for a point light and the given "
+    "direction for a directional one, not their negatives",
+    "the sides facing away from a light are darkened: a light counts only "
+    "when Li.N > 0 (delta_i = 0 otherwise), so a negative Li.N must add "
+    "nothing to C",
+    "the brightest channels wrap around to dark: a channel above 1 must "
+    "become 1 (printed as 255) before the byte, the integer part of "
+    "255 c, is taken",
+    "a farther sphere covers a nearer one: the pixel shows the sphere "
+    "with the smallest t that esfera_distancia returns, not the first "
+    "one of the array the ray meets",
+    "the spheres show their far side: t = beta - sqrt(delta) when that "
+    "is positive, and beta + sqrt(delta) only when it is not",
+    "the point lights are used as directions: for a light with "
+    "es_puntual, Li = normalise(posicion - P), computed at each P",
+    "ka and kd are swapped: C = Ia ka + sum delta_i Ii kd (Li.N), ka with "
+    "the ambient light and kd with each light",
+    "the shading is wrong in brightness: N = (P - C) / r must be the unit "
+    "normal in (Li.N), the one esfera_distancia returns",
+    "the point lights are too bright: Li = normalise(posicion - P) must "
+    "be a unit vector, both in (Li.N) and in the shadow ray",
+};
+
+static const char ej1_text[] =
+    "no mistake: a pixel is black exactly where its ray meets the sphere, "
+    "as intersecta_esfera tests with (C.d)^2 - C.C + R^2 >= 0";
+
+void rayo_course_options_init(rayo_course_options *options)
+{
+    options->mistake = RAYO_MISTAKE_NONE;
+    options->literal_rows = 0;
+    options->focal_scale = 1.0;
+}
+
+rayo_course_exercise rayo_course_find(const char *name)
+{
+    unsigned i;
+    if (name != NULL)
+        for (i = 0; i < RAYO_COURSE_EXERCISES; i++)
+            if (strcmp(exercise_names[i], name) == 0)
+                return (rayo_course_exercise)i;
+    return RAYO_COURSE_EXERCISES;
+}
+
+const char *rayo_course_name(rayo_course_exercise exercise)
+{
+    if ((unsigned)exercise >= RAYO_COURSE_EXERCISES)
+        return NULL;
+    return exercise_names[exercise];
+}
+
+const char *rayo_course_mistake_name(rayo_course_mistake mistake)
+{
+    if ((unsigned)mistake >= RAYO_MISTAKE_COUNT)
+        return NULL;
+    return mistake_names[mistake];
+}
+
+const char *rayo_course_mistake_text(rayo_course_exercise exercise,
+                                     rayo_course_mistake mistake)
+{
+    if (!rayo_course_mistake_applies(exercise, mistake))
+        return NULL;
+    switch (exercise) {
+    case RAYO_COURSE_EJ1:
+        return ej1_text;
+    case RAYO_COURSE_EJ2:
+        return ej2_texts[mistake];
+    case RAYO_COURSE_EJ3:
+        return ej3_texts[mistake];
+    case RAYO_COURSE_EXERCISES:
+        break;
+    }
+    return NULL;
+}
+
+int rayo_course_mistake_applies(rayo_course_exercise exercise,
+                                rayo_course_mistake mistake)
+{
+    if ((unsigned)mistake >= RAYO_MISTAKE_COUNT)
+        return 0;
+    switch (exercise) {
+    case RAYO_COURSE_EJ1:
+        return mistake == RAYO_MISTAKE_NONE;
+    case RAYO_COURSE_EJ2:
+        return ej2_texts[mistake] != NULL;
+    case RAYO_COURSE_EJ3:
+        return 1;
+    case RAYO_COURSE_EXERCISES:
+        break;
+    }
+    return 0;
+}
+
+rayo_status rayo_course_options_check(const rayo_course_options *options,
+                                      rayo_error *err)
+{
+    if (!(options->focal_scale > 0.0) || !isfinite(options->focal_scale))
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "course: focal scale %g is not a finite "
+                              "number > 0",
+                              options->focal_scale);
+    return RAYO_OK;
+}
+
+rayo_status rayo_course_render(rayo_course_exercise exercise,
+                               const rayo_course_options *options,
+                               rayo_image *image, rayo_error *err)
+{
+    rayo_course_options defaults;
+    rayo_status status;
+    if (options == NULL) {
+        rayo_course_options_init(&defaults);
+        options = &defaults;
+    }
+    if ((unsigned)exercise >= RAYO_COURSE_EXERCISES)
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "course: no exercise number %d",
+                              (int)exercise);
+    if (!rayo_course_mistake_applies(exercise, options->mistake)) {
+        const char *name = rayo_course_mistake_name(options->mistake);
+        if (name == NULL)
+            return rayo_error_set(err, RAYO_ERR_INVALID,
+                                  "course: no mistake number %d",
+                                  (int)options->mistake);
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "course: the mistake %s does not apply to %s",
+                              name, exercise_names[exercise]);
+    }
+    status = rayo_course_options_check(options, err);
+    if (status != RAYO_OK)
+        return status;
+    if (options->mistake == RAYO_MISTAKE_NONE)
+        return rayo_course_render_exact(exercise, options, image, err);
+    return rayo_course_render_student(exercise, options, image, err);
+}

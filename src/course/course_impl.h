@@ -1,0 +1,83 @@
+/*
+ * course_impl.h - what the files of src/course share: the three
+ * exercises' scenes as constant data, the exact render through the
+ * library's renderer, and the model of a student's program.  Private to
+ * the library (tests include it to reach the model without a mistake).
+ *
+ * course_scenes.c holds the numbers and builds rayo scenes from them;
+ * course_exact.c renders those with rayo_render_image; course_student*.c
+ * are the student's program, in float, with one mistake switched on.
+ */
+#ifndef RAYO_COURSE_IMPL_H
+#define RAYO_COURSE_IMPL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/camera.h"
+#include "rayo/course.h"
+#include "rayo/render.h"
+#include "rayo/scene.h"
+
+/* Every exercise's image is this size, fov 90, camera at the origin. */
+#define RAYO_COURSE_WIDTH 640u
+#define RAYO_COURSE_HEIGHT 480u
+#define RAYO_COURSE_FOV 90.0
+
+/* A sphere of the statement: centre, radius, colour M, ka, kd (EJ1 and
+   EJ2 spheres are white with ka = kd = 1, which their models ignore). */
+typedef struct rayo_course_ball {
+    double center[3];
+    double radius;
+    double color[3];
+    double ka, kd;
+} rayo_course_ball;
+
+/* A light: a direction towards it (point 0) or its position (point 1). */
+typedef struct rayo_course_lamp {
+    int point;
+    double vector[3];
+    double color[3];
+} rayo_course_lamp;
+
+/* One exercise's scene: EJ2 gives levels (IA = ambient[0] = 5, II =
+   the light's color[0] = 255), EJ3 colours in [0, 1]. */
+typedef struct rayo_course_data {
+    const rayo_course_ball *balls; /* in the statement's array order */
+    size_t ball_count;
+    const rayo_course_lamp *lamps;
+    size_t lamp_count;
+    double ambient[3];
+    rayo_shade_mode shade; /* hit, course-gray or course-color */
+} rayo_course_data;
+
+/* The exercise's data; NULL for RAYO_COURSE_EXERCISES or beyond. */
+const rayo_course_data *rayo_course_data_of(rayo_course_exercise exercise);
+
+/* A new, prepared rayo scene of the exercise (free it with
+   rayo_scene_free). */
+rayo_status rayo_course_scene_build(rayo_course_exercise exercise,
+                                    rayo_scene **scene, rayo_error *err);
+
+/* RAYO_ERR_INVALID unless focal_scale is a finite number > 0. */
+rayo_status rayo_course_options_check(const rayo_course_options *options,
+                                      rayo_error *err);
+
+/*
+ * The renderer's image of the exercise with options' literal_rows and
+ * focal_scale (its mistake is ignored): course_exact.c.
+ */
+rayo_status rayo_course_render_exact(rayo_course_exercise exercise,
+                                     const rayo_course_options *options,
+                                     rayo_image *image, rayo_error *err);
+
+/*
+ * The student model's image of EJ2 or EJ3 with options' mistake (NONE
+ * too), literal_rows and focal_scale: course_student.c.  The caller has
+ * checked that the mistake applies.
+ */
+rayo_status rayo_course_render_student(rayo_course_exercise exercise,
+                                       const rayo_course_options *options,
+                                       rayo_image *image, rayo_error *err);
+
+#endif
