@@ -166,7 +166,7 @@ static void test_formats(void)
 
     check("P6\n4 2\n255\n0000000000000000000000000000000000000000000000"
           "000000000000000000000000000000000000000000000000\n", 4, 2, &o);
-    is_int(o.item.line_count, 1, "P6: no line-length warning on binary "
+    is_int(o.item.line_count, 1, "P6: no line-length note on binary "
                                  "data");
     release(&o);
 }
@@ -214,11 +214,46 @@ static void test_lines(void)
     strcat(text, "\n");
     check(text, 80, 1, &o);
     is_int(o.item.result, RAYO_GRADE_PASS, "an 80-character line passes");
-    is_int(o.item.warnings, 1, "... with one warning");
-    ok(says(&o, "warning: 1 line is longer than 70 characters (the "
+    is_int(o.item.warnings, 0, "... with no warning (layout is free)");
+    ok(says(&o, "note: 1 line is longer than 70 characters (the "
                 "longest, line 3, has 80)"),
-       "... naming the line and its length");
+       "... but a note naming the line and its length");
+    is_int(o.item.line_count, 2, "... beside the summary");
     release(&o);
+
+    strcpy(text, "P1\n70 1\n");
+    memset(text + 8, '0', 70);
+    text[78] = '\0';
+    check(text, 70, 1, &o);
+    is_int(o.item.line_count, 1, "a 70-character line: no note");
+    release(&o);
+}
+
+/* rayo_pbm_check is rayo_pnm_check with '1': the same lines. */
+static void test_pnm_entry(void)
+{
+    static const char *const inputs[] = {
+        "P1\n4 2\n0101\n1010\n", "p1\n4x2\n0121\n", "P2\n4 2\n255\n",
+        "", "P1\n4 2\n0101\n# fila 2\n1010 1\n"};
+    size_t i, j;
+    for (i = 0; i < sizeof inputs / sizeof inputs[0]; i++) {
+        outcome a, b;
+        rayo_error err;
+        int same;
+        check(inputs[i], 4, 2, &a);
+        memset(&b, 0, sizeof b);
+        b.status = rayo_pnm_check(inputs[i], strlen(inputs[i]), '1', 4, 2,
+                                  &b.item, &b.image, &err);
+        same = a.status == b.status && a.item.result == b.item.result &&
+               a.item.line_count == b.item.line_count &&
+               (a.image.pixels == NULL) == (b.image.pixels == NULL);
+        for (j = 0; same && j < a.item.line_count; j++)
+            same = strcmp(a.item.lines[j], b.item.lines[j]) == 0;
+        ok(same, "input %zu: rayo_pnm_check '1' says what rayo_pbm_check "
+                 "says", i);
+        release(&a);
+        release(&b);
+    }
 }
 
 int main(void)
@@ -228,5 +263,6 @@ int main(void)
     test_formats();
     test_raster();
     test_lines();
+    test_pnm_entry();
     return tap_done();
 }

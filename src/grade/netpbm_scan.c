@@ -1,0 +1,314 @@
+/*
+ * netpbm_scan.c - the parts of the strict Netpbm checkers that do not
+ * depend on the raster (netpbm_scan.h): positions, quotes, the magic
+ * number, the dimensions, the count verdict and the line-length note.
+ *
+ * Messages name the format the exercise asks for (netpbm_kind), so the
+ * P1 checker says exactly what it said before P2 and P3 joined it.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "rayo/limits.h"
+
+#include "netpbm_scan.h"
+
+#define NETPBM_LINE_LIMIT 70
+
+static const netpbm_kind kinds[] = {
+    {'1', "PBM", "digits", "imagen.pbm", 1},
+    {'2', "PGM", "numbers", "imagen.pgm", 1},
+    {'3', "PPM", "numbers", "imagen.ppm", 3},
+};
+
+const netpbm_kind *netpbm_kind_of(char magic)
+{
+    size_t i;
+    for (i = 0; i < sizeof kinds / sizeof kinds[0]; i++)
+        if (kinds[i].magic == magic)
+            return &kinds[i];
+    return NULL;
+}
+
+void netpbm_where(const netpbm_scan *s, size_t offset, unsigned long *line,
+                  unsigned long *column)
+{
+    size_t i;
+    *line = 1;
+    *column = 1;
+    for (i = 0; i < offset && i < s->size; i++) {
+        if (s->data[i] == '\n') {
+            (*line)++;
+            *column = 1;
+        } else {
+            (*column)++;
+        }
+    }
+}
+
+void netpbm_excerpt(const netpbm_scan *s, size_t offset, size_t length,
+                    char *out, size_t room)
+{
+    size_t i, n = 0;
+    if (length > 16)
+        length = 16;
+    for (i = offset; i < s->size && i < offset + length && n + 5 < room;
+         i++) {
+        unsigned char c = s->data[i];
+        if (c == '\n')
+            n += (size_t)snprintf(out + n, room - n, "\\n");
+        else if (c == '\r')
+            n += (size_t)snprintf(out + n, room - n, "\\r");
+        else if (c == '\t')
+            n += (size_t)snprintf(out + n, room - n, "\\t");
+        else if (c >= 32 && c < 127)
+            out[n++] = (char)c;
+        else
+            n += (size_t)snprintf(out + n, room - n, "\\x%02x", c);
+    }
+    out[n] = '\0';
+}
+
+void netpbm_skip_header_space(netpbm_scan *s)
+{
+    while (s->pos < s->size) {
+        int c = netpbm_peek(s);
+        if (c == '#') {
+            while (s->pos < s->size && s->data[s->pos] != '\n')
+                s->pos++;
+        } else if (netpbm_is_space(c)) {
+            s->pos++;
+        } else {
+            break;
+        }
+    }
+}
+
+int netpbm_read_number(netpbm_scan *s, unsigned long *value)
+{
+    size_t start = s->pos;
+    *value = 0;
+    while (netpbm_is_digit(netpbm_peek(s))) {
+        if (*value < 100000000ul)
+            *value = *value * 10 + (unsigned long)(netpbm_peek(s) - '0');
+        s->pos++;
+    }
+    return s->pos > start;
+}
+
+const char *netpbm_format_name(const unsigned char *m)
+{
+    if (m[0] != 'P' && m[0] != 'p')
+        return NULL;
+    switch (m[1]) {
+    case '1': return "plain PBM (black and white)";
+    case '2': return "plain PGM (gray)";
+    case '3': return "plain PPM (colour)";
+    case '4': return "raw PBM (binary)";
+    case '5': return "raw PGM (gray, binary)";
+    case '6': return "raw PPM (colour, binary)";
+    }
+    return NULL;
+}
+
+void netpbm_refuse_other(netpbm_scan *s, const netpbm_kind *kind)
+{
+    const unsigned char *m = s->data + s->pos;
+    NETPBM_FAIL(s, "the magic number is '%c%c', %s; the exercise asks for "
+                   "plain %s, 'P%c'",
+                m[0], m[1], netpbm_format_name(m), kind->name, kind->magic);
+}
+
+netpbm_magic netpbm_check_magic(netpbm_scan *s, const netpbm_kind *kind)
+{
+    static const unsigned char png[4] = {0x89, 'P', 'N', 'G'};
+    const unsigned char *m;
+    char seen[80];
+    size_t start = 0;
+    while (start < s->size && netpbm_is_space(s->data[start]))
+        start++;
+    if (start > 0 && start + 1 < s->size &&
+        (s->data[start] == 'P' || s->data[start] == 'p'))
+        NETPBM_FAIL(s, "the output begins with %zu whitespace character%s "
+                       "before the magic number; a %s file must begin "
+                       "with 'P%c' itself",
+                    start, start == 1 ? "" : "s", kind->name, kind->magic);
+    else
+        start = 0;
+    s->pos = start;
+    m = s->data + start;
+    if (s->size - start >= 4 && memcmp(m, png, 4) == 0) {
+        NETPBM_FAIL(s, "the output is a PNG image; the exercise asks for "
+                       "plain %s ('P%c' and %s) on standard output",
+                    kind->name, kind->magic, kind->samples);
+        return NETPBM_MAGIC_REFUSED;
+    }
+    if (s->size - start >= 2 && m[1] != kind->magic &&
+        netpbm_format_name(m) != NULL)
+        return NETPBM_MAGIC_OTHER;
+    if (s->size - start >= 2 && m[0] == 'p' && m[1] == kind->magic) {
+        NETPBM_FAIL(s, "the magic number is 'p%c' in lowercase; Netpbm "
+                       "needs a capital 'P%c', and viewers refuse the file",
+                    kind->magic, kind->magic);
+    } else if (s->size - start < 2 || m[0] != 'P' || m[1] != kind->magic) {
+        netpbm_excerpt(s, start, 16, seen, sizeof seen);
+        NETPBM_FAIL(s, "the output does not begin with the magic number "
+                       "'P%c'; it begins with '%s'",
+                    kind->magic, seen);
+        return NETPBM_MAGIC_REFUSED;
+    }
+    s->pos = start + 2;
+    if (s->pos < s->size && !netpbm_is_space(netpbm_peek(s)) &&
+        netpbm_peek(s) != '#')
+        NETPBM_FAIL(s, "there is no whitespace after the magic number "
+                       "'P%c'",
+                    kind->magic);
+    return NETPBM_MAGIC_WANTED;
+}
+
+int netpbm_expect_number(netpbm_scan *s, const char *what,
+                         const char *after, unsigned long *value)
+{
+    unsigned long line, column;
+    char seen[80];
+    netpbm_skip_header_space(s);
+    if (netpbm_read_number(s, value))
+        return 1;
+    netpbm_where(s, s->pos, &line, &column);
+    netpbm_excerpt(s, s->pos, 16, seen, sizeof seen);
+    if (s->pos >= s->size)
+        NETPBM_FAIL(s, "the output ends before the %s (expected after %s)",
+                    what, after);
+    else
+        NETPBM_FAIL(s, "expected the %s after %s at line %lu, column %lu; "
+                       "found '%s'",
+                    what, after, line, column, seen);
+    return 0;
+}
+
+int netpbm_check_dimensions(netpbm_scan *s, const netpbm_kind *kind,
+                            uint32_t want_w, uint32_t want_h,
+                            unsigned long *w, unsigned long *h)
+{
+    char after_magic[8];
+    snprintf(after_magic, sizeof after_magic, "'P%c'", kind->magic);
+    if (!netpbm_expect_number(s, "width", after_magic, w))
+        return 0;
+    if ((netpbm_peek(s) == 'x' || netpbm_peek(s) == 'X') &&
+        s->pos + 1 < s->size && netpbm_is_digit(s->data[s->pos + 1])) {
+        int separator = netpbm_peek(s);
+        s->pos++;
+        netpbm_read_number(s, h);
+        NETPBM_FAIL(s, "the dimensions are written '%lu%c%lu'; Netpbm needs "
+                       "two numbers separated by whitespace: '%lu %lu'",
+                    *w, separator, *h, *w, *h);
+    } else if (!netpbm_expect_number(s, "height", "the width", h)) {
+        return 0;
+    }
+    if (*w == 0 || *h == 0 || *w > RAYO_MAX_DIMENSION ||
+        *h > RAYO_MAX_DIMENSION ||
+        (unsigned long long)*w * *h > RAYO_MAX_PIXELS) {
+        NETPBM_FAIL(s, "the header promises a %lux%lu image, which no "
+                       "reader accepts; the exercise asks for %ux%u",
+                    *w, *h, (unsigned)want_w, (unsigned)want_h);
+        return 0;
+    }
+    if (*w == want_h && *h == want_w && want_w != want_h)
+        NETPBM_FAIL(s, "the header says %lu %lu (width %lu, height %lu); "
+                       "the exercise asks for %u %u: width and height are "
+                       "swapped",
+                    *w, *h, *w, *h, (unsigned)want_w, (unsigned)want_h);
+    else if (*w != want_w || *h != want_h)
+        NETPBM_FAIL(s, "the header says %lux%lu; the exercise asks for "
+                       "%ux%u",
+                    *w, *h, (unsigned)want_w, (unsigned)want_h);
+    return 1;
+}
+
+/* "exactly 1 row missing", "2 rows and 3 pixels", "less than one row". */
+static void describe_rows(char *out, size_t room, unsigned long long pixels,
+                          unsigned long w, int more)
+{
+    unsigned long long rows = pixels / w, rest = pixels % w;
+    if (rows == 0)
+        snprintf(out, room, "less than one row");
+    else if (rest == 0)
+        snprintf(out, room, "exactly %llu row%s %s", rows,
+                 rows == 1 ? "" : "s", more ? "too many" : "missing");
+    else
+        snprintf(out, room, "%llu row%s and %llu pixel%s", rows,
+                 rows == 1 ? "" : "s", rest, rest == 1 ? "" : "s");
+}
+
+void netpbm_say_count(netpbm_scan *s, const netpbm_kind *kind,
+                      unsigned long w, unsigned long h,
+                      unsigned long long samples)
+{
+    unsigned channels = kind->channels;
+    unsigned long long pixels = (unsigned long long)w * h;
+    unsigned long long want = pixels * channels;
+    unsigned long long diff = samples > want ? samples - want
+                                             : want - samples;
+    unsigned long long whole = diff / channels, part = diff % channels;
+    const char *way = samples > want ? "more" : "fewer";
+    char rows_text[160];
+    if (diff == 0)
+        return;
+    describe_rows(rows_text, sizeof rows_text, whole, w, samples > want);
+    if (kind->magic == '1')
+        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels but the "
+                       "output has %llu: %llu %s, %s",
+                    w, h, pixels, samples, diff, way, rows_text);
+    else if (channels == 1)
+        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels but the "
+                       "output has %llu numbers: %llu %s, %s",
+                    w, h, pixels, samples, diff, way, rows_text);
+    else if (part == 0)
+        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels of %u "
+                       "numbers (R G B), %llu in all, but the output has "
+                       "%llu: %llu %s, %llu pixel%s, %s",
+                    w, h, pixels, channels, want, samples, diff, way, whole,
+                    whole == 1 ? "" : "s", rows_text);
+    else if (whole == 0)
+        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels of %u "
+                       "numbers (R G B), %llu in all, but the output has "
+                       "%llu: %llu %s, less than one pixel",
+                    w, h, pixels, channels, want, samples, diff, way);
+    else
+        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels of %u "
+                       "numbers (R G B), %llu in all, but the output has "
+                       "%llu: %llu %s, not a whole number of pixels (%llu "
+                       "pixel%s and %llu number%s)",
+                    w, h, pixels, channels, want, samples, diff, way, whole,
+                    whole == 1 ? "" : "s", part, part == 1 ? "" : "s");
+}
+
+void netpbm_note_line_lengths(netpbm_scan *s)
+{
+    size_t i, length = 0, longest = 0;
+    unsigned long line = 1, longest_line = 0, long_lines = 0;
+    for (i = 0; i <= s->size; i++) {
+        if (i == s->size || s->data[i] == '\n') {
+            if (length > NETPBM_LINE_LIMIT) {
+                long_lines++;
+                if (length > longest) {
+                    longest = length;
+                    longest_line = line;
+                }
+            }
+            length = 0;
+            line++;
+        } else if (s->data[i] != '\r') {
+            length++;
+        }
+    }
+    if (long_lines > 0)
+        NETPBM_SAY(s, "note: %lu line%s longer than %d characters (the "
+                      "longest, line %lu, has %zu); Netpbm's format page "
+                      "asks for at most %d, but the statement lets the "
+                      "pixels be laid out freely and readers accept longer "
+                      "lines",
+                   long_lines, long_lines == 1 ? " is" : "s are",
+                   NETPBM_LINE_LIMIT, longest_line, longest,
+                   NETPBM_LINE_LIMIT);
+}
