@@ -12,5 +12,12 @@
 
 rayo_status grade_step_functions(grade_context *ctx, rayo_error *err)
 {
-    return grade_functions_ej1(ctx, err);
+    switch (ctx->options->exercise->course) {
+    case RAYO_COURSE_EJ2:
+        return grade_functions_ej2(ctx, err);
+    case RAYO_COURSE_EJ1:
+    case RAYO_COURSE_EXERCISES:
+    default:
+        return grade_functions_ej1(ctx, err);
+    }
 }

@@ -1,0 +1,983 @@
+/*
+ * functions_ej2.c - the "functions" criterion for Ejercicio obligatorio
+ * 2 (gray, float[3] vectors): the statement's eight functions have its
+ * exact signatures and return the right values on inputs chosen to
+ * reveal what the course's scene hides.
+ *
+ * The vector functions get plain values; distancia_esfera gets a ray
+ * whose near root is the answer, one whose near root is behind the
+ * origin (it starts inside the sphere), one from an origin other than
+ * zero and two that miss (INFINITO, FLT_MAX); normal_esfera must give a
+ * unit normal; computar_intensidad gets rays of the course's scene 2 and
+ * of small scenes made to reveal one mistake each (two spheres in
+ * reversed order, a sphere between the point and the light and one on
+ * the other side of it, L.N < 0, a value above 255).
+ *
+ * Expected values are computed here in double precision from the
+ * formulas of escenas-del-curso.md, on the arguments rounded to float as
+ * the harness passes them.  When a result is wrong it is compared with
+ * what each modelled mistake gives, and the mistake that agrees is named.
+ * The machinery (probe, build, run, log) is harness.c's.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+
+#define IA 5.0
+#define II 255.0
+#define MAX_SPHERES 6
+#define SAID_PER_FUNCTION 2 /* wrong cases quoted; the others counted */
+
+enum {
+    F_PRODUCTO,
+    F_NORMA,
+    F_NORMALIZAR,
+    F_RESTA,
+    F_INTERPOLAR,
+    F_DISTANCIA,
+    F_NORMAL,
+    F_INTENSIDAD,
+    F_COUNT
+};
+
+static const char *const names[F_COUNT] = {
+    "producto_interno", "norma",          "normalizar",
+    "resta",            "interpolar_recta", "distancia_esfera",
+    "normal_esfera",    "computar_intensidad"};
+
+static const char *const prototypes[F_COUNT] = {
+    "float producto_interno(const float a[3], const float b[3])",
+    "float norma(const float a[3])",
+    "void normalizar(float a[3])",
+    "void resta(float r[3], const float a[3], const float b[3])",
+    "void interpolar_recta(float p[3], const float o[3], const float d[3], "
+    "float t)",
+    "float distancia_esfera(const float c[3], float r, const float o[3], "
+    "const float d[3])",
+    "void normal_esfera(float normal[3], const float c[3], float r, "
+    "const float p[3])",
+    "int computar_intensidad(const float cs[][3], const float rs[], "
+    "size_t n_esferas, const float luz[3], const float o[3], "
+    "const float d[3])"};
+
+/* The arguments of one call: a, b, c are vectors, s a scalar, by
+   function: producto_interno(a, b); norma(a); normalizar(a);
+   resta(r, a, b); interpolar_recta(p, a, b, s);
+   distancia_esfera(a, s, b, c); normal_esfera(n, a, s, b). */
+typedef struct vector_case {
+    unsigned function;
+    double a[3], b[3], c[3], s;
+    const char *miss; /* distancia_esfera: how the ray misses, or NULL */
+} vector_case;
+
+static const vector_case vector_cases[] = {
+    {F_PRODUCTO, {1, 2, 3}, {4, 5, 6}, {0, 0, 0}, 0, NULL},
+    {F_PRODUCTO, {0.5, -1.5, 2}, {3, 0.25, -4}, {0, 0, 0}, 0, NULL},
+    {F_PRODUCTO, {0.1, 0.2, 0.3}, {0.4, 0.5, 0.6}, {0, 0, 0}, 0, NULL},
+    {F_NORMA, {3, 4, 12}, {0, 0, 0}, {0, 0, 0}, 0, NULL},
+    {F_NORMA, {0.5, 0.5, 0.5}, {0, 0, 0}, {0, 0, 0}, 0, NULL},
+    {F_NORMA, {-0.6, 0, -0.8}, {0, 0, 0}, {0, 0, 0}, 0, NULL},
+    {F_NORMALIZAR, {3, 4, 12}, {0, 0, 0}, {0, 0, 0}, 0, NULL},
+    {F_NORMALIZAR, {0.5, 0.5, 0.5}, {0, 0, 0}, {0, 0, 0}, 0, NULL},
+    {F_NORMALIZAR, {0, -2, 0}, {0, 0, 0}, {0, 0, 0}, 0, NULL},
+    {F_RESTA, {1, 2, 3}, {4, 6, 8}, {0, 0, 0}, 0, NULL},
+    {F_RESTA, {0.5, -1, 2}, {-0.25, 0.5, 0.75}, {0, 0, 0}, 0, NULL},
+    {F_INTERPOLAR, {1, 2, 3}, {0.5, -1, 2}, {0, 0, 0}, 2, NULL},
+    {F_INTERPOLAR, {0, 0, 0}, {0.6, 0, 0.8}, {0, 0, 0}, 1.5, NULL},
+    /* distancia_esfera: c, o, d and r */
+    {F_DISTANCIA, {0, 0, 2}, {0, 0, 0}, {0, 0, 1}, 0.8, NULL},
+    {F_DISTANCIA, {0.5, 0.75, 1.9}, {0, 0, 0}, {0.1, 0.2, 1}, 0.8, NULL},
+    {F_DISTANCIA, {0, 0, 1}, {0, 0, 0}, {0, 0, 1}, 2, NULL},
+    {F_DISTANCIA, {1, 1, 5}, {1, 1, 0}, {0, 0, 1}, 1, NULL},
+    {F_DISTANCIA, {0, 0, 3}, {0, 0, 0}, {1, 0, 0}, 1, "misses the sphere"},
+    {F_DISTANCIA, {0, 0, -3}, {0, 0, 0}, {0, 0, 1}, 1,
+     "meets the sphere only behind its origin (t < 0)"},
+    /* normal_esfera: c, p and r */
+    {F_NORMAL, {1, 2, 3}, {1, 2, 5}, {0, 0, 0}, 2, NULL},
+    {F_NORMAL, {0.5, 0.75, 1.9}, {0.98, 0.75, 1.26}, {0, 0, 0}, 0.8, NULL},
+};
+#define VECTOR_CASES (sizeof vector_cases / sizeof vector_cases[0])
+
+/* A scene for computar_intensidad. */
+typedef struct scene {
+    const char *what; /* "the course's scene 2", "2 spheres: ..." */
+    size_t n;
+    double c[MAX_SPHERES][3], r[MAX_SPHERES];
+    double light[3]; /* normalised here */
+} scene;
+
+static const scene scenes[] = {
+    {"the course's scene 2",
+     6,
+     {{-0.4, 0.75, 1.55},
+      {-0.55, -0.4, 2},
+      {3, 1.5, 4},
+      {3, 1.5, 5},
+      {3, -1.5, 4},
+      {3, -1.5, 5}},
+     {0.3, 0.85, 0.4, 0.4, 0.4, 0.4},
+     {0.2873478855663454, 0.9578262852211513, 0}},
+    /* Reversed order: the far sphere first. */
+    {"2 spheres, the far one first: (0, 0, 4) r 1, (0, -0.3, 2) r 0.5",
+     2,
+     {{0, 0, 4}, {0, -0.3, 2}},
+     {1, 0.5},
+     {1, 1, -1}},
+    /* The same two in the other order. */
+    {"2 spheres, the near one first: (0, -0.3, 2) r 0.5, (0, 0, 4) r 1",
+     2,
+     {{0, -0.3, 2}, {0, 0, 4}},
+     {0.5, 1},
+     {1, 1, -1}},
+    /* A sphere between the point and the light. */
+    {"a sphere (0, 0, 3) r 1 with a sphere (0, 2.5, 2) r 0.5 above it "
+     "and the light straight up",
+     2,
+     {{0, 0, 3}, {0, 2.5, 2}},
+     {1, 0.5},
+     {0, 1, 0}},
+    /* A sphere on the other side of the point, away from the light. */
+    {"a sphere (0, 0, 3) r 1 with a sphere (0, -2.5, 2) r 0.5 below it "
+     "and the light straight up",
+     2,
+     {{0, 0, 3}, {0, -2.5, 2}},
+     {1, 0.5},
+     {0, 1, 0}},
+    /* The light behind the camera, straight at the point: L.N = 1. */
+    {"a sphere (0, 0, 3) r 1 with the light towards the camera (0, 0, -1)",
+     1,
+     {{0, 0, 3}},
+     {1},
+     {0, 0, -1}},
+};
+
+typedef struct ray_case {
+    unsigned scene;
+    double d[3]; /* normalised here */
+} ray_case;
+
+/* The course's rays are pixel directions (vx, vy, 320) well away from
+   every outline and shadow edge. */
+static const ray_case ray_cases[] = {
+    {0, {0, 0, 320}},
+    {0, {230, -95, 320}},
+    {0, {-100, 60, 320}},
+    {0, {-150, -160, 320}},
+    {0, {-110, 80, 320}},
+    {1, {0.05, 0, 1}},
+    {2, {0.05, 0, 1}},
+    {3, {0, 0.3, 1}},
+    {4, {0, 0.3, 1}},
+    {3, {0, -0.3, 1}},
+    {5, {0, 0, 1}},
+};
+#define RAY_CASES (sizeof ray_cases / sizeof ray_cases[0])
+
+/* ---- arithmetic in double, on float-rounded inputs ---- */
+
+static double fl(double x)
+{
+    return (double)(float)x;
+}
+
+static void vfl(const double *in, double *out)
+{
+    out[0] = fl(in[0]);
+    out[1] = fl(in[1]);
+    out[2] = fl(in[2]);
+}
+
+static double dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void unit(const double *in, double *out)
+{
+    double n = sqrt(dot(in, in));
+    out[0] = in[0] / n;
+    out[1] = in[1] / n;
+    out[2] = in[2] / n;
+}
+
+/* The float arguments of a vector case. */
+static void case_args(const vector_case *v, double *a, double *b, double *c,
+                      double *s)
+{
+    vfl(v->a, a);
+    vfl(v->b, b);
+    vfl(v->c, c);
+    if (v->function == F_DISTANCIA) {
+        unit(v->c, c);
+        vfl(c, c);
+    }
+    *s = fl(v->s);
+}
+
+/* The ray's t to the sphere: the near root when > 0, else the far one,
+   else INFINITY; far: the far root only. */
+static double sphere_t(const double *c, double r, const double *o,
+                       const double *d, int far)
+{
+    double oc[3], beta, delta, s;
+    oc[0] = c[0] - o[0];
+    oc[1] = c[1] - o[1];
+    oc[2] = c[2] - o[2];
+    beta = dot(oc, d);
+    delta = beta * beta - dot(oc, oc) + r * r;
+    if (delta < 0)
+        return INFINITY;
+    s = sqrt(delta);
+    if (!far && beta - s > 0)
+        return beta - s;
+    if (beta + s > 0)
+        return beta + s;
+    return INFINITY;
+}
+
+/* The float arguments of a ray case. */
+static void ray_args(const ray_case *rc, double *d, double *light,
+                     double c[][3], double *r)
+{
+    const scene *s = &scenes[rc->scene];
+    size_t i;
+    unit(rc->d, d);
+    vfl(d, d);
+    unit(s->light, light);
+    vfl(light, light);
+    for (i = 0; i < s->n; i++) {
+        vfl(s->c[i], c[i]);
+        r[i] = fl(s->r[i]);
+    }
+}
+
+/* The mistakes of computar_intensidad that are modelled. */
+enum {
+    M_NONE,
+    M_FIRST_SPHERE,
+    M_LAST_SPHERE,
+    M_FAR_ROOT,
+    M_NO_SHADOWS,
+    M_BEHIND_SHADOWS,
+    M_NO_LN_TEST,
+    M_LIGHT_REVERSED,
+    M_NO_AMBIENT,
+    M_NO_CLAMP,
+    M_WRAPPED,
+    M_UNNORMALISED_NORMAL,
+    M_SELF_SHADOW,
+    M_COUNT
+};
+
+/* What the model found, for the messages. */
+typedef struct shading {
+    double value;
+    size_t sphere;   /* the sphere shaded, or (size_t)-1 */
+    size_t occluder; /* the sphere that cast the shadow, or (size_t)-1 */
+    double ln;
+} shading;
+
+static int occludes(const double *c, double r, const double *p,
+                    const double *l, int behind_too)
+{
+    double oc[3], beta, delta;
+    oc[0] = c[0] - p[0];
+    oc[1] = c[1] - p[1];
+    oc[2] = c[2] - p[2];
+    beta = dot(oc, l);
+    delta = beta * beta - dot(oc, oc) + r * r;
+    if (delta < 0)
+        return 0;
+    return behind_too || beta + sqrt(delta) > 0;
+}
+
+static shading shade(const ray_case *rc, int m)
+{
+    const scene *s = &scenes[rc->scene];
+    double d[3], light[3], c[MAX_SPHERES][3], r[MAX_SPHERES];
+    double o[3] = {0, 0, 0}, best = INFINITY, p[3], n[3], amb, value;
+    shading out = {0, (size_t)-1, (size_t)-1, 0};
+    size_t i;
+    ray_args(rc, d, light, c, r);
+    for (i = 0; i < s->n; i++) {
+        double t = sphere_t(c[i], r[i], o, d, m == M_FAR_ROOT);
+        if (t == INFINITY)
+            continue;
+        if (m == M_FIRST_SPHERE ? out.sphere == (size_t)-1
+                                : m == M_LAST_SPHERE || t < best) {
+            best = t;
+            out.sphere = i;
+        }
+    }
+    if (out.sphere == (size_t)-1)
+        return out;
+    i = out.sphere;
+    p[0] = best * d[0];
+    p[1] = best * d[1];
+    p[2] = best * d[2];
+    n[0] = (p[0] - c[i][0]) / (m == M_UNNORMALISED_NORMAL ? 1 : r[i]);
+    n[1] = (p[1] - c[i][1]) / (m == M_UNNORMALISED_NORMAL ? 1 : r[i]);
+    n[2] = (p[2] - c[i][2]) / (m == M_UNNORMALISED_NORMAL ? 1 : r[i]);
+    if (m == M_LIGHT_REVERSED) {
+        light[0] = -light[0];
+        light[1] = -light[1];
+        light[2] = -light[2];
+    }
+    out.ln = dot(light, n);
+    amb = m == M_NO_AMBIENT ? 0 : IA;
+    out.value = amb;
+    if (out.ln <= 0 && m != M_NO_LN_TEST)
+        return out;
+    if (m == M_SELF_SHADOW)
+        return out;
+    for (i = 0; i < s->n && m != M_NO_SHADOWS; i++)
+        if (i != out.sphere &&
+            occludes(c[i], r[i], p, light, m == M_BEHIND_SHADOWS)) {
+            out.occluder = i;
+            return out;
+        }
+    value = trunc(amb + II * out.ln);
+    if (m == M_WRAPPED)
+        value = fmod(value, 256);
+    else if (m != M_NO_CLAMP && value > 255)
+        value = 255;
+    out.value = value;
+    return out;
+}
+
+/* ---- the harness ---- */
+
+static void put_vector(harness_text *t, const char *name, const double *v)
+{
+    harness_append(t, "        float %s[3] = {%.9g, %.9g, %.9g};\n", name,
+                   v[0], v[1], v[2]);
+}
+
+static void write_vector_case(harness_text *t, const vector_case *v,
+                              unsigned k)
+{
+    const char *name = names[v->function];
+    double a[3], b[3], c[3], s;
+    case_args(v, a, b, c, &s);
+    harness_append(t, "    if (%s != 0) {\n", name);
+    put_vector(t, "a", a);
+    put_vector(t, "b", b);
+    put_vector(t, "c", c);
+    harness_append(t, "        float r[3] = {0, 0, 0};\n"
+                      "        double v = 0;\n"
+                      "        printf(\"\\ncall %s %u\\n\");\n"
+                      "        fflush(stdout);\n",
+                   name, k);
+    switch (v->function) {
+    case F_PRODUCTO:
+        harness_append(t, "        v = producto_interno(a, b);\n");
+        break;
+    case F_NORMA:
+        harness_append(t, "        v = norma(a);\n");
+        break;
+    case F_NORMALIZAR:
+        harness_append(t, "        normalizar(a);\n"
+                          "        r[0] = a[0], r[1] = a[1], r[2] = a[2];\n");
+        break;
+    case F_RESTA:
+        harness_append(t, "        resta(r, a, b);\n");
+        break;
+    case F_INTERPOLAR:
+        harness_append(t, "        interpolar_recta(r, a, b, %.9g);\n", s);
+        break;
+    case F_DISTANCIA:
+        harness_append(t, "        v = distancia_esfera(a, %.9g, b, c);\n",
+                       s);
+        break;
+    default:
+        harness_append(t, "        normal_esfera(r, a, %.9g, b);\n", s);
+        break;
+    }
+    harness_append(t, "        printf(\"\\nresult %s %u %%.9g %%.9g %%.9g "
+                      "%%.9g\\n\", v, r[0], r[1], r[2]);\n"
+                      "        fflush(stdout);\n    }\n",
+                   name, k);
+}
+
+static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
+{
+    const scene *s = &scenes[rc->scene];
+    double d[3], light[3], c[MAX_SPHERES][3], r[MAX_SPHERES];
+    size_t i;
+    ray_args(rc, d, light, c, r);
+    harness_append(t, "    if (computar_intensidad != 0) {\n"
+                      "        static const float cs[][3] = {");
+    for (i = 0; i < s->n; i++)
+        harness_append(t, "%s{%.9g, %.9g, %.9g}", i > 0 ? ", " : "",
+                       c[i][0], c[i][1], c[i][2]);
+    harness_append(t, "};\n        static const float rs[] = {");
+    for (i = 0; i < s->n; i++)
+        harness_append(t, "%s%.9g", i > 0 ? ", " : "", r[i]);
+    harness_append(t, "};\n");
+    put_vector(t, "luz", light);
+    put_vector(t, "o", (const double[3]){0, 0, 0});
+    put_vector(t, "d", d);
+    harness_append(t, "        int v;\n"
+                      "        printf(\"\\ncall computar_intensidad "
+                      "%u\\n\");\n"
+                      "        fflush(stdout);\n"
+                      "        v = computar_intensidad(cs, rs, %zu, luz, o, "
+                      "d);\n"
+                      "        printf(\"\\nresult computar_intensidad %u "
+                      "%%d\\n\", v);\n"
+                      "        fflush(stdout);\n    }\n",
+                   k, s->n, k);
+}
+
+static char *harness_source(const int *usable)
+{
+    harness_text t = {NULL, 0, 0, 0};
+    unsigned i, k;
+    harness_append(&t, "#include <stddef.h>\n#include <stdio.h>\n");
+    for (i = 0; i < F_COUNT; i++)
+        if (usable[i])
+            harness_append(&t, "%s __attribute__((weak));\n", prototypes[i]);
+    harness_append(&t, "int main(void)\n{\n");
+    for (i = 0; i < F_COUNT; i++)
+        if (usable[i])
+            harness_append(&t, "    if (%s == 0)\n"
+                               "        printf(\"\\nmissing %s\\n\");\n",
+                           names[i], names[i]);
+    for (k = 0; k < VECTOR_CASES; k++)
+        if (usable[vector_cases[k].function])
+            write_vector_case(&t, &vector_cases[k], k);
+    for (k = 0; k < RAY_CASES && usable[F_INTENSIDAD]; k++)
+        write_ray_case(&t, &ray_cases[k], k);
+    harness_append(&t, "    return 0;\n}\n");
+    if (t.failed) {
+        free(t.data);
+        return NULL;
+    }
+    return t.data;
+}
+
+/* ---- what the student reads ---- */
+
+static const char *vec_text(const double *v, char *out, size_t room)
+{
+    snprintf(out, room, "(%.7g, %.7g, %.7g)", v[0], v[1], v[2]);
+    return out;
+}
+
+static void describe_vector_case(unsigned k, char *out, size_t room)
+{
+    const vector_case *v = &vector_cases[k];
+    const char *name = names[v->function];
+    double a[3], b[3], c[3], s;
+    char x[64], y[64], z[64];
+    case_args(v, a, b, c, &s);
+    switch (v->function) {
+    case F_PRODUCTO:
+        snprintf(out, room, "%s(%s, %s)", name, vec_text(a, x, sizeof x),
+                 vec_text(b, y, sizeof y));
+        break;
+    case F_NORMA:
+    case F_NORMALIZAR:
+        snprintf(out, room, "%s(%s)", name, vec_text(a, x, sizeof x));
+        break;
+    case F_RESTA:
+        snprintf(out, room, "resta(r, %s, %s)", vec_text(a, x, sizeof x),
+                 vec_text(b, y, sizeof y));
+        break;
+    case F_INTERPOLAR:
+        snprintf(out, room, "interpolar_recta(p, %s, %s, %.7g)",
+                 vec_text(a, x, sizeof x), vec_text(b, y, sizeof y), s);
+        break;
+    case F_DISTANCIA:
+        snprintf(out, room, "distancia_esfera(%s, %.7g, %s, %s)",
+                 vec_text(a, x, sizeof x), s, vec_text(b, y, sizeof y),
+                 vec_text(c, z, sizeof z));
+        break;
+    default:
+        snprintf(out, room, "normal_esfera(n, %s, %.7g, %s)",
+                 vec_text(a, x, sizeof x), s, vec_text(b, y, sizeof y));
+        break;
+    }
+}
+
+static void describe_ray_case(unsigned k, char *out, size_t room)
+{
+    double d[3], light[3], c[MAX_SPHERES][3], r[MAX_SPHERES];
+    char x[64], y[64];
+    ray_args(&ray_cases[k], d, light, c, r);
+    snprintf(out, room, "computar_intensidad on %s, luz = %s, along d = %s",
+             scenes[ray_cases[k].scene].what, vec_text(light, x, sizeof x),
+             vec_text(d, y, sizeof y));
+}
+
+static void describe(const char *name, unsigned k, char *out, size_t room)
+{
+    if (strcmp(name, "computar_intensidad") == 0) {
+        if (k < RAY_CASES)
+            describe_ray_case(k, out, room);
+        return;
+    }
+    if (k < VECTOR_CASES && strcmp(name, names[vector_cases[k].function]) ==
+                                0)
+        describe_vector_case(k, out, room);
+}
+
+static int near_value(double got, double want)
+{
+    return fabs(got - want) <= 1e-5 + 1e-4 * fabs(want);
+}
+
+static int near_vector(const double *got, const double *want)
+{
+    return near_value(got[0], want[0]) && near_value(got[1], want[1]) &&
+           near_value(got[2], want[2]);
+}
+
+static int is_infinito(double v)
+{
+    return fabs(v / FLT_MAX - 1) < 1e-6;
+}
+
+/* The expected value (scalar functions) or vector, and the answer of
+   two mistakes to recognise: *alt a vector, *alt_value a number. */
+static void expect_vector_case(const vector_case *v, double *want,
+                               double *want_v)
+{
+    double a[3], b[3], c[3], s, n;
+    size_t i;
+    case_args(v, a, b, c, &s);
+    *want = 0;
+    want_v[0] = want_v[1] = want_v[2] = 0;
+    switch (v->function) {
+    case F_PRODUCTO:
+        *want = dot(a, b);
+        break;
+    case F_NORMA:
+        *want = sqrt(dot(a, a));
+        break;
+    case F_NORMALIZAR:
+        unit(a, want_v);
+        break;
+    case F_RESTA:
+        for (i = 0; i < 3; i++)
+            want_v[i] = a[i] - b[i];
+        break;
+    case F_INTERPOLAR:
+        for (i = 0; i < 3; i++)
+            want_v[i] = a[i] + s * b[i];
+        break;
+    case F_DISTANCIA:
+        *want = sphere_t(a, s, b, c, 0);
+        break;
+    default:
+        n = s;
+        for (i = 0; i < 3; i++)
+            want_v[i] = (b[i] - a[i]) / n;
+        break;
+    }
+}
+
+/* One wrong vector case: the reason line. */
+static rayo_status say_vector(rayo_grade_item *item, const vector_case *v,
+                              const char *call, double got,
+                              const double *got_v, rayo_error *err)
+{
+    double a[3], b[3], c[3], s, want, want_v[3], alt[3], far;
+    char g[64], w[64];
+    size_t i;
+    case_args(v, a, b, c, &s);
+    expect_vector_case(v, &want, want_v);
+    switch (v->function) {
+    case F_PRODUCTO:
+    case F_NORMA:
+        if (got == floor(want) && want != floor(want))
+            return grade_fail(item, err, "%s returned %g; expected %.7g: "
+                                         "the decimals are lost, is an int "
+                                         "used inside the function?",
+                              call, got, want);
+        if (v->function == F_NORMA && near_value(got, want * want))
+            return grade_fail(item, err, "%s returned %.7g, the square of "
+                                         "the norm; expected %.7g: is the "
+                                         "square root missing?",
+                              call, got, want);
+        return grade_fail(item, err, "%s returned %.7g; expected %.7g", call,
+                          got, want);
+    case F_DISTANCIA:
+        far = sphere_t(a, s, b, c, 1);
+        if (want == INFINITY && is_infinito(got))
+            return RAYO_OK;
+        if (want == INFINITY)
+            return grade_fail(item, err, "%s returned %.7g for a ray that "
+                                         "%s; expected INFINITO (FLT_MAX)",
+                              call, got, v->miss);
+        if (is_infinito(got))
+            return grade_fail(item, err, "%s returned INFINITO for a ray "
+                                         "that meets the sphere at t = %.7g",
+                              call, want);
+        if (far != want && near_value(got, far))
+            return grade_fail(item, err, "%s returned the far root %.7g "
+                                         "for a ray that meets the sphere at "
+                                         "t = %.7g first: beta - sqrt(delta) "
+                                         "when it is > 0",
+                              call, got, want);
+        if (got < 0)
+            return grade_fail(item, err, "%s returned %.7g, a root behind "
+                                         "the origin (t < 0), for a ray that "
+                                         "starts inside the sphere; expected "
+                                         "%.7g: when beta - sqrt(delta) <= 0 "
+                                         "the answer is beta + sqrt(delta)",
+                              call, got, want);
+        return grade_fail(item, err, "%s returned %.7g; expected %.7g%s",
+                          call, got, want,
+                          dot(b, b) > 0 ? " (the ray starts at o, not at "
+                                          "the origin of coordinates)"
+                                        : "");
+    default:
+        break;
+    }
+    vec_text(got_v, g, sizeof g);
+    vec_text(want_v, w, sizeof w);
+    for (i = 0; i < 3; i++)
+        alt[i] = b[i] - a[i];
+    if (v->function == F_RESTA && near_vector(got_v, alt))
+        return grade_fail(item, err, "%s gave %s, which is b - a; expected "
+                                     "%s: r = a - b",
+                          call, g, w);
+    if (v->function == F_NORMALIZAR && near_vector(got_v, a))
+        return grade_fail(item, err, "%s left a unchanged %s; expected %s: "
+                                     "normalizar divides the array it is "
+                                     "given by its norm",
+                          call, g, w);
+    if (v->function == F_NORMAL) {
+        double length = sqrt(dot(got_v, got_v));
+        for (i = 0; i < 3; i++)
+            alt[i] = want_v[i] * s;
+        if (near_vector(got_v, alt))
+            return grade_fail(item, err, "%s gave %s, of length %.7g; "
+                                         "expected the unit normal %s: "
+                                         "N = (P - C) / r",
+                              call, g, length, w);
+        for (i = 0; i < 3; i++)
+            alt[i] = -want_v[i];
+        if (near_vector(got_v, alt))
+            return grade_fail(item, err, "%s gave %s, pointing into the "
+                                         "sphere; expected %s: "
+                                         "N = (P - C) / r",
+                              call, g, w);
+    }
+    return grade_fail(item, err, "%s gave %s; expected %s", call, g, w);
+}
+
+static int vector_case_right(const vector_case *v, const double *got)
+{
+    double want, want_v[3];
+    expect_vector_case(v, &want, want_v);
+    switch (v->function) {
+    case F_PRODUCTO:
+    case F_NORMA:
+        return near_value(got[0], want);
+    case F_DISTANCIA:
+        return want == INFINITY ? is_infinito(got[0])
+                                : near_value(got[0], want);
+    default:
+        return near_vector(got + 1, want_v);
+    }
+}
+
+static const char *sphere_text(const ray_case *rc, size_t i, char *out,
+                               size_t room)
+{
+    const scene *s = &scenes[rc->scene];
+    snprintf(out, room, "the sphere at (%g, %g, %g)", s->c[i][0],
+             s->c[i][1], s->c[i][2]);
+    return out;
+}
+
+/* One wrong computar_intensidad: the mistake that agrees, named. */
+/* The modelled mistake that gives got (and not the right value), or
+   M_COUNT when none does; exact agreement first, then within 1. */
+static int ray_mistake(const ray_case *rc, double got)
+{
+    double want = shade(rc, M_NONE).value;
+    int k, pass;
+    for (pass = 0; pass < 2; pass++)
+        for (k = M_NONE + 1; k < M_COUNT; k++) {
+            double m = shade(rc, k).value;
+            if (fabs(m - want) > 1 && fabs(got - m) <= (pass ? 1 : 0.5))
+                return k;
+        }
+    return M_COUNT;
+}
+
+/* The mistake that agrees with the most of the results (got[k] for ray
+   case k), or M_COUNT when none explains a wrong one. */
+static int likely_mistake(const double *got)
+{
+    int k, best = M_COUNT;
+    unsigned c, best_score = 0;
+    for (k = M_NONE + 1; k < M_COUNT; k++) {
+        unsigned score = 0, explains = 0;
+        for (c = 0; c < RAY_CASES; c++) {
+            double m = shade(&ray_cases[c], k).value;
+            double want = shade(&ray_cases[c], M_NONE).value;
+            if (fabs(got[c] - m) > 1)
+                continue;
+            score += 2 + (fabs(got[c] - m) < 0.5);
+            explains += fabs(m - want) > 1;
+        }
+        if (explains > 0 && score > best_score) {
+            best = k;
+            best_score = score;
+        }
+    }
+    return best;
+}
+
+static rayo_status say_ray(rayo_grade_item *item, const ray_case *rc,
+                           const char *call, double got, int k,
+                           rayo_error *err)
+{
+    shading want = shade(rc, M_NONE), m;
+    char x[96], y[96];
+    if (k < M_COUNT) {
+        m = shade(rc, k);
+        switch (k) {
+        case M_FIRST_SPHERE:
+        case M_LAST_SPHERE:
+            return grade_fail(item, err, "%s returned %g, the intensity of "
+                                         "%s, the %s sphere in the array the "
+                                         "ray hits, not the nearest (%s, "
+                                         "%g): keep the smallest t",
+                              call, got,
+                              sphere_text(rc, m.sphere, x, sizeof x),
+                              k == M_FIRST_SPHERE ? "first" : "last",
+                              sphere_text(rc, want.sphere, y, sizeof y),
+                              want.value);
+        case M_FAR_ROOT:
+            return grade_fail(item, err, "%s returned %g, the intensity at "
+                                         "the far side of %s; expected %g: "
+                                         "the ray meets it first at t = "
+                                         "beta - sqrt(delta)",
+                              call, got,
+                              sphere_text(rc, want.sphere, x, sizeof x),
+                              want.value);
+        case M_NO_SHADOWS:
+            return grade_fail(item, err, "%s returned %g; expected %g: %s "
+                                         "lies between the point and the "
+                                         "light, so only the ambient IA "
+                                         "counts",
+                              call, got, want.value,
+                              sphere_text(rc, want.occluder, x, sizeof x));
+        case M_BEHIND_SHADOWS:
+            return grade_fail(item, err, "%s returned %g; expected %g: %s "
+                                         "is on the other side of the point, "
+                                         "away from the light, and casts no "
+                                         "shadow: only a sphere hit at t > 0 "
+                                         "from P towards L does",
+                              call, got, want.value,
+                              sphere_text(rc, m.occluder, x, sizeof x));
+        case M_NO_LN_TEST:
+            return grade_fail(item, err, "%s returned %g; expected %g: here "
+                                         "L.N = %.3g < 0, the point faces "
+                                         "away from the light and gets only "
+                                         "the ambient IA",
+                              call, got, want.value, want.ln);
+        case M_LIGHT_REVERSED:
+            return grade_fail(item, err, "%s returned %g; expected %g: as "
+                                         "if the light came from -luz; luz "
+                                         "is the direction towards the "
+                                         "light (L.N = %.3g here)",
+                              call, got, want.value, want.ln);
+        case M_NO_AMBIENT:
+            return grade_fail(item, err, "%s returned %g; expected %g: the "
+                                         "ambient IA = 5 is missing "
+                                         "(I = IA + II (L.N))",
+                              call, got, want.value);
+        case M_WRAPPED:
+            return grade_fail(item, err, "%s returned %g, which is %g "
+                                         "wrapped around 256; expected 255: "
+                                         "values above 255 return 255",
+                              call, got, shade(rc, M_NO_CLAMP).value);
+        case M_NO_CLAMP:
+            return grade_fail(item, err, "%s returned %g; expected 255: "
+                                         "IA + II (L.N) = %g here, and "
+                                         "values above 255 return 255",
+                              call, got, shade(rc, M_NO_CLAMP).value);
+        case M_UNNORMALISED_NORMAL:
+            return grade_fail(item, err, "%s returned %g; expected %g: as "
+                                         "if the normal were P - C, not "
+                                         "divided by the radius",
+                              call, got, want.value);
+        default:
+            return grade_fail(item, err, "%s returned %g; expected %g: a "
+                                         "shadow where no other sphere "
+                                         "blocks the light; does the shadow "
+                                         "test skip the sphere the point is "
+                                         "on?",
+                              call, got, want.value);
+        }
+    }
+    return grade_fail(item, err, "%s returned %g; expected %g", call, got,
+                      want.value);
+}
+
+/* ---- judging ---- */
+
+static rayo_status say_signature(rayo_grade_item *item, unsigned i,
+                                 const char *reason, rayo_error *err)
+{
+    return grade_fail(item, err, "%s: the signature differs from the "
+                                 "statement's %s (the compiler says: %s); "
+                                 "not called",
+                      names[i], prototypes[i], reason);
+}
+
+/* Judges function i: 0 when the log ends before its calls are done. */
+static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
+                         rayo_error *err)
+{
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
+    char call[512];
+    unsigned k, cases = 0, wrong = 0, unsaid = 0, said = 0;
+    rayo_status status = RAYO_OK;
+    if (harness_missing(log, names[i]))
+        return grade_fail(item, err, "%s: not defined; the statement asks "
+                                     "for %s",
+                          names[i], prototypes[i]);
+    for (k = 0; k < VECTOR_CASES && i != F_INTENSIDAD; k++) {
+        double got[4];
+        if (vector_cases[k].function != i)
+            continue;
+        if (harness_result(log, names[i], k, got, 4) != 4)
+            return RAYO_OK; /* it ended inside or before: said elsewhere */
+        cases++;
+        if (vector_case_right(&vector_cases[k], got))
+            continue;
+        if (wrong++ >= SAID_PER_FUNCTION) {
+            unsaid++;
+            continue;
+        }
+        describe_vector_case(k, call, sizeof call);
+        status = say_vector(item, &vector_cases[k], call, got[0], got + 1,
+                            err);
+        if (status != RAYO_OK)
+            return status;
+    }
+    if (i == F_INTENSIDAD) {
+        double got[RAY_CASES];
+        int likely, mistake;
+        for (k = 0; k < RAY_CASES; k++)
+            if (harness_result(log, names[i], k, &got[k], 1) != 1)
+                return RAYO_OK; /* it ended inside or before */
+        likely = likely_mistake(got);
+        for (k = 0; k < RAY_CASES; k++) {
+            const ray_case *rc = &ray_cases[k];
+            cases++;
+            if (fabs(got[k] - shade(rc, M_NONE).value) <= 1)
+                continue;
+            wrong++;
+            /* One line per mistake recognised; the same one again
+               counted. */
+            mistake = likely < M_COUNT &&
+                              fabs(got[k] - shade(rc, likely).value) <= 1
+                          ? likely
+                          : ray_mistake(rc, got[k]);
+            if (said & (1u << mistake) || wrong > SAID_PER_FUNCTION + 2) {
+                unsaid++;
+                continue;
+            }
+            said |= 1u << mistake;
+            describe_ray_case(k, call, sizeof call);
+            status = say_ray(item, rc, call, got[k], mistake, err);
+            if (status != RAYO_OK)
+                return status;
+        }
+    }
+    if (wrong == 0)
+        status = grade_say(item, err, "%s: right on %u known inputs",
+                           names[i], cases);
+    else if (unsaid > 0)
+        status = grade_fail(item, err, "%s: wrong on %u more of its %u "
+                                       "known inputs",
+                            names[i], unsaid, cases);
+    return status;
+}
+
+static rayo_status probe_all(grade_context *ctx, const unsigned *which,
+                             size_t count, int *ok, char *reason,
+                             rayo_error *err)
+{
+    harness_text t = {NULL, 0, 0, 0};
+    size_t i;
+    rayo_status status = RAYO_OK;
+    *ok = 1;
+    harness_append(&t, "#include <stddef.h>\n");
+    for (i = 0; i < count; i++)
+        harness_append(&t, "%s;\n", prototypes[which[i]]);
+    if (t.failed) {
+        free(t.data);
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    }
+    for (i = 0; i < ctx->source_count && *ok && status == RAYO_OK; i++)
+        status = harness_probe(ctx, i, t.data, "", ok, reason,
+                               HARNESS_REASON, err);
+    free(t.data);
+    return status;
+}
+
+rayo_status grade_functions_ej2(grade_context *ctx, rayo_error *err)
+{
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
+    unsigned all[F_COUNT], i;
+    int usable[F_COUNT], any = 0, ok;
+    char reasons[F_COUNT][HARNESS_REASON];
+    char *errors = NULL, *source = NULL, *log = NULL;
+    grade_outcome outcome;
+    rayo_status status;
+    item->result = RAYO_GRADE_PASS;
+    for (i = 0; i < F_COUNT; i++)
+        all[i] = i;
+    /* One probe for all (the usual case), one each when that fails. */
+    status = probe_all(ctx, all, F_COUNT, &ok, reasons[0], err);
+    for (i = 0; i < F_COUNT && status == RAYO_OK; i++) {
+        usable[i] = 1;
+        if (!ok)
+            status = probe_all(ctx, &all[i], 1, &usable[i], reasons[i], err);
+        any |= usable[i];
+    }
+    if (status == RAYO_OK && any) {
+        source = harness_source(usable);
+        if (source == NULL)
+            status = rayo_error_set(err, RAYO_ERR_NOMEM,
+                                    "grade: out of memory");
+        if (status == RAYO_OK)
+            status = harness_build(ctx, source, NULL, 0, &ok, &errors, err);
+        if (status == RAYO_OK && !ok) {
+            status = grade_fail(item, err, "could not build the test "
+                                           "harness around the functions:");
+            if (status == RAYO_OK)
+                status = grade_quote(item, errors, 4, err);
+            any = 0;
+        } else if (status == RAYO_OK) {
+            status = harness_run(ctx, &log, &outcome, err);
+        }
+    }
+    for (i = 0; i < F_COUNT && status == RAYO_OK; i++) {
+        if (!usable[i])
+            status = say_signature(item, i, reasons[i], err);
+        else if (any && log != NULL)
+            status = judge(ctx, i, log, err);
+    }
+    if (status == RAYO_OK && log != NULL)
+        status = harness_judge_ending(ctx, log, &outcome, describe, err);
+    free(log);
+    free(source);
+    free(errors);
+    return status;
+}
