@@ -27,28 +27,50 @@ typedef struct compare_request {
 static void print_help(void)
 {
     printf(
-        "usage: rayo compare REFERENCE IMAGE [--tolerance PX] "
-        "[--diff OUT.png] [--json]\n\n"
+        "usage: rayo compare REFERENCE IMAGE [--tolerance PX] [--levels N]\n"
+        "                    [--exercise NAME] [--diff OUT.png] [--json]\n\n"
         "Tells whether IMAGE shows what REFERENCE shows and, if not, what "
-        "is likely wrong.\nBoth become black/white masks (gray and colour: "
-        "black below half the maximum);\nan image of another size is laid "
-        "on the reference centred (pixel convention).\n\n"
-        "It prints the sizes, the mismatched pixels, the IoU of the black "
-        "regions, the\nfarthest mismatch from the reference's outline "
-        "(distance to the nearest\nreference pixel of the other colour), "
-        "the offset and scale between the black\nshapes, and a verdict:\n"
+        "is likely wrong.\nTwo bilevel images (PBM, or only black and "
+        "white pixels) are compared as\nblack/white masks; when either is "
+        "gray or colour, values are compared (see\nbelow).  An image of "
+        "another size is laid on the reference centred.\n\n"
+        "Masks: it prints the sizes, the mismatched pixels, the IoU of the "
+        "black\nregions, the farthest mismatch from the reference's outline "
+        "(distance to the\nnearest reference pixel of the other colour), "
+        "the offset and scale between the\nblack shapes, and a verdict.\n"
+        "Gray and colour: per channel the pixels off by more than --levels, "
+        "the largest\ndifference, RMSE and PSNR; where the differing pixels "
+        "lie: at the reference's\noutlines and shadow edges, in shading "
+        "where the reference takes their value\nwithin the tolerance, or "
+        "unexplained; and a verdict.\n\n"
+        "Verdicts:\n"
         "  identical     every pixel agrees\n"
         "  consistent    every mismatch within the tolerance of the "
-        "outline, and no\n"
-        "                whole-pixel shift explains them\n"
+        "outline (values:\n"
+        "                every difference explained), and no whole-pixel "
+        "shift\n"
+        "                explains them\n"
         "  inconsistent  anything else; then a diagnosis when one fits: "
         "flipped,\n"
         "                inverted, transposed, shifted, scaled, different "
         "size, empty,\n"
-        "                not a sphere, another sphere\n\n"
+        "                not a sphere, another sphere; for values also "
+        "channels in\n"
+        "                another order, an offset, values wrapped past 255, "
+        "and the\n"
+        "                course's typical mistakes (no shadows, no ambient, "
+        "...) when\n"
+        "                the reference shows the course's scene 2 or 3\n\n"
         "options:\n"
         "      --tolerance PX  pixels a mismatch may be from the outline "
         "(default 2)\n"
+        "      --levels N      gray and colour: levels (of 255) a value may "
+        "be off\n"
+        "                      and still agree (0-255, default 1)\n"
+        "      --exercise NAME the course exercise whose mistakes to try "
+        "(ej2, ej3), or\n"
+        "                      none; default: the one whose scene the "
+        "reference shows\n"
         "      --diff OUT.png  write the difference picture (reference's "
         "size):\n"
         "                        black, white  both agree\n"
@@ -56,6 +78,11 @@ static void print_help(void)
         "(missing)\n"
         "                        blue          black only in the image "
         "(extra)\n"
+        "                      gray and colour: the reference dimmed, "
+        "differences\n"
+        "                      painted amber (explained) or red "
+        "(unexplained),\n"
+        "                      brighter the larger\n"
         "      --json          the report as one JSON object\n"
         "  -h, --help          this help\n\n"
         "exit status: 0 identical or consistent, 1 inconsistent (or "
@@ -66,6 +93,8 @@ static int parse_request(int argc, char **argv, compare_request *req)
 {
     static const struct option options[] = {
         {"tolerance", required_argument, NULL, 't'},
+        {"levels", required_argument, NULL, 'l'},
+        {"exercise", required_argument, NULL, 'e'},
         {"diff", required_argument, NULL, 'd'},
         {"json", no_argument, NULL, 'j'},
         {"help", no_argument, NULL, 'h'},
@@ -86,6 +115,24 @@ static int parse_request(int argc, char **argv, compare_request *req)
             break;
         case 'd':
             req->diff = optarg;
+            break;
+        case 'l': {
+            unsigned long levels;
+            if (!cli_parse_uint("--levels", optarg, 0, 255, &levels))
+                return CLI_EXIT_USAGE;
+            req->options.levels = (unsigned)levels;
+            break;
+        }
+        case 'e':
+            if (strcmp(optarg, "none") == 0) {
+                req->options.course = RAYO_COMPARE_COURSE_NONE;
+            } else if (rayo_course_find(optarg) == RAYO_COURSE_EXERCISES) {
+                return cli_usage_error("--exercise: unknown exercise '%s'; "
+                                       "expected ej1, ej2, ej3 or none",
+                                       optarg);
+            } else {
+                req->options.course = (int)rayo_course_find(optarg);
+            }
             break;
         case 'j':
             req->json = 1;
@@ -125,7 +172,8 @@ static int print_report(const rayo_compare_report *report, int json)
 }
 
 static int write_diff(const char *path, const rayo_image *reference,
-                      const rayo_image *image)
+                      const rayo_image *image,
+                      const rayo_compare_options *options)
 {
     rayo_output *out;
     rayo_error err;
@@ -133,7 +181,7 @@ static int write_diff(const char *path, const rayo_image *reference,
     if (rayo_output_open(&out, path, &err) != RAYO_OK)
         return cli_report(&err);
     cli_guard_output(out);
-    if (rayo_compare_write_diff(reference, image, out, &err) == RAYO_OK)
+    if (rayo_compare_write_diff(reference, image, options, out, &err) == RAYO_OK)
         cli_output_commit(out, &err);
     else
         cli_output_abort(out);
@@ -152,7 +200,7 @@ static int compare_images(const compare_request *req,
                             &err) != RAYO_OK)
         return cli_report(&err);
     if (req->diff != NULL &&
-        (status = write_diff(req->diff, reference, image)) != CLI_EXIT_OK)
+        (status = write_diff(req->diff, reference, image, &req->options)) != CLI_EXIT_OK)
         return status;
     if ((status = print_report(&report, req->json)) != CLI_EXIT_OK)
         return status;

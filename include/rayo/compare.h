@@ -43,6 +43,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/course.h"
 #include "rayo/image.h"
 #include "rayo/output.h"
 #include "rayo/status.h"
@@ -73,16 +74,86 @@ typedef enum rayo_compare_diagnosis {
     RAYO_DIAGNOSIS_NOT_A_SPHERE,    /* black region not ellipse-like */
     RAYO_DIAGNOSIS_OTHER_SPHERE,    /* a sphere, but placed or sized
                                        differently */
-    RAYO_DIAGNOSIS_UNKNOWN          /* nothing fits */
+    RAYO_DIAGNOSIS_UNKNOWN,         /* nothing fits */
+    /* Tone compares only: */
+    RAYO_DIAGNOSIS_CHANNELS_SWAPPED, /* RGB in another order: tone.order */
+    RAYO_DIAGNOSIS_OFFSET,          /* values off by a constant:
+                                       tone.offset */
+    RAYO_DIAGNOSIS_WRAPPED,         /* values past the maximum wrapped
+                                       around 256 */
+    RAYO_DIAGNOSIS_MISTAKE          /* the render of one of the course's
+                                       typical mistakes: tone.mistake */
 } rayo_compare_diagnosis;
+
+/* How a comparison was made. */
+typedef enum rayo_compare_kind {
+    RAYO_COMPARE_MASK, /* both bilevel: black/white masks */
+    RAYO_COMPARE_TONE  /* either gray or colour: values */
+} rayo_compare_kind;
+
+/* rayo_compare_options.course: try the mistakes of the course exercise
+   whose render the reference agrees with, or of none. */
+#define RAYO_COMPARE_COURSE_AUTO (-1)
+#define RAYO_COMPARE_COURSE_NONE (-2)
 
 typedef struct rayo_compare_options {
     double tolerance; /* pixels; default 2 */
+    unsigned levels;  /* tone: levels (of 255) a value may be off and
+                         still agree; default 1 */
+    int course;       /* tone: a rayo_course_exercise whose mistakes the
+                         diagnosis tries, or RAYO_COMPARE_COURSE_AUTO
+                         (default) or RAYO_COMPARE_COURSE_NONE */
 } rayo_compare_options;
 
 void rayo_compare_options_init(rayo_compare_options *options);
 
+/* One channel of a tone comparison, in levels of 255. */
+typedef struct rayo_compare_channel {
+    uint64_t beyond;          /* pixels off by more than the levels */
+    unsigned max_difference;
+    double rmse;
+    double psnr;              /* dB, peak 255; INFINITY when rmse is 0 */
+} rayo_compare_channel;
+
+/*
+ * What a tone comparison measured.  Both images are taken as 8-bit (16-
+ * bit and other maxvals scaled to 255), gray when neither has colour
+ * (an RGB image whose channels are all equal is gray), else RGB.  A
+ * pixel differs when a channel is off by more than `levels`.  A
+ * differing pixel is explained when, in every channel, the reference
+ * takes the image's value (within the levels) somewhere within
+ * `tolerance` pixels: the same picture with its outlines, shadow edges
+ * or shading a pixel or two away.  Explained pixels are at an edge when
+ * an outline or shadow edge of the reference (a step between two
+ * neighbours larger than the levels and than twice the steps beside it)
+ * lies within the tolerance, else in shading.
+ */
+typedef struct rayo_compare_tone {
+    unsigned channels;        /* 1 gray, 3 RGB: what was compared */
+    unsigned reference_channels, image_channels; /* as read (1 or 3) */
+    unsigned levels;
+    rayo_compare_channel channel[3];
+    uint64_t differing;       /* pixels with a channel beyond levels */
+    uint64_t at_edges, in_shading, unexplained; /* their sum: differing */
+    unsigned max_edge_difference; /* the largest among at_edges */
+    int32_t first_x, first_y; /* the first unexplained pixel, -1 none */
+    double scale_fit;         /* the image scaled by this about the centre
+                                 lays best on the reference (1: no scale
+                                 does better than none) */
+    uint64_t differing_scaled; /* differing pixels left at scale_fit */
+    int course;               /* the course exercise whose mistakes were
+                                 tried, or -1 */
+    rayo_course_mistake mistake;  /* RAYO_DIAGNOSIS_MISTAKE */
+    unsigned char order[3];   /* CHANNELS_SWAPPED: the image's channel i
+                                 shows the reference's order[i] */
+    int offset[3];            /* OFFSET: image - reference, per channel */
+    int offset_on_shapes;     /* OFFSET only where the reference is not
+                                 black (the objects, not the background) */
+} rayo_compare_tone;
+
 typedef struct rayo_compare_report {
+    rayo_compare_kind kind;
+    rayo_compare_tone tone;   /* RAYO_COMPARE_TONE; zero for masks */
     uint32_t reference_width, reference_height;
     uint32_t image_width, image_height;
     double tolerance;
@@ -128,17 +199,26 @@ rayo_status rayo_compare_images(const rayo_image *reference,
                                  rayo_error *err);
 
 /*
- * Writes the difference picture to out as an 8-bit RGB PNG of the
- * reference's size, streamed row by row: black and white where the masks
- * agree, RAYO_DIFF_REFERENCE_ONLY_RGB (red) where only the reference is
- * black, RAYO_DIFF_IMAGE_ONLY_RGB (blue) where only the image is black.
- * The image is laid on the reference's frame as for the report.  The
- * caller commits or aborts out.
+ * Writes the difference picture to out as an 8-bit PNG of the
+ * reference's size, streamed row by row, with the image laid on the
+ * reference's frame as for the report.  options may be NULL (the
+ * defaults); their tolerance and levels matter for tone comparisons.
+ * Masks (both bilevel): black and white where the masks agree,
+ * RAYO_DIFF_REFERENCE_ONLY_RGB (red) where only the reference is black,
+ * RAYO_DIFF_IMAGE_ONLY_RGB (blue) where only the image is black.
+ * Tones: the reference dimmed to a third, in gray, and over it each
+ * pixel off by more than the levels in RAYO_DIFF_EXPLAINED_RGB (amber:
+ * the reference takes its value within the tolerance) or
+ * RAYO_DIFF_UNEXPLAINED_RGB (red), stronger as the difference grows (full
+ * at 64 levels).  The caller commits or aborts out.
  */
 #define RAYO_DIFF_REFERENCE_ONLY_RGB 0xE0, 0x10, 0x10 /* red */
 #define RAYO_DIFF_IMAGE_ONLY_RGB 0x10, 0x60, 0xF0     /* blue */
+#define RAYO_DIFF_EXPLAINED_RGB 0xFF, 0xB0, 0x00      /* amber */
+#define RAYO_DIFF_UNEXPLAINED_RGB 0xFF, 0x20, 0x20    /* red */
 rayo_status rayo_compare_write_diff(const rayo_image *reference,
                                     const rayo_image *image,
+                                    const rayo_compare_options *options,
                                     rayo_output *out, rayo_error *err);
 
 /* "identical", "consistent", "inconsistent". */

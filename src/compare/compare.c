@@ -10,10 +10,13 @@
 #include <string.h>
 
 #include "compare_impl.h"
+#include "tone_impl.h"
 
 void rayo_compare_options_init(rayo_compare_options *options)
 {
     options->tolerance = 2;
+    options->levels = 1;
+    options->course = RAYO_COMPARE_COURSE_AUTO;
 }
 
 static void fill_counts(const cmp_counts *c, int has_edges,
@@ -77,14 +80,34 @@ rayo_status rayo_compare_images(const rayo_image *reference,
                                 rayo_compare_report *report, rayo_error *err)
 {
     cmp_pair pair;
+    rayo_compare_options defaults;
     rayo_status s;
     memset(report, 0, sizeof *report);
-    report->tolerance = options ? options->tolerance : 2;
+    rayo_compare_options_init(&defaults);
+    if (options == NULL)
+        options = &defaults;
+    report->tolerance = options->tolerance;
     if (!(report->tolerance >= 0) || !isfinite(report->tolerance))
         return rayo_error_set(err, RAYO_ERR_INVALID,
                               "compare: tolerance %g; expected a finite "
                               "number of pixels, 0 or more",
                               report->tolerance);
+    if (options->levels > 255)
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "compare: %u levels; expected 0 to 255",
+                              options->levels);
+    if ((s = rayo_image_info_check(&reference->info, err)) != RAYO_OK ||
+        (s = rayo_image_info_check(&image->info, err)) != RAYO_OK)
+        return s;
+    if (!tone_is_bilevel(reference) || !tone_is_bilevel(image)) {
+        report->reference_width = reference->info.width;
+        report->reference_height = reference->info.height;
+        report->image_width = image->info.width;
+        report->image_height = image->info.height;
+        report->pixels =
+            (uint64_t)reference->info.width * reference->info.height;
+        return tone_compare(reference, image, options, report, err);
+    }
     s = cmp_pair_make(&pair, reference, image, err);
     if (s != RAYO_OK)
         return s;
@@ -118,7 +141,8 @@ const char *rayo_compare_diagnosis_name(rayo_compare_diagnosis diagnosis)
         "rotated-180", "inverted",           "transposed",
         "shifted",     "scaled",             "different-size",
         "empty",       "not-a-sphere",       "other-sphere",
-        "unknown"};
+        "unknown",     "channels-swapped",   "offset",
+        "wrapped",     "mistake"};
     if ((size_t)diagnosis >= sizeof names / sizeof names[0])
         return "unknown";
     return names[diagnosis];

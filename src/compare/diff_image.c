@@ -22,6 +22,7 @@
 #include <zlib.h>
 
 #include "compare_impl.h"
+#include "tone_impl.h"
 
 enum { WHITE, BLACK, REFERENCE_ONLY, IMAGE_ONLY };
 
@@ -135,12 +136,23 @@ static rayo_status write_png(diff_png *d, const cmp_pair *pair,
 
 rayo_status rayo_compare_write_diff(const rayo_image *reference,
                                     const rayo_image *image,
+                                    const rayo_compare_options *options,
                                     rayo_output *out, rayo_error *err)
 {
     diff_png d;
     cmp_pair pair;
     unsigned char *rows;
-    rayo_status s = cmp_pair_make(&pair, reference, image, err);
+    rayo_compare_options defaults;
+    rayo_status s;
+    rayo_compare_options_init(&defaults);
+    if (options == NULL)
+        options = &defaults;
+    if ((s = rayo_image_info_check(&reference->info, err)) != RAYO_OK ||
+        (s = rayo_image_info_check(&image->info, err)) != RAYO_OK)
+        return s;
+    if (!tone_is_bilevel(reference) || !tone_is_bilevel(image))
+        return tone_write_diff(reference, image, options, out, err);
+    s = cmp_pair_make(&pair, reference, image, err);
     if (s != RAYO_OK)
         return s;
     memset(&d, 0, sizeof d);

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "compare_impl.h"
+#include "tone_impl.h"
 
 typedef struct sink {
     char *buffer;
@@ -121,6 +122,11 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
     sink s = {buffer, size, 0};
     if (size > 0)
         buffer[0] = '\0';
+    if (r->kind == RAYO_COMPARE_TONE) {
+        tone_sink t = {buffer, size, 0};
+        tone_format_text(r, &t);
+        return t.length;
+    }
     put(&s, "reference: %ux%u, %llu black pixels\n", r->reference_width,
         r->reference_height, (unsigned long long)r->reference_black);
     put(&s, "image:     %ux%u, %llu black pixels\n", r->image_width,
@@ -154,8 +160,14 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
     sink s = {buffer, size, 0};
     if (size > 0)
         buffer[0] = '\0';
-    put(&s, "{\"reference\": {\"width\": %u, \"height\": %u, \"black\": %llu}"
-            ", \"image\": {\"width\": %u, \"height\": %u, \"black\": %llu}",
+    if (r->kind == RAYO_COMPARE_TONE) {
+        tone_sink t = {buffer, size, 0};
+        tone_format_json(r, &t);
+        return t.length;
+    }
+    put(&s, "{\"reference\": {\"width\": %u, "
+            "\"height\": %u, \"black\": %llu}, \"image\": {\"width\": "
+            "%u, \"height\": %u, \"black\": %llu}",
         r->reference_width, r->reference_height,
         (unsigned long long)r->reference_black, r->image_width,
         r->image_height, (unsigned long long)r->image_black);

@@ -100,6 +100,10 @@ static rayo_status say_diagnosis(rayo_grade_item *item,
                                      "times the reference's",
                           r->offset_x, r->offset_y, r->scale);
     case RAYO_DIAGNOSIS_UNKNOWN:
+    case RAYO_DIAGNOSIS_CHANNELS_SWAPPED:
+    case RAYO_DIAGNOSIS_OFFSET:
+    case RAYO_DIAGNOSIS_WRAPPED:
+    case RAYO_DIAGNOSIS_MISTAKE:
         break;
     }
     return grade_fail(item, err, "no simple mistake explains the "
@@ -150,7 +154,7 @@ static rayo_status write_diff(rayo_grade_item *item, const char *path,
     rayo_status status = rayo_output_open(&out, path, err);
     if (status != RAYO_OK)
         return status;
-    status = rayo_compare_write_diff(reference, image, out, err);
+    status = rayo_compare_write_diff(reference, image, NULL, out, err);
     if (status == RAYO_OK)
         status = rayo_output_commit(out, err);
     else

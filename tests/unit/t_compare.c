@@ -177,8 +177,8 @@ static void test_shapes(void)
 
 static void test_layouts_and_sizes(void)
 {
-    /* A gray image compares as its threshold at half: 127 of 255 is
-       black (2 * 127 < 255), 128 is white. */
+    /* A gray image of black and white only is bilevel: compared as a
+       mask; one with another level is compared by value. */
     rayo_image a = bitmap_make(4, 1), g;
     rayo_image_info info = rayo_image_info_gray8(4, 1);
     rayo_compare_report r;
@@ -189,13 +189,20 @@ static void test_layouts_and_sizes(void)
     rayo_image_create(&g, &info, NULL);
     row = rayo_image_row(&g, 0);
     row[0] = 0;
-    row[1] = 127;
-    row[2] = 128;
+    row[1] = 0;
+    row[2] = 255;
     row[3] = 255;
     bitmap_put(&a, 0, 0, 1);
     bitmap_put(&a, 1, 0, 1);
     r = compare(&a, &g, 2);
-    is_int(r.verdict, RAYO_VERDICT_IDENTICAL, "gray 0 127 128 255 = bits 1 1 0 0");
+    is_int(r.kind * 10 + r.verdict,
+           RAYO_COMPARE_MASK * 10 + RAYO_VERDICT_IDENTICAL,
+           "gray 0 0 255 255 = bits 1 1 0 0, as masks");
+    row[1] = 127;
+    r = compare(&a, &g, 2);
+    is_int(r.kind, RAYO_COMPARE_TONE, "gray 0 127 255 255: compared by value");
+    is_int(r.tone.differing, 1, "  one pixel differs (127 against 0)");
+    is_int(r.tone.channel[0].max_difference, 127, "  by 127 levels");
     rayo_compare_options_init(&bad);
     bad.tolerance = -1;
     is_int(rayo_compare_images(&a, &g, &bad, &r, &err), RAYO_ERR_INVALID, "negative tolerance refused");

@@ -1,0 +1,364 @@
+/*
+ * tone_diagnose.c - the verdict of a tone comparison and, for an
+ * inconsistent image, the one mistake that explains it.
+ *
+ * As for masks (diagnose.c), each candidate is undone on the image and
+ * the images compared again; a candidate is named when nothing
+ * unexplained is left, or at most a twentieth of it.  The candidates:
+ * the course's typical mistakes, when the reference shows one of the
+ * course's scenes (the image is compared with rayo's render of that
+ * scene with the mistake: course.h); channels in another order; flips;
+ * inversion; a whole-pixel shift; a scale about the centre (the focal
+ * distance or the field of view); a constant offset, everywhere or on
+ * the objects only (a missing ambient term); values wrapped past 255.
+ * Among those that fit, the fewest unexplained pixels win, then the
+ * first tried, so a course mistake, which names the line of code, comes
+ * before a picture-level description of the same effect.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tone_impl.h"
+
+#define CLOSE_REDUCTION 20
+#define SHIFT_RANGE 3
+
+typedef struct choice {
+    int found;
+    uint64_t unexplained, differing;
+    tone_xform t;
+    int mistake; /* >= 0: a course mistake instead of t */
+} choice;
+
+static void consider(choice *ch, const rayo_compare_report *r,
+                     const tone_counts *k, const tone_xform *t, int mistake)
+{
+    if ((k->unexplained != 0 &&
+         k->unexplained * CLOSE_REDUCTION > r->tone.unexplained) ||
+        2 * k->differing > r->tone.differing)
+        return;
+    if (ch->found && (k->unexplained > ch->unexplained ||
+                      (k->unexplained == ch->unexplained &&
+                       k->differing >= ch->differing)))
+        return;
+    ch->found = 1;
+    ch->unexplained = k->unexplained;
+    ch->differing = k->differing;
+    if (t != NULL)
+        ch->t = *t;
+    ch->mistake = mistake;
+}
+
+static void try_xform(choice *ch, const tone_image *ref,
+                      const tone_image *image, const rayo_compare_report *r,
+                      const tone_xform *t)
+{
+    tone_counts k;
+    tone_measure(ref, image, t, r->tolerance, r->tone.levels, 0, &k);
+    consider(ch, r, &k, t, -1);
+}
+
+/* The course exercise the reference shows: the one whose render it is
+   consistent with (only for 640x480, gray for EJ2 and colour for EJ3). */
+static rayo_status detect_course(const tone_image *ref,
+                                 const rayo_compare_report *r, int *course,
+                                 rayo_error *err)
+{
+    rayo_course_exercise e = ref->channels == 1 && r->tone.reference_channels
+                                                        == 1
+                                 ? RAYO_COURSE_EJ2
+                                 : RAYO_COURSE_EJ3;
+    rayo_image render;
+    tone_image t;
+    tone_counts k;
+    tone_xform id = tone_identity();
+    rayo_status s;
+    *course = -1;
+    if (ref->width != 640 || ref->height != 480)
+        return RAYO_OK;
+    if (e == RAYO_COURSE_EJ3 && r->tone.reference_channels != 3)
+        return RAYO_OK;
+    s = rayo_course_render(e, NULL, &render, err);
+    if (s != RAYO_OK)
+        return s;
+    s = tone_image_make(&render, ref->channels, &t, err);
+    rayo_image_free(&render);
+    if (s != RAYO_OK)
+        return s;
+    tone_measure(&t, ref, &id, r->tolerance, r->tone.levels, 0, &k);
+    if (k.unexplained == 0)
+        *course = (int)e;
+    tone_image_free(&t);
+    return RAYO_OK;
+}
+
+static rayo_status try_mistakes(choice *ch, const tone_image *image,
+                                int course, const rayo_compare_report *r,
+                                rayo_error *err)
+{
+    rayo_course_options o;
+    int m;
+    rayo_course_options_init(&o);
+    for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT; m++) {
+        rayo_image render;
+        tone_image t;
+        tone_counts k;
+        tone_xform id = tone_identity();
+        rayo_status s;
+        if (!rayo_course_mistake_applies((rayo_course_exercise)course,
+                                         (rayo_course_mistake)m))
+            continue;
+        o.mistake = (rayo_course_mistake)m;
+        s = rayo_course_render((rayo_course_exercise)course, &o, &render,
+                               err);
+        if (s != RAYO_OK)
+            return s;
+        s = tone_image_make(&render, image->channels, &t, err);
+        rayo_image_free(&render);
+        if (s != RAYO_OK)
+            return s;
+        tone_measure(&t, image, &id, r->tolerance, r->tone.levels, 0, &k);
+        tone_image_free(&t);
+        consider(ch, r, &k, NULL, m);
+    }
+    return RAYO_OK;
+}
+
+static void try_permutations(choice *ch, const tone_image *ref,
+                             const tone_image *image,
+                             const rayo_compare_report *r)
+{
+    static const unsigned char perms[5][3] = {
+        {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    tone_xform t = tone_identity();
+    size_t i;
+    if (ref->channels != 3)
+        return;
+    t.kind = TONE_PERMUTE;
+    for (i = 0; i < 5; i++) {
+        memcpy(t.perm, perms[i], 3);
+        try_xform(ch, ref, image, r, &t);
+    }
+}
+
+/* The whole-pixel shift, |dx|, |dy| <= SHIFT_RANGE, that leaves the
+   fewest differing pixels (on a sampled grid). */
+static tone_xform best_shift(const tone_image *ref, const tone_image *image,
+                             unsigned levels, uint64_t *fewest)
+{
+    double pixels = (double)ref->width * ref->height;
+    tone_xform t = tone_identity(), best = tone_identity();
+    tone_counts k;
+    int dx, dy;
+    t.kind = TONE_SHIFT;
+    t.step = (uint32_t)ceil(sqrt(pixels / 262144.0));
+    if (t.step < 1)
+        t.step = 1;
+    *fewest = UINT64_MAX;
+    for (dy = -SHIFT_RANGE; dy <= SHIFT_RANGE; dy++)
+        for (dx = -SHIFT_RANGE; dx <= SHIFT_RANGE; dx++) {
+            if (dx == 0 && dy == 0)
+                continue;
+            t.dx = dx;
+            t.dy = dy;
+            tone_measure(ref, image, &t, 0, levels, 0, &k);
+            if (k.differing < *fewest) {
+                *fewest = k.differing;
+                best = t;
+            }
+        }
+    best.step = 1;
+    return best;
+}
+
+/* The most common difference (image - reference) of differing pixels,
+   per channel, and whether the reference's black is where it is not. */
+static void common_offset(const tone_image *ref, const tone_image *image,
+                          unsigned levels, int *offset)
+{
+    uint64_t hist[3][511];
+    uint32_t x, y;
+    unsigned c, n = ref->channels;
+    int v;
+    memset(hist, 0, sizeof hist);
+    for (y = 0; y < ref->height; y++)
+        for (x = 0; x < ref->width; x++) {
+            const unsigned char *a = tone_pixel(ref, x, y);
+            const unsigned char *b = tone_pixel(image, x, y);
+            for (c = 0; c < n; c++) {
+                int d = (int)b[c] - (int)a[c];
+                if (d > (int)levels || -d > (int)levels)
+                    hist[c][d + 255]++;
+            }
+        }
+    for (c = 0; c < n; c++) {
+        uint64_t most = 0;
+        offset[c] = 0;
+        for (v = 0; v < 511; v++)
+            if (hist[c][v] > most) {
+                most = hist[c][v];
+                offset[c] = v - 255;
+            }
+    }
+}
+
+static int all_black(const tone_image *image)
+{
+    size_t i, n = (size_t)image->width * image->height * image->channels;
+    for (i = 0; i < n; i++)
+        if (image->v[i] != 0)
+            return 0;
+    return 1;
+}
+
+static rayo_compare_diagnosis diagnosis_of(tone_kind kind)
+{
+    switch (kind) {
+    case TONE_FLIP_V:
+        return RAYO_DIAGNOSIS_FLIPPED_VERTICALLY;
+    case TONE_FLIP_H:
+        return RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY;
+    case TONE_FLIP_BOTH:
+        return RAYO_DIAGNOSIS_ROTATED_180;
+    case TONE_SHIFT:
+        return RAYO_DIAGNOSIS_SHIFTED;
+    case TONE_SCALE:
+        return RAYO_DIAGNOSIS_SCALED;
+    case TONE_PERMUTE:
+        return RAYO_DIAGNOSIS_CHANNELS_SWAPPED;
+    case TONE_INVERT:
+        return RAYO_DIAGNOSIS_INVERTED;
+    case TONE_OFFSET:
+    case TONE_OFFSET_ON_SHAPES:
+        return RAYO_DIAGNOSIS_OFFSET;
+    case TONE_WRAPPED:
+        return RAYO_DIAGNOSIS_WRAPPED;
+    default:
+        return RAYO_DIAGNOSIS_UNKNOWN;
+    }
+}
+
+static void name_choice(const choice *ch, rayo_compare_report *r)
+{
+    r->diagnosis_exact = ch->unexplained == 0;
+    if (ch->mistake >= 0) {
+        r->diagnosis = RAYO_DIAGNOSIS_MISTAKE;
+        r->tone.mistake = (rayo_course_mistake)ch->mistake;
+        return;
+    }
+    r->diagnosis = diagnosis_of(ch->t.kind);
+    r->shift_x = ch->t.dx;
+    r->shift_y = ch->t.dy;
+    r->scale_found = ch->t.scale;
+    memcpy(r->tone.order, ch->t.perm, 3);
+    memcpy(r->tone.offset, ch->t.offset, sizeof r->tone.offset);
+    r->tone.offset_on_shapes = ch->t.kind == TONE_OFFSET_ON_SHAPES;
+}
+
+/* Every difference explained: consistent, unless a whole-pixel shift
+   of the image removes most of them (then it is a mistake). */
+static void judge_close(const tone_image *ref, const tone_image *image,
+                        rayo_compare_report *r)
+{
+    uint64_t fewest;
+    tone_xform t = best_shift(ref, image, r->tone.levels, &fewest);
+    tone_counts k;
+    r->verdict = RAYO_VERDICT_CONSISTENT;
+    if (t.dx > 1 || t.dx < -1 || t.dy > 1 || t.dy < -1)
+        return; /* far shifts are rounding's look-alikes only when tiny */
+    tone_measure(ref, image, &t, 0, r->tone.levels, 0, &k);
+    if (2 * k.differing > r->tone.differing)
+        return;
+    r->verdict = RAYO_VERDICT_INCONSISTENT;
+    r->diagnosis = RAYO_DIAGNOSIS_SHIFTED;
+    r->diagnosis_exact = 1;
+    r->shift_x = t.dx;
+    r->shift_y = t.dy;
+}
+
+static rayo_status try_all(const tone_image *ref, const tone_image *image,
+                           const rayo_compare_options *options,
+                           rayo_compare_report *r, choice *ch,
+                           rayo_error *err)
+{
+    static const tone_kind plain[] = {TONE_FLIP_V, TONE_FLIP_H,
+                                      TONE_FLIP_BOTH, TONE_INVERT};
+    tone_xform t = tone_identity();
+    uint64_t fewest;
+    double gain;
+    int course = options->course;
+    size_t i;
+    rayo_status s = RAYO_OK;
+    if (course == RAYO_COMPARE_COURSE_AUTO)
+        s = detect_course(ref, r, &course, err);
+    if (s != RAYO_OK)
+        return s;
+    if (course >= 0 && course < RAYO_COURSE_EXERCISES &&
+        ref->width == 640 && ref->height == 480) {
+        r->tone.course = course;
+        if ((s = try_mistakes(ch, image, course, r, err)) != RAYO_OK)
+            return s;
+    }
+    try_permutations(ch, ref, image, r);
+    for (i = 0; i < sizeof plain / sizeof plain[0]; i++) {
+        t.kind = plain[i];
+        try_xform(ch, ref, image, r, &t);
+    }
+    t = best_shift(ref, image, r->tone.levels, &fewest);
+    try_xform(ch, ref, image, r, &t);
+    t = tone_identity();
+    t.kind = TONE_SCALE;
+    t.scale = tone_best_scale(ref, image, r->tone.levels, 0.25, 4.0,
+                              &fewest, &gain);
+    if (fabs(t.scale - 1) >= 0.004)
+        try_xform(ch, ref, image, r, &t);
+    t = tone_identity();
+    common_offset(ref, image, r->tone.levels, t.offset);
+    t.kind = TONE_OFFSET;
+    try_xform(ch, ref, image, r, &t);
+    t.kind = TONE_OFFSET_ON_SHAPES;
+    try_xform(ch, ref, image, r, &t);
+    t = tone_identity();
+    t.kind = TONE_WRAPPED;
+    try_xform(ch, ref, image, r, &t);
+    return RAYO_OK;
+}
+
+rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
+                          const rayo_compare_options *options,
+                          rayo_compare_report *r, rayo_error *err)
+{
+    choice ch;
+    rayo_status s;
+    r->diagnosis = RAYO_DIAGNOSIS_NONE;
+    r->scale_found = 1;
+    if (ref->width != image->width || ref->height != image->height) {
+        r->verdict = RAYO_VERDICT_INCONSISTENT;
+        r->diagnosis = RAYO_DIAGNOSIS_DIFFERENT_SIZE;
+        return RAYO_OK;
+    }
+    if (r->tone.differing == 0) {
+        r->verdict = RAYO_VERDICT_IDENTICAL;
+        return RAYO_OK;
+    }
+    if (r->tone.unexplained == 0) {
+        judge_close(ref, image, r);
+        return RAYO_OK;
+    }
+    r->verdict = RAYO_VERDICT_INCONSISTENT;
+    if (all_black(image)) {
+        r->diagnosis = RAYO_DIAGNOSIS_EMPTY;
+        return RAYO_OK;
+    }
+    memset(&ch, 0, sizeof ch);
+    ch.mistake = -1;
+    s = try_all(ref, image, options, r, &ch, err);
+    if (s != RAYO_OK)
+        return s;
+    if (ch.found)
+        name_choice(&ch, r);
+    else
+        r->diagnosis = RAYO_DIAGNOSIS_UNKNOWN;
+    return RAYO_OK;
+}

@@ -1,0 +1,302 @@
+/*
+ * tone_format.c - a tone comparison's report as text for a student and
+ * as JSON for a program (the mask report's forms: report_format.c).
+ *
+ * Both carry the same numbers; the text says in words where the
+ * differences lie, why the outlines of a correct image may differ from
+ * the course's references (their focal distance), and what the
+ * diagnosed mistake is in the student's terms.  Sentences hold no
+ * double quote and no backslash, so they go into JSON as they are.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+
+#include "tone_impl.h"
+
+static void put(tone_sink *s, const char *format, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void put(tone_sink *s, const char *format, ...)
+{
+    va_list ap;
+    int n;
+    size_t room = s->length < s->size ? s->size - s->length : 0;
+    va_start(ap, format);
+    n = vsnprintf(room ? s->buffer + s->length : NULL, room, format, ap);
+    va_end(ap);
+    if (n > 0)
+        s->length += (size_t)n;
+}
+
+static const char *channel_name(const rayo_compare_tone *t, unsigned c)
+{
+    static const char *const rgb[3] = {"red", "green", "blue"};
+    return t->channels == 1 ? "gray" : rgb[c];
+}
+
+static const char *kind_of(unsigned channels)
+{
+    return channels == 1 ? "gray" : "colour";
+}
+
+/* The focal distance the course's references were drawn with: about
+   0.47% longer than the formula's (pi taken as sqrt(9.81)). */
+static int looks_like_course_focal(const rayo_compare_report *r)
+{
+    return r->reference_width == 640 &&
+           fabs(1.0 / r->tone.scale_fit - 1.0047) < 0.002;
+}
+
+static void put_scale(tone_sink *s, const rayo_compare_report *r)
+{
+    const rayo_compare_tone *t = &r->tone;
+    double larger = 1.0 / t->scale_fit;
+    if (t->scale_fit == 1)
+        return;
+    put(s, "scale: the reference is this picture %s %.4f times about the "
+           "centre (%llu pixels differ then, not %llu): its focal distance "
+           "is about %.2f%% %s",
+        larger > 1 ? "enlarged" : "shrunk", larger,
+        (unsigned long long)t->differing_scaled,
+        (unsigned long long)t->differing, fabs(larger - 1) * 100,
+        larger > 1 ? "longer" : "shorter");
+    if (looks_like_course_focal(r))
+        put(s, "; at 640 pixels and 90 degrees the formula gives z = 320 "
+               "and the reference was most likely drawn with z = 321.5, as the "
+               "course's "
+               "references for EJ1 and EJ2 were: that is why outlines and "
+               "shadow edges differ");
+    put(s, "\n");
+}
+
+static const char *flip_text(rayo_compare_diagnosis d)
+{
+    switch (d) {
+    case RAYO_DIAGNOSIS_FLIPPED_VERTICALLY:
+        return "the image is upside down: rows must run from the top (y = "
+               "ALTO/2) down, and the direction is (x, y, z) with y "
+               "decreasing down the picture";
+    case RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY:
+        return "the image is mirrored left to right: columns must run from "
+               "x = -ANCHO/2 to the right";
+    case RAYO_DIAGNOSIS_ROTATED_180:
+        return "the image is upside down and mirrored (a half turn)";
+    case RAYO_DIAGNOSIS_INVERTED:
+        return "the values are inverted (255 - v): 0 is black, 255 white, "
+               "and a ray that hits nothing is black";
+    case RAYO_DIAGNOSIS_EMPTY:
+        return "the image is all black: no ray lights anything";
+    case RAYO_DIAGNOSIS_WRAPPED:
+        return "values past 255 wrapped around to small numbers where the "
+               "reference is at its brightest (255): the value was stored "
+               "in an unsigned char before being clamped; clamp to 255 "
+               "first";
+    default:
+        return NULL;
+    }
+}
+
+static void put_channels(tone_sink *s, const rayo_compare_tone *t)
+{
+    static const char *const rgb[3] = {"red", "green", "blue"};
+    put(s, "the colour channels are in another order: the image's red, "
+           "green and blue show the reference's %s, %s and %s; print R G B "
+           "in that order (color_imprimir)",
+        rgb[t->order[0]], rgb[t->order[1]], rgb[t->order[2]]);
+}
+
+static void put_offset(tone_sink *s, const rayo_compare_tone *t)
+{
+    unsigned c;
+    put(s, "every pixel %sis off by a constant: ",
+        t->offset_on_shapes ? "of the objects (not the background) " : "");
+    for (c = 0; c < t->channels; c++)
+        put(s, "%s%+d", c ? ", " : "", t->offset[c]);
+    put(s, " level%s", t->channels == 1 && (t->offset[0] == 1 ||
+                                            t->offset[0] == -1)
+                           ? ""
+                           : "s");
+    if (t->offset_on_shapes && t->offset[0] < 0)
+        put(s, " (darker): is the ambient term missing (IA in I = IA + II "
+               "(L.N), Ia ka in C = Ia ka + ...)?");
+    else if (t->offset_on_shapes)
+        put(s, " (brighter): is the ambient term too large or added "
+               "twice?");
+    else
+        put(s, ": a constant added to or missing from every value");
+}
+
+void tone_put_diagnosis(const rayo_compare_report *r, tone_sink *s)
+{
+    const rayo_compare_tone *t = &r->tone;
+    const char *text = flip_text(r->diagnosis);
+    if (!r->diagnosis_exact && r->diagnosis != RAYO_DIAGNOSIS_NONE &&
+        r->diagnosis != RAYO_DIAGNOSIS_DIFFERENT_SIZE &&
+        r->diagnosis != RAYO_DIAGNOSIS_EMPTY &&
+        r->diagnosis != RAYO_DIAGNOSIS_UNKNOWN)
+        put(s, "most likely (undoing it comes close, not exact): ");
+    if (text != NULL) {
+        put(s, "%s", text);
+        return;
+    }
+    switch (r->diagnosis) {
+    case RAYO_DIAGNOSIS_NONE:
+        put(s, "none");
+        break;
+    case RAYO_DIAGNOSIS_MISTAKE:
+        put(s, "%s", rayo_course_mistake_text((rayo_course_exercise)t->course,
+                                              t->mistake));
+        break;
+    case RAYO_DIAGNOSIS_CHANNELS_SWAPPED:
+        put_channels(s, t);
+        break;
+    case RAYO_DIAGNOSIS_OFFSET:
+        put_offset(s, t);
+        break;
+    case RAYO_DIAGNOSIS_SHIFTED:
+        put(s, "the picture is moved %+d, %+d pixels (right, down): check "
+               "the pixel grid, x = i - ANCHO/2 and rows from y = ALTO/2 at "
+               "the top",
+            r->shift_x, r->shift_y);
+        break;
+    case RAYO_DIAGNOSIS_SCALED:
+        put(s, "the picture is scaled by %.3f about the centre: a wrong "
+               "field of view or focal distance (z = ANCHO / (2 tan(FOV/2)), "
+               "FOV in radians)",
+            r->scale_found);
+        break;
+    case RAYO_DIAGNOSIS_DIFFERENT_SIZE:
+        put(s, "the image is %ux%u but the reference is %ux%u: check the "
+               "width and height (ANCHO, ALTO)",
+            r->image_width, r->image_height, r->reference_width,
+            r->reference_height);
+        break;
+    default:
+        put(s, "no single mistake explains the differences; the first "
+               "unexplained pixel is column %d, row %d",
+            (int)t->first_x, (int)t->first_y);
+        break;
+    }
+}
+
+void tone_format_text(const rayo_compare_report *r, tone_sink *s)
+{
+    const rayo_compare_tone *t = &r->tone;
+    unsigned c;
+    put(s, "reference: %ux%u, %s\n", r->reference_width, r->reference_height,
+        kind_of(t->reference_channels));
+    put(s, "image:     %ux%u, %s\n", r->image_width, r->image_height,
+        kind_of(t->image_channels));
+    put(s, "compared:  %s values; a pixel differs when off by more than %u "
+           "level%s (of 255)\n",
+        t->channels == 1 ? "gray" : "RGB", t->levels,
+        t->levels == 1 ? "" : "s");
+    for (c = 0; c < t->channels; c++) {
+        const rayo_compare_channel *ch = &t->channel[c];
+        put(s, "%-6s %llu pixels off (%.3f%%), largest difference %u, "
+               "RMSE %.3f, ",
+            channel_name(t, c), (unsigned long long)ch->beyond,
+            r->pixels ? 100.0 * (double)ch->beyond / (double)r->pixels : 0,
+            ch->max_difference, ch->rmse);
+        if (isinf(ch->psnr))
+            put(s, "PSNR infinite\n");
+        else
+            put(s, "PSNR %.2f dB\n", ch->psnr);
+    }
+    put(s, "differing pixels: %llu of %llu (%.3f%%): %llu at outlines and "
+           "shadow edges (largest difference %u), %llu in shading where the "
+           "reference takes their value within %g px, %llu unexplained\n",
+        (unsigned long long)t->differing, (unsigned long long)r->pixels,
+        r->mismatch_percent, (unsigned long long)t->at_edges,
+        t->max_edge_difference, (unsigned long long)t->in_shading,
+        r->tolerance, (unsigned long long)t->unexplained);
+    put_scale(s, r);
+    if (r->verdict == RAYO_VERDICT_CONSISTENT && t->at_edges > 0)
+        put(s, "note: the differences at outlines and shadow edges are "
+               "the same picture drawn a pixel or two apart there (another "
+               "focal distance, float instead of double), not a mistake\n");
+    put(s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
+    if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
+        put(s, "diagnosis: ");
+        tone_put_diagnosis(r, s);
+        put(s, "\n");
+    }
+}
+
+static void put_number(tone_sink *s, double v)
+{
+    if (isfinite(v))
+        put(s, "%.6f", v);
+    else
+        put(s, "null");
+}
+
+void tone_format_json(const rayo_compare_report *r, tone_sink *s)
+{
+    const rayo_compare_tone *t = &r->tone;
+    unsigned c;
+    put(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, \"height\": "
+           "%u, \"channels\": %u}, \"image\": {\"width\": %u, \"height\": "
+           "%u, \"channels\": %u}, \"pixels\": %llu, \"levels\": %u, "
+           "\"tolerance\": %.6g, \"channels\": [",
+        r->reference_width, r->reference_height, t->reference_channels,
+        r->image_width, r->image_height, t->image_channels,
+        (unsigned long long)r->pixels, t->levels, r->tolerance);
+    for (c = 0; c < t->channels; c++) {
+        const rayo_compare_channel *ch = &t->channel[c];
+        put(s, "%s{\"name\": \"%s\", \"beyond\": %llu, \"max_difference\": "
+               "%u, \"rmse\": %.6f, \"psnr\": ",
+            c ? ", " : "", channel_name(t, c),
+            (unsigned long long)ch->beyond, ch->max_difference, ch->rmse);
+        put_number(s, ch->psnr);
+        put(s, "}");
+    }
+    put(s, "], \"differing\": %llu, \"mismatches\": %llu, "
+           "\"mismatch_percent\": %.6f, \"at_edges\": %llu, "
+           "\"max_edge_difference\": %u, \"in_shading\": %llu, "
+           "\"unexplained\": %llu, \"beyond_tolerance\": %llu",
+        (unsigned long long)t->differing, (unsigned long long)r->mismatches,
+        r->mismatch_percent, (unsigned long long)t->at_edges,
+        t->max_edge_difference, (unsigned long long)t->in_shading,
+        (unsigned long long)t->unexplained,
+        (unsigned long long)r->beyond_tolerance);
+    if (t->first_x >= 0)
+        put(s, ", \"first_unexplained\": {\"x\": %d, \"y\": %d}",
+            (int)t->first_x, (int)t->first_y);
+    else
+        put(s, ", \"first_unexplained\": null");
+    put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, \"course\": ",
+        t->scale_fit, (unsigned long long)t->differing_scaled);
+    if (t->course >= 0)
+        put(s, "\"%s\"", rayo_course_name((rayo_course_exercise)t->course));
+    else
+        put(s, "null");
+    put(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
+           "\"exact\": %s",
+        rayo_compare_verdict_name(r->verdict),
+        rayo_compare_diagnosis_name(r->diagnosis),
+        r->diagnosis_exact ? "true" : "false");
+    if (r->diagnosis == RAYO_DIAGNOSIS_MISTAKE)
+        put(s, ", \"mistake\": \"%s\"", rayo_course_mistake_name(t->mistake));
+    if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
+        put(s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
+            r->shift_y);
+    if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
+        put(s, ", \"scale\": %.6f", r->scale_found);
+    if (r->diagnosis == RAYO_DIAGNOSIS_CHANNELS_SWAPPED)
+        put(s, ", \"order\": [%u, %u, %u]", t->order[0], t->order[1],
+            t->order[2]);
+    if (r->diagnosis == RAYO_DIAGNOSIS_OFFSET) {
+        put(s, ", \"offset\": [");
+        for (c = 0; c < t->channels; c++)
+            put(s, "%s%d", c ? ", " : "", t->offset[c]);
+        put(s, "], \"on_shapes\": %s", t->offset_on_shapes ? "true" : "false");
+    }
+    put(s, ", \"text\": \"");
+    tone_put_diagnosis(r, s);
+    put(s, "\"}}\n");
+}

@@ -1,0 +1,148 @@
+/*
+ * tone_impl.h - the pieces of the tone comparison (gray and colour
+ * images compared by value), shared by src/compare/tone*.c only.
+ *
+ *   tone.c          both images as 8-bit samples of the same channel
+ *                   count, and rayo_compare_tone_images putting the
+ *                   measurements, the verdict and the diagnosis together;
+ *   tone_measure.c  one pass over the reference's frame with the image
+ *                   undone by a candidate mistake: statistics, and which
+ *                   differences an edge or the shading explains;
+ *   tone_diagnose.c the candidate mistakes, tried one at a time;
+ *   tone_diff.c     the difference picture;
+ *   tone_format.c   the report as text and JSON.
+ *
+ * The mask comparison (compare_impl.h) shares none of this but the
+ * report and its vocabulary.
+ */
+#ifndef RAYO_TONE_IMPL_H
+#define RAYO_TONE_IMPL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/compare.h"
+
+/* An image as 8-bit samples, channels (1 or 3) a pixel, rows packed. */
+typedef struct tone_image {
+    uint32_t width, height;
+    unsigned channels;
+    unsigned char *v; /* owned */
+} tone_image;
+
+static inline const unsigned char *tone_pixel(const tone_image *t,
+                                              uint32_t x, uint32_t y)
+{
+    return t->v + ((size_t)y * t->width + x) * t->channels;
+}
+
+/* 1 when the image is bilevel: BIT, or only black and white pixels. */
+int tone_is_bilevel(const rayo_image *image);
+
+/* 1 when the image has colour: RGB with some pixel not gray. */
+int tone_has_colour(const rayo_image *image);
+
+/* The image as 8-bit samples with `channels` channels (1: gray by
+   luminance, 3: gray repeated). */
+rayo_status tone_image_make(const rayo_image *image, unsigned channels,
+                            tone_image *out, rayo_error *err);
+void tone_image_free(tone_image *t);
+
+/* A candidate mistake undone on the image, as it is read at a pixel of
+   the reference's frame. */
+typedef enum tone_kind {
+    TONE_IDENTITY,   /* laid on the reference's frame, centres aligned */
+    TONE_FLIP_V,
+    TONE_FLIP_H,
+    TONE_FLIP_BOTH,
+    TONE_SHIFT,      /* the image is the reference moved by (dx, dy) */
+    TONE_SCALE,      /* the image is the reference scaled by s about the
+                        optical centre */
+    TONE_PERMUTE,    /* the image's channel i is the reference's perm[i] */
+    TONE_INVERT,     /* 255 - v */
+    TONE_OFFSET,     /* the image is the reference + offset */
+    TONE_OFFSET_ON_SHAPES, /* the same where the reference is not black */
+    TONE_WRAPPED     /* values past 255 wrapped: where the reference is 255
+                        and the image dark, the image really was 255 */
+} tone_kind;
+
+typedef struct tone_xform {
+    tone_kind kind;
+    int32_t dx, dy;
+    double scale;
+    unsigned char perm[3];
+    int offset[3];
+    uint32_t step;   /* sample every step-th row and column (>= 1) */
+} tone_xform;
+
+/* A transform that changes nothing. */
+tone_xform tone_identity(void);
+
+typedef struct tone_counts {
+    uint64_t known;       /* pixels the transform could place */
+    uint64_t differing, at_edges, in_shading, unexplained;
+    uint64_t beyond[3];
+    unsigned max_difference[3], max_edge_difference;
+    double sum_squares[3];
+    int32_t first_x, first_y;
+} tone_counts;
+
+/*
+ * Compares ref with image undone by t.  classify: sort the explained
+ * differences into edges and shading (else they all count as
+ * in_shading).  With ref->width != image->width or heights different,
+ * the image is laid on the reference's frame centred.
+ */
+void tone_measure(const tone_image *ref, const tone_image *image,
+                  const tone_xform *t, double tolerance, unsigned levels,
+                  int classify, tone_counts *counts);
+
+/* What one pixel of the reference's frame is: the image is outside it,
+   agrees, differs explained or unexplained (tone_measure's rules);
+   *difference the largest channel difference. */
+enum {
+    TONE_PIXEL_UNKNOWN,
+    TONE_PIXEL_SAME,
+    TONE_PIXEL_EXPLAINED,
+    TONE_PIXEL_UNEXPLAINED
+};
+int tone_classify_pixel(const tone_image *ref, const tone_image *image,
+                        uint32_t x, uint32_t y, double tolerance,
+                        unsigned levels, unsigned *difference);
+
+/* Sets report->verdict and report->diagnosis, given the measurements in
+   report (tone.c) and the identity counts. */
+rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
+                          const rayo_compare_options *options,
+                          rayo_compare_report *report, rayo_error *err);
+
+/* The scale s (image = reference scaled by s about the optical centre)
+   between lo and hi that leaves the smallest sum of squared differences
+   (searched on a sampled grid, then finer); *left the differing pixels
+   at s, *gain how many times smaller the sum is than at scale 1. */
+double tone_best_scale(const tone_image *ref, const tone_image *image,
+                       unsigned levels, double lo, double hi,
+                       uint64_t *left, double *gain);
+
+/* The tone comparison (called by rayo_compare_images). */
+rayo_status tone_compare(const rayo_image *reference, const rayo_image *image,
+                         const rayo_compare_options *options,
+                         rayo_compare_report *report, rayo_error *err);
+
+/* The tone difference picture (called by rayo_compare_write_diff). */
+rayo_status tone_write_diff(const rayo_image *reference,
+                            const rayo_image *image,
+                            const rayo_compare_options *options,
+                            rayo_output *out, rayo_error *err);
+
+/* report_format.c's tone parts. */
+typedef struct tone_sink {
+    char *buffer;
+    size_t size, length;
+} tone_sink;
+
+void tone_format_text(const rayo_compare_report *r, tone_sink *s);
+void tone_format_json(const rayo_compare_report *r, tone_sink *s);
+void tone_put_diagnosis(const rayo_compare_report *r, tone_sink *s);
+
+#endif

@@ -1,0 +1,366 @@
+/*
+ * tone_measure.c - one pass of a tone comparison: the reference's frame
+ * walked pixel by pixel, the image read through a candidate mistake
+ * undone (tone_xform), each channel's difference counted, and each
+ * differing pixel asked whether the reference explains it.
+ *
+ * A difference is explained when an outline or a shadow edge of the
+ * reference lies within the tolerance (a step between two neighbours
+ * larger than the levels and than twice the steps beside it), or when,
+ * channel by channel, the reference takes the image's value within the
+ * tolerance (a square window), give or take the levels and one step of
+ * its shading there.  That is what a picture drawn a pixel or two
+ * differently produces (another focal distance, float instead of
+ * double): outlines and shadow edges elsewhere, a gradient of shading a
+ * little shifted; a missing shadow, a swapped channel or a wrong
+ * formula do not.  Only differing pixels are looked at twice, so a pass
+ * costs about one read of each image.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "tone_impl.h"
+
+tone_xform tone_identity(void)
+{
+    tone_xform t;
+    memset(&t, 0, sizeof t);
+    t.kind = TONE_IDENTITY;
+    t.scale = 1;
+    t.perm[0] = 0;
+    t.perm[1] = 1;
+    t.perm[2] = 2;
+    t.step = 1;
+    return t;
+}
+
+static unsigned char clamp_level(int v)
+{
+    return (unsigned char)(v < 0 ? 0 : v > 255 ? 255 : v);
+}
+
+/* The image's pixel for reference pixel (x, y), undone by t, into u;
+   0 when it falls outside the image. */
+static int undo(const tone_image *ref, const tone_image *image,
+                const tone_xform *t, uint32_t x, uint32_t y,
+                unsigned char *u)
+{
+    int64_t rx = x, ry = y, ix, iy;
+    int64_t ox = (int64_t)(image->width / 2) - (int64_t)(ref->width / 2);
+    int64_t oy = (int64_t)(image->height / 2) - (int64_t)(ref->height / 2);
+    const unsigned char *p, *r = tone_pixel(ref, x, y);
+    unsigned c, n = ref->channels;
+    switch (t->kind) {
+    case TONE_FLIP_V:
+        ry = (int64_t)ref->height - 1 - ry;
+        break;
+    case TONE_FLIP_H:
+        rx = (int64_t)ref->width - 1 - rx;
+        break;
+    case TONE_FLIP_BOTH:
+        rx = (int64_t)ref->width - 1 - rx;
+        ry = (int64_t)ref->height - 1 - ry;
+        break;
+    case TONE_SHIFT:
+        rx += t->dx;
+        ry += t->dy;
+        break;
+    case TONE_SCALE:
+        rx = (int64_t)floor(t->scale * (double)(rx - ref->width / 2) + 0.5) +
+             ref->width / 2;
+        ry = (int64_t)floor(t->scale * (double)(ry - ref->height / 2) +
+                            0.5) +
+             ref->height / 2;
+        break;
+    default:
+        break;
+    }
+    ix = rx + ox;
+    iy = ry + oy;
+    if (ix < 0 || iy < 0 || ix >= image->width || iy >= image->height)
+        return 0;
+    p = tone_pixel(image, (uint32_t)ix, (uint32_t)iy);
+    for (c = 0; c < n; c++)
+        u[c] = p[c];
+    switch (t->kind) {
+    case TONE_PERMUTE:
+        for (c = 0; c < n; c++)
+            u[t->perm[c]] = p[c];
+        break;
+    case TONE_INVERT:
+        for (c = 0; c < n; c++)
+            u[c] = (unsigned char)(255 - p[c]);
+        break;
+    case TONE_OFFSET_ON_SHAPES:
+        if (n == 1 ? r[0] == 0 : (r[0] | r[1] | r[2]) == 0)
+            break;
+        /* fall through */
+    case TONE_OFFSET:
+        for (c = 0; c < n; c++)
+            u[c] = clamp_level((int)p[c] - t->offset[c]);
+        break;
+    case TONE_WRAPPED:
+        for (c = 0; c < n; c++)
+            if (r[c] == 255 && p[c] < 128)
+                u[c] = 255;
+        break;
+    default:
+        break;
+    }
+    return 1;
+}
+
+/* The largest channel difference between two reference pixels. */
+static unsigned step_between(const tone_image *ref, uint32_t x0, uint32_t y0,
+                             uint32_t x1, uint32_t y1)
+{
+    const unsigned char *a = tone_pixel(ref, x0, y0);
+    const unsigned char *b = tone_pixel(ref, x1, y1);
+    unsigned c, best = 0;
+    for (c = 0; c < ref->channels; c++) {
+        unsigned d = a[c] > b[c] ? a[c] - b[c] : b[c] - a[c];
+        if (d > best)
+            best = d;
+    }
+    return best;
+}
+
+/* Whether the step from (x, y) by (ex, ey) stands out: more than the
+   levels and more than twice the steps just before and after it. */
+static int is_edge_step(const tone_image *ref, int64_t x, int64_t y,
+                        int ex, int ey, unsigned levels)
+{
+    int64_t x1 = x + ex, y1 = y + ey, x0 = x - ex, y0 = y - ey;
+    int64_t x2 = x1 + ex, y2 = y1 + ey;
+    unsigned s1, s0 = 0, s2 = 0;
+    if (x1 < 0 || y1 < 0 || x1 >= ref->width || y1 >= ref->height)
+        return 0;
+    s1 = step_between(ref, (uint32_t)x, (uint32_t)y, (uint32_t)x1,
+                      (uint32_t)y1);
+    if (s1 <= levels)
+        return 0;
+    if (x0 >= 0 && y0 >= 0 && x0 < ref->width && y0 < ref->height)
+        s0 = step_between(ref, (uint32_t)x0, (uint32_t)y0, (uint32_t)x,
+                          (uint32_t)y);
+    if (x2 >= 0 && y2 >= 0 && x2 < ref->width && y2 < ref->height)
+        s2 = step_between(ref, (uint32_t)x1, (uint32_t)y1, (uint32_t)x2,
+                          (uint32_t)y2);
+    return s1 > 2 * (s0 > s2 ? s0 : s2);
+}
+
+static int is_edge_pixel(const tone_image *ref, int64_t x, int64_t y,
+                         unsigned levels)
+{
+    return is_edge_step(ref, x, y, 1, 0, levels) ||
+           is_edge_step(ref, x, y, -1, 0, levels) ||
+           is_edge_step(ref, x, y, 0, 1, levels) ||
+           is_edge_step(ref, x, y, 0, -1, levels);
+}
+
+/* The largest step between neighbours of the reference, in the window
+   of radius around (x, y), that is not an edge: how far the shading
+   itself moves in a pixel there. */
+static unsigned shading_step(const tone_image *ref, uint32_t x, uint32_t y,
+                             int radius, unsigned levels)
+{
+    unsigned best = 0;
+    int dx, dy;
+    for (dy = -radius; dy <= radius; dy++)
+        for (dx = -radius; dx <= radius; dx++) {
+            int64_t xx = (int64_t)x + dx, yy = (int64_t)y + dy;
+            if (xx < 0 || yy < 0 || xx + 1 >= ref->width ||
+                yy + 1 >= ref->height)
+                continue;
+            if (!is_edge_step(ref, xx, yy, 1, 0, levels)) {
+                unsigned s = step_between(ref, (uint32_t)xx, (uint32_t)yy,
+                                          (uint32_t)xx + 1, (uint32_t)yy);
+                if (s > best)
+                    best = s;
+            }
+            if (!is_edge_step(ref, xx, yy, 0, 1, levels)) {
+                unsigned s = step_between(ref, (uint32_t)xx, (uint32_t)yy,
+                                          (uint32_t)xx, (uint32_t)yy + 1);
+                if (s > best)
+                    best = s;
+            }
+        }
+    return best;
+}
+
+/* Whether the reference takes u's values within the window of radius
+   around (x, y) (a square: the tolerance in x and in y), give or take
+   the levels and one step of its shading there (a gradient continued
+   one pixel further, as at a limb where the brightest pixel of one
+   picture falls between the pixels of the other). */
+static int explained(const tone_image *ref, uint32_t x, uint32_t y,
+                     const unsigned char *u, int radius, unsigned levels)
+{
+    int lo[3] = {256, 256, 256}, hi[3] = {-1, -1, -1};
+    unsigned c, n = ref->channels;
+    int dx, dy, slack = -1;
+    for (dy = -radius; dy <= radius; dy++) {
+        int64_t yy = (int64_t)y + dy;
+        if (yy < 0 || yy >= ref->height)
+            continue;
+        for (dx = -radius; dx <= radius; dx++) {
+            int64_t xx = (int64_t)x + dx;
+            const unsigned char *q;
+            if (xx < 0 || xx >= ref->width)
+                continue;
+            q = tone_pixel(ref, (uint32_t)xx, (uint32_t)yy);
+            for (c = 0; c < n; c++) {
+                if (q[c] < lo[c])
+                    lo[c] = q[c];
+                if (q[c] > hi[c])
+                    hi[c] = q[c];
+            }
+        }
+    }
+    for (c = 0; c < n; c++) {
+        if ((int)u[c] + (int)levels >= lo[c] &&
+            (int)u[c] <= hi[c] + (int)levels)
+            continue;
+        if (slack < 0)
+            slack = (int)(levels + shading_step(ref, x, y, radius, levels));
+        if ((int)u[c] + slack < lo[c] || (int)u[c] > hi[c] + slack)
+            return 0;
+    }
+    return 1;
+}
+
+static int near_edge(const tone_image *ref, uint32_t x, uint32_t y,
+                     int radius, unsigned levels)
+{
+    int dx, dy;
+    for (dy = -radius; dy <= radius; dy++)
+        for (dx = -radius; dx <= radius; dx++) {
+            int64_t xx = (int64_t)x + dx, yy = (int64_t)y + dy;
+            if (xx < 0 || yy < 0 || xx >= ref->width || yy >= ref->height)
+                continue;
+            if (is_edge_pixel(ref, xx, yy, levels))
+                return 1;
+        }
+    return 0;
+}
+
+void tone_measure(const tone_image *ref, const tone_image *image,
+                  const tone_xform *t, double tolerance, unsigned levels,
+                  int classify, tone_counts *k)
+{
+    uint32_t step = t->step > 0 ? t->step : 1, x, y;
+    unsigned n = ref->channels, c;
+    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    memset(k, 0, sizeof *k);
+    k->first_x = k->first_y = -1;
+    for (y = 0; y < ref->height; y += step)
+        for (x = 0; x < ref->width; x += step) {
+            const unsigned char *r = tone_pixel(ref, x, y);
+            unsigned char u[3];
+            unsigned worst = 0;
+            if (!undo(ref, image, t, x, y, u))
+                continue;
+            k->known++;
+            for (c = 0; c < n; c++) {
+                unsigned d = u[c] > r[c] ? u[c] - r[c] : r[c] - u[c];
+                k->sum_squares[c] += (double)d * d;
+                if (d > k->max_difference[c])
+                    k->max_difference[c] = d;
+                if (d > levels)
+                    k->beyond[c]++;
+                if (d > worst)
+                    worst = d;
+            }
+            if (worst <= levels)
+                continue;
+            k->differing++;
+            if (explained(ref, x, y, u, radius, levels)) {
+                if (classify && near_edge(ref, x, y, radius, levels)) {
+                    k->at_edges++;
+                    if (worst > k->max_edge_difference)
+                        k->max_edge_difference = worst;
+                } else {
+                    k->in_shading++;
+                }
+            } else if (near_edge(ref, x, y, radius, levels)) {
+                k->at_edges++;
+                if (worst > k->max_edge_difference)
+                    k->max_edge_difference = worst;
+            } else if (k->unexplained++ == 0) {
+                k->first_x = (int32_t)x;
+                k->first_y = (int32_t)y;
+            }
+        }
+}
+
+static double squares_of(const tone_counts *k)
+{
+    return k->sum_squares[0] + k->sum_squares[1] + k->sum_squares[2];
+}
+
+double tone_best_scale(const tone_image *ref, const tone_image *image,
+                       unsigned levels, double lo, double hi,
+                       uint64_t *left, double *gain)
+{
+    double pixels = (double)ref->width * ref->height, best = 1, ratio;
+    double fewest = HUGE_VAL, none;
+    uint32_t step = (uint32_t)ceil(sqrt(pixels / 65536.0)), i;
+    tone_xform t = tone_identity();
+    tone_counts k;
+    const uint32_t scan = 41, fine = 21;
+    t.kind = TONE_SCALE;
+    t.step = step > 0 ? step : 1;
+    ratio = pow(hi / lo, 1.0 / (scan - 1));
+    for (i = 0; i < scan; i++) {
+        t.scale = lo * pow(ratio, i);
+        tone_measure(ref, image, &t, 0, levels, 0, &k);
+        if (squares_of(&k) < fewest) {
+            fewest = squares_of(&k);
+            best = t.scale;
+        }
+    }
+    lo = best / ratio;
+    hi = best * ratio;
+    for (i = 0; i < fine; i++) {
+        t.scale = lo + (hi - lo) * i / (fine - 1);
+        tone_measure(ref, image, &t, 0, levels, 0, &k);
+        if (squares_of(&k) < fewest) {
+            fewest = squares_of(&k);
+            best = t.scale;
+        }
+    }
+    t.step = 1;
+    t.scale = 1;
+    tone_measure(ref, image, &t, 0, levels, 0, &k);
+    none = squares_of(&k);
+    t.scale = best;
+    tone_measure(ref, image, &t, 0, levels, 0, &k);
+    *left = k.differing;
+    *gain = squares_of(&k) > 0 ? none / squares_of(&k) : HUGE_VAL;
+    return best;
+}
+
+int tone_classify_pixel(const tone_image *ref, const tone_image *image,
+                        uint32_t x, uint32_t y, double tolerance,
+                        unsigned levels, unsigned *difference)
+{
+    tone_xform t = tone_identity();
+    const unsigned char *r = tone_pixel(ref, x, y);
+    unsigned char u[3];
+    unsigned c, worst = 0;
+    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    *difference = 0;
+    if (!undo(ref, image, &t, x, y, u))
+        return TONE_PIXEL_UNKNOWN;
+    for (c = 0; c < ref->channels; c++) {
+        unsigned d = u[c] > r[c] ? u[c] - r[c] : r[c] - u[c];
+        if (d > worst)
+            worst = d;
+    }
+    *difference = worst;
+    if (worst <= levels)
+        return TONE_PIXEL_SAME;
+    return explained(ref, x, y, u, radius, levels) ||
+                   near_edge(ref, x, y, radius, levels)
+               ? TONE_PIXEL_EXPLAINED
+               : TONE_PIXEL_UNEXPLAINED;
+}
