@@ -25,7 +25,10 @@
  * sample over maxval, a character other than a digit, whitespace or a
  * comment in a plain raster, or a raster cut short is an error.  Bytes
  * after the first image (a second image, a trailing newline, garbage) are
- * accepted and counted in the report.
+ * accepted and counted in the report, which also says how many of them
+ * are data rather than whitespace and how many samples they hold: a
+ * caller can tell a file with a row more than its header promises from
+ * one that ends in a newline.
  *
  * PNG is read by libpng: every colour type and bit depth, interlaced or
  * not; a CRC error in any chunk, a missing IEND or a truncated stream is
@@ -55,11 +58,41 @@
 extern "C" {
 #endif
 
+/* How far after a Netpbm raster trailing_samples and trailing_data look
+   (64 MiB); trailing_bytes counts everything. */
+#define RAYO_TRAILING_SCAN_BYTES (64ull << 20)
+
 typedef struct rayo_read_report {
     rayo_format format;      /* RAYO_FORMAT_PBM/PGM/PPM/PNG, from the
                                 content's magic, not the name */
     int plain;               /* Netpbm P1-P3 */
-    uint64_t trailing_bytes; /* bytes after the raster (accepted) */
+    uint64_t trailing_bytes; /* bytes after the raster (accepted); after
+                                a plain raster, the whitespace and
+                                comments that end it are not counted */
+    /*
+     * Netpbm only (0 for PNG), within the first RAYO_TRAILING_SCAN_BYTES
+     * trailing bytes:
+     *
+     * trailing_samples: samples beyond the raster the header promises
+     * (samples, not pixels: a PPM pixel is three).  Plain: the samples
+     * that follow, separated by whitespace or comments as in a raster
+     * (each 0 or 1 digit of a PBM, each decimal number of a PGM or PPM,
+     * whatever its value), up to the first thing that is not one (the
+     * "P1" of a second image, a stray letter).  Raw: the whole samples
+     * the trailing bytes hold (1 or 2 bytes each; in a PBM, a row of
+     * ceil(width / 8) bytes holds width pixels, a partial row up to 8
+     * per byte), or 0 when they are only whitespace or begin, after
+     * whitespace, another Netpbm image ('P' and a digit 1-7).
+     *
+     * trailing_data: the trailing bytes that are not whitespace (nor,
+     * after a plain raster, in a comment).
+     *
+     * A plain PBM of 640x480 whose file holds a 481st row: 640 samples,
+     * 640 bytes of data (or more, with spaces between the digits).  A raw
+     * raster followed by a newline: 1 trailing byte, no data, no sample.
+     */
+    uint64_t trailing_samples;
+    uint64_t trailing_data;
 } rayo_read_report;
 
 /*

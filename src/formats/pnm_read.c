@@ -13,7 +13,9 @@
  * Plain PBM has a tight loop of its own that works on the source's
  * window directly: it is the format of the assignment and of the large
  * images `rayo compare` reads.  Not a writer (pnm_write.c), and not a
- * reader of PAM (P7) or of more than the first image in a file.
+ * reader of PAM (P7) or of more than the first image in a file; what
+ * follows the first image is only looked at, to say whether it is more
+ * samples (a row too many) or whitespace.
  */
 #include <stdio.h>
 #include <string.h>
@@ -502,6 +504,74 @@ static void skip_final_space(pnm_reader *r)
     }
 }
 
+/* Whole samples in n raw bytes after the raster (reader.h). */
+static uint64_t raw_samples(const pnm_reader *r, uint64_t n)
+{
+    if (r->digit == '4') {
+        uint64_t row = raw_row_bytes(r), rest = n % row;
+        return n / row * r->width +
+               (rest * 8 < r->width ? rest * 8 : r->width);
+    }
+    return n / (r->maxval > 255 ? 2 : 1);
+}
+
+/*
+ * What follows the raster: reads up to RAYO_TRAILING_SCAN_BYTES bytes,
+ * counting them in report->trailing_bytes, and fills trailing_samples
+ * and trailing_data as reader.h says.  A plain tail is read the way a
+ * raster is: whitespace and comments separate samples and are not data.
+ */
+static rayo_status scan_trailing(pnm_reader *r, rayo_read_report *report,
+                                 rayo_error *err)
+{
+    const int plain = r->digit <= '3';
+    uint64_t scanned = 0, samples = 0, data = 0;
+    int counting = 1, in_number = 0, in_comment = 0;
+    int lead[2] = {-1, -1}; /* the first two bytes after whitespace */
+    while (scanned < RAYO_TRAILING_SCAN_BYTES) {
+        int c = rayo_source_getc(r->src);
+        if (c < 0)
+            break;
+        scanned++;
+        if (in_comment) {
+            in_comment = c != '\n' && c != '\r';
+            continue;
+        }
+        if (is_space(c) || (plain && c == '#')) {
+            if (in_number)
+                samples++;
+            in_number = 0;
+            in_comment = c == '#';
+            continue;
+        }
+        if (data < 2)
+            lead[data] = c;
+        data++;
+        if (!plain || !counting)
+            continue;
+        if (c >= '0' && c <= (r->digit == '1' ? '1' : '9')) {
+            if (r->digit == '1')
+                samples++;
+            else
+                in_number = 1;
+        } else {
+            counting = 0; /* "12x": that was not a sample either */
+            in_number = 0;
+        }
+    }
+    if (in_number)
+        samples++;
+    if (!plain && data > 0 &&
+        !(lead[0] == 'P' && lead[1] >= '1' && lead[1] <= '7'))
+        samples = raw_samples(r, scanned);
+    report->trailing_bytes = scanned;
+    report->trailing_samples = samples;
+    report->trailing_data = data;
+    if (r->src->read_errno != 0 || r->src->over_limit)
+        return rayo_source_end_error(r->src, "the rest of the file", err);
+    return RAYO_OK;
+}
+
 static rayo_status read_raster(pnm_reader *r, rayo_image *image,
                                rayo_error *err)
 {
@@ -543,6 +613,8 @@ rayo_status rayo_pnm_read(rayo_source *src, int digit, rayo_image *image,
                               "image", src->name, (unsigned long)r.width,
                               (unsigned long)r.height);
     status = read_raster(&r, image, err);
+    if (status == RAYO_OK)
+        status = scan_trailing(&r, report, err);
     if (status != RAYO_OK)
         rayo_image_free(image);
     return status;

@@ -2,7 +2,8 @@
  * reader.c - the public face of the image readers: opens the source,
  * recognises the format from its first bytes (Netpbm magic or the PNG
  * signature), hands over to pnm_read.c or png_read.c, and counts what
- * follows the image.
+ * follows the image (pnm_read.c also says what a Netpbm file's tail
+ * holds).
  *
  * Not where any format is parsed; see reader.h for what is accepted.
  */
@@ -74,13 +75,17 @@ static rayo_status read_from(rayo_source *src, rayo_image *image,
 {
     rayo_read_report local;
     rayo_status status;
+    uint64_t rest = 0;
     if (report == NULL)
         report = &local;
     memset(report, 0, sizeof *report);
     memset(image, 0, sizeof *image);
     status = read_image(src, image, report, err);
+    /* The Netpbm reader has counted what it looked at past the raster. */
     if (status == RAYO_OK)
-        status = rayo_source_count_rest(src, &report->trailing_bytes, err);
+        status = rayo_source_count_rest(src, &rest, err);
+    if (status == RAYO_OK)
+        report->trailing_bytes += rest;
     if (status != RAYO_OK) {
         rayo_image_free(image);
         memset(image, 0, sizeof *image);

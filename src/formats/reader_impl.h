@@ -11,8 +11,11 @@
 
 /*
  * Reads a Netpbm image whose magic "P<digit>" (digit '1'..'6') has been
- * consumed; fills report->format, ->plain and leaves the cursor after
- * the raster (and, for plain formats, after the whitespace that follows).
+ * consumed; fills report->format, ->plain, ->trailing_samples and
+ * ->trailing_data.  For those it reads on past the raster (and, for
+ * plain formats, past the whitespace that follows it) up to
+ * RAYO_TRAILING_SCAN_BYTES bytes, which it counts in
+ * report->trailing_bytes; the caller adds what is left after the cursor.
  */
 rayo_status rayo_pnm_read(rayo_source *src, int digit, rayo_image *image,
                           rayo_read_report *report, rayo_error *err);

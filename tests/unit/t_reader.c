@@ -1,9 +1,9 @@
 /*
  * t_reader.c - the image readers against images made independently:
  * Netpbm text written out by hand here (comments, odd whitespace, 16-bit
- * samples, trailing data), PNGs written by libpng itself in every colour
- * type, bit depth and interlace method, and the malformed corpus read
- * from memory.  The expected pixels come from the same small functions
+ * samples, trailing data and what it holds), PNGs written by libpng
+ * itself in every colour type, bit depth and interlace method, and the
+ * malformed corpus read from memory.  The expected pixels come from the same small functions
  * that made the images, never from rayo's reader.
  *
  * The Netpbm tools' own files are checked by tests/cli/convert.t.
@@ -374,6 +374,8 @@ static void test_raw_pbm_padding(void)
     is_int(rayo_image_row(&image, 1)[0], 0x0F, "second row kept");
     is_int(rayo_image_row(&image, 1)[1], 0x40, "second row padding cleared");
     is_int(report.trailing_bytes, 2, "two trailing bytes reported");
+    is_int(report.trailing_samples, 10, "a whole 10-pixel row more");
+    is_int(report.trailing_data, 2, "two bytes of data");
     rayo_image_free(&image);
 }
 
@@ -404,6 +406,8 @@ static void test_gray_and_colour(void)
         is_int(sample(&image, 1, 0, 0), 258, "big-endian 0x0102 is 258");
         is_int(report.trailing_bytes, 1, "a newline after a raw raster is "
                                          "trailing data");
+        is_int(report.trailing_samples, 0, "but no sample");
+        is_int(report.trailing_data, 0, "and whitespace, not data");
         rayo_image_free(&image);
     }
     status = rayo_image_read_memory(p6, sizeof p6 - 1, "p6", &image, &report,
@@ -422,6 +426,180 @@ static void test_gray_and_colour(void)
         is_int(sample(&image, 0, 0, 0), 65535, "65535 kept");
         is_int(sample(&image, 0, 1, 2), 4, "last sample");
         is_int(report.trailing_bytes, 9, "the second image is trailing");
+        rayo_image_free(&image);
+    }
+}
+
+/* ---- what follows a Netpbm raster ------------------------------------ */
+
+/* A plain PBM of width x rows whose header says height: each row of
+   width digits without spaces, then a newline. */
+static char *plain_pbm_rows(unsigned width, unsigned height, unsigned rows)
+{
+    size_t size = 32 + (size_t)rows * (width + 1), n;
+    char *text = malloc(size);
+    unsigned x, y;
+    if (text == NULL)
+        return NULL;
+    n = (size_t)snprintf(text, size, "P1\n%u %u\n", width, height);
+    for (y = 0; y < rows; y++) {
+        for (x = 0; x < width; x++)
+            text[n++] = (char)('0' + ((x ^ y) & 1));
+        text[n++] = '\n';
+    }
+    text[n] = '\0';
+    return text;
+}
+
+static void test_trailing_samples(void)
+{
+    rayo_image image;
+    rayo_read_report report;
+    rayo_error err;
+    rayo_status status;
+    char path[] = "/tmp/t_reader.XXXXXX";
+    char *text = plain_pbm_rows(640, 480, 481);
+    const char *tail = "4 5 6 # c 7\n 8x 9";
+    char pgm[64];
+    FILE *f;
+    int fd;
+    static const unsigned char p5_row[] = {'P', '5', ' ', '4', ' ', '2', ' ',
+                                           '2', '5', '5', '\n', 1, 2, 3, 4,
+                                           5, 6, 7, 8, 0x00, 0xFF, 0x80,
+                                           'A'};
+    static const unsigned char p5_16[] = {'P', '5', ' ', '1', ' ', '1', ' ',
+                                          '1', '0', '0', '0', '\n', 0x03,
+                                          0xE8, 0x00, 0x01, 0x00, 0x02};
+    static const unsigned char p4_row[] = {'P', '4', ' ', '1', '0', ' ',
+                                           '1', '\n', 0xFF, 0xC0, 0x12,
+                                           0x34, 0x56};
+    static const unsigned char p6_more[] = "P6 1 1 255\n\x01\x02\x03"
+                                           "\nP6 1 1 255\n\x04\x05\x06";
+
+    /* The assignment's mistake: a 481st row in a 640x480 plain PBM, read
+       from memory and from a regular file (whose tail the reader has to
+       read, not just measure). */
+    if (text == NULL) {
+        ok(0, "out of memory for a test image");
+        return;
+    }
+    status = read_text(text, &image, &report, &err);
+    is_int(status, RAYO_OK, "640x480 plain PBM with 481 rows: read");
+    if (status == RAYO_OK) {
+        is_int(image.info.height, 480, "the header's 480 rows kept");
+        is_int(report.trailing_samples, 640, "one row of 640 samples more");
+        is_int(report.trailing_data, 640, "640 bytes of trailing data");
+        is_int(report.trailing_bytes, 641, "the row and its newline");
+        rayo_image_free(&image);
+    }
+    fd = mkstemp(path);
+    f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    ok(f != NULL && fputs(text, f) >= 0 && fclose(f) == 0,
+       "the 481-row PBM written to a file");
+    status = rayo_image_read_file(path, &image, &report, &err);
+    is_int(status, RAYO_OK, "read back from the file");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 640, "file: 640 samples more");
+        is_int(report.trailing_bytes, 641, "file: 641 trailing bytes");
+        rayo_image_free(&image);
+    }
+    status = rayo_image_read_file(path, &image, NULL, &err);
+    is_int(status, RAYO_OK, "read with no report: still accepted");
+    if (status == RAYO_OK)
+        rayo_image_free(&image);
+    remove(path);
+    free(text);
+
+    text = plain_pbm_rows(7, 3, 3);
+    if (text == NULL) {
+        ok(0, "out of memory for a test image");
+        return;
+    }
+    status = read_text(text, &image, &report, &err);
+    is_int(status, RAYO_OK, "an exact plain PBM");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 0, "exact: no sample more");
+        is_int(report.trailing_data, 0, "exact: no trailing data");
+        is_int(report.trailing_bytes, 0, "exact: no trailing byte");
+        rayo_image_free(&image);
+    }
+    free(text);
+
+    /* Plain PGM: samples up to the first thing that is not one; comments
+       and whitespace are not data. */
+    snprintf(pgm, sizeof pgm, "P2 3 1 255\n1 2 3\n%s", tail);
+    status = read_text(pgm, &image, &report, &err);
+    is_int(status, RAYO_OK, "plain PGM with a tail of samples and garbage");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 3, "4 5 6 counted; 8x stops");
+        is_int(report.trailing_data, 6, "4 5 6 8 x 9: six bytes of data");
+        is_int(report.trailing_bytes, strlen(tail), "the whole tail");
+        rayo_image_free(&image);
+    }
+    status = read_text("P2 2 1 9\n1 2\n300 4", &image, &report, &err);
+    is_int(status, RAYO_OK, "plain PGM, samples over maxval after it");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 2, "counted whatever their value");
+        rayo_image_free(&image);
+    }
+    status = read_text("P3 1 1 255 1 2 3\n# only a comment\n\n", &image,
+                       &report, &err);
+    is_int(status, RAYO_OK, "plain PPM ending in a comment");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 0, "a final comment: no sample");
+        is_int(report.trailing_data, 0, "a final comment: no data");
+        rayo_image_free(&image);
+    }
+    status = read_text("P3 1 2 65535 65535 0 1 2 3 4 P1 1 1 0\n", &image,
+                       &report, &err);
+    is_int(status, RAYO_OK, "plain PPM followed by another image");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 0, "another image: no sample");
+        is_int(report.trailing_data, 5, "P1 1 1 0: five bytes of data");
+        rayo_image_free(&image);
+    }
+
+    /* Raw. */
+    status = rayo_image_read_memory(p5_row, sizeof p5_row, "p5", &image,
+                                    &report, &err);
+    is_int(status, RAYO_OK, "raw PGM 4x2 with a third row");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 4, "raw: a row of 4 samples more");
+        is_int(report.trailing_data, 4, "raw: 4 bytes of data");
+        is_int(report.trailing_bytes, 4, "raw: 4 trailing bytes");
+        rayo_image_free(&image);
+    }
+    status = rayo_image_read_memory(p5_row, sizeof p5_row - 4, "p5", &image,
+                                    &report, &err);
+    is_int(status, RAYO_OK, "raw PGM 4x2, exact");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples + report.trailing_data +
+                   report.trailing_bytes,
+               0, "raw, exact: nothing after");
+        rayo_image_free(&image);
+    }
+    status = rayo_image_read_memory(p5_16, sizeof p5_16, "p5", &image,
+                                    &report, &err);
+    is_int(status, RAYO_OK, "raw 16-bit PGM with 4 bytes more");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 2, "16-bit: two samples more");
+        rayo_image_free(&image);
+    }
+    status = rayo_image_read_memory(p4_row, sizeof p4_row, "p4", &image,
+                                    &report, &err);
+    is_int(status, RAYO_OK, "raw PBM 10x1 with 3 bytes more");
+    if (status == RAYO_OK) {
+        /* a 2-byte row of 10 pixels, then 1 byte: 8 more */
+        is_int(report.trailing_samples, 18, "P4: a row of 10, then 8");
+        rayo_image_free(&image);
+    }
+    status = rayo_image_read_memory(p6_more, sizeof p6_more - 1, "p6",
+                                    &image, &report, &err);
+    is_int(status, RAYO_OK, "raw PPM followed by a newline and an image");
+    if (status == RAYO_OK) {
+        is_int(report.trailing_samples, 0, "a second raw image: no sample");
+        /* "P6", "1", "1", "255" and three sample bytes */
+        is_int(report.trailing_data, 10, "its 10 non-space bytes are data");
         rayo_image_free(&image);
     }
 }
@@ -535,6 +713,7 @@ int main(void)
     test_plain_pbm();
     test_raw_pbm_padding();
     test_gray_and_colour();
+    test_trailing_samples();
     test_errors();
     test_empty_memory();
     test_png_every_type();
