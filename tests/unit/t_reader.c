@@ -3,8 +3,8 @@
  * Netpbm text written out by hand here (comments, odd whitespace, 16-bit
  * samples, trailing data and what it holds), PNGs written by libpng
  * itself in every colour type, bit depth and interlace method, and the
- * malformed corpus read from memory.  The expected pixels come from the same small functions
- * that made the images, never from rayo's reader.
+ * malformed corpus read from memory.  The expected pixels come from the
+ * same small functions that made the images, never from rayo's reader.
  *
  * The Netpbm tools' own files are checked by tests/cli/convert.t.
  */
