@@ -42,10 +42,10 @@ static void print_help(void)
            "(silhouette)\n"
            "      --ascii      plain ASCII, for terminals without Unicode "
            "(silhouette)\n"
-           "      --color[=WHEN]  colour: auto (default: on a terminal "
+           "      --color[=WHEN]  auto (default: colour on a terminal "
            "without $NO_COLOR),\n"
-           "                   always (also into files and pipes, e.g. "
-           "for 'less -R'), never\n"
+           "                   always (into files and pipes too, as for "
+           "'less -R') or never\n"
            "  -h, --help       this help\n\n"
            "exit status: 0 success, 1 output failure, 2 unreadable input or "
            "bad options.\n");
