@@ -237,6 +237,11 @@ size_t rayo_compare_format_text(const rayo_compare_report *report,
 size_t rayo_compare_format_json(const rayo_compare_report *report,
                                 char *buffer, size_t size);
 
+/* The diagnosis alone as one sentence (no newline), as the text report
+   gives it after "diagnosis: "; "none" when there is none. */
+size_t rayo_compare_format_diagnosis(const rayo_compare_report *report,
+                                     char *buffer, size_t size);
+
 #ifdef __cplusplus
 }
 #endif

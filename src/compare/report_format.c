@@ -203,3 +203,18 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
     put(&s, "\"}}\n");
     return s.length;
 }
+
+size_t rayo_compare_format_diagnosis(const rayo_compare_report *r,
+                                     char *buffer, size_t size)
+{
+    sink s = {buffer, size, 0};
+    if (size > 0)
+        buffer[0] = '\0';
+    if (r->kind == RAYO_COMPARE_TONE) {
+        tone_sink t = {buffer, size, 0};
+        tone_put_diagnosis(r, &t);
+        return t.length;
+    }
+    put_diagnosis(&s, r);
+    return s.length;
+}

@@ -3,8 +3,8 @@
  * grade: each with its name, the image its program must write and how
  * to make the reference that image is compared with.
  *
- * Adding an exercise is adding an entry here (and, where it has
- * functions of its own to check, a harness in functions.c).  The
+ * Adding an exercise is adding an entry here, its scene in src/course
+ * and its functions' cases in a functions_ejN.c.  The
  * registry is constant data; nothing here runs a submission.
  */
 #include <stddef.h>
@@ -43,9 +43,26 @@ static rayo_status reference_ej1(rayo_image *image, rayo_error *err)
     return status;
 }
 
+/* Ejercicios 2 and 3: rayo's exact render of the course's scene. */
+static rayo_status reference_ej2(rayo_image *image, rayo_error *err)
+{
+    return rayo_course_render(RAYO_COURSE_EJ2, NULL, image, err);
+}
+
+static rayo_status reference_ej3(rayo_image *image, rayo_error *err)
+{
+    return rayo_course_render(RAYO_COURSE_EJ3, NULL, image, err);
+}
+
 static const rayo_grade_exercise exercises[] = {
     {"ej1", "Ejercicio obligatorio 1: the sphere, plain PBM 640x480",
      RAYO_SEED_WIDTH, RAYO_SEED_HEIGHT, '1', RAYO_COURSE_EJ1, reference_ej1},
+    {"ej2", "Ejercicio obligatorio 2: light and shadows in gray, plain PGM "
+            "640x480",
+     640, 480, '2', RAYO_COURSE_EJ2, reference_ej2},
+    {"ej3", "Ejercicio obligatorio 3: colour, structs and dynamic memory, "
+            "plain PPM 640x480",
+     640, 480, '3', RAYO_COURSE_EJ3, reference_ej3},
 };
 
 const rayo_grade_exercise *rayo_grade_exercises(size_t *count)

@@ -91,13 +91,14 @@ static rayo_status check_output(grade_context *ctx, rayo_image *image,
                                 int *salvaged, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_OUTPUT];
-    rayo_status status = rayo_pbm_check(
-        ctx->output, ctx->output_size, ctx->options->exercise->width,
-        ctx->options->exercise->height, item, image, err);
+    rayo_status status = rayo_pnm_check(
+        ctx->output, ctx->output_size, ctx->options->exercise->magic,
+        ctx->options->exercise->width, ctx->options->exercise->height, item,
+        image, err);
     *salvaged = item->result == RAYO_GRADE_FAIL;
     if (status != RAYO_OK || image->pixels != NULL || ctx->output_size == 0)
         return status;
-    /* Not P1: another format the readers may know. */
+    /* Not the plain format asked for: another the readers may know. */
     *salvaged = 0;
     if (rayo_image_read_memory(ctx->output, ctx->output_size, "the output",
                                image, NULL, NULL) != RAYO_OK)
