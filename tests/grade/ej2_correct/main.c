@@ -1,7 +1,7 @@
 /*
- * ej2_correct/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.  Correct: every
- * criterion passes.
+ * ej2_correct/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Correct: every criterion passes.
  */
 #include <float.h>
 #include <math.h>

@@ -1,7 +1,7 @@
 /*
- * ej2_far_root/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: distancia_esfera tries beta + sqrt(delta) first: the far side of each sphere.
+ * ej2_far_root/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: distancia_esfera takes beta + sqrt(delta) first (the far side).
  */
 #include <float.h>
 #include <math.h>

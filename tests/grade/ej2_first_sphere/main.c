@@ -1,7 +1,7 @@
 /*
- * ej2_first_sphere/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: the first sphere of the array that the ray hits is used, not the nearest.
+ * ej2_first_sphere/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: the first sphere in the array that the ray hits, not the nearest.
  */
 #include <float.h>
 #include <math.h>

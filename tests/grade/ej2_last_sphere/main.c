@@ -1,7 +1,7 @@
 /*
- * ej2_last_sphere/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: no nearest test: the last sphere of the array that the ray hits is used.
+ * ej2_last_sphere/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: no nearest test: the last sphere in the array that is hit wins.
  */
 #include <float.h>
 #include <math.h>

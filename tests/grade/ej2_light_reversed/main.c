@@ -1,7 +1,7 @@
 /*
- * ej2_light_reversed/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: the light vector is negated (taken as the direction the light travels).
+ * ej2_light_reversed/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: the light vector is negated (read as where the light travels).
  */
 #include <float.h>
 #include <math.h>

@@ -1,6 +1,6 @@
 /*
- * ej2_no_ambient/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
+ * ej2_no_ambient/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
  * Mistake: no ambient term: I = II L.N when lit, 0 in shadow or facing away.
  */
 #include <float.h>

@@ -1,6 +1,6 @@
 /*
- * ej2_no_clamp/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
+ * ej2_no_clamp/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
  * Mistake: no clamp: IA + II L.N above 255 is printed as it is (256..260).
  */
 #include <float.h>

@@ -1,7 +1,7 @@
 /*
- * ej2_no_ln_test/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: no L.N > 0 test: points facing away get IA + II L.N < 0, printed as negative ints.
+ * ej2_no_ln_test/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: no L.N > 0 test: facing away gives IA + II L.N, printed negative.
  */
 #include <float.h>
 #include <math.h>

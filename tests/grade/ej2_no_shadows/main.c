@@ -1,6 +1,6 @@
 /*
- * ej2_no_shadows/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
+ * ej2_no_shadows/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
  * Mistake: no shadow test: every point facing the light is lit.
  */
 #include <float.h>

@@ -1,7 +1,7 @@
 /*
- * ej2_p5_text/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: the header says P5 (binary PGM) but the samples are written as text.
+ * ej2_p5_text/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: the header says P5 (binary PGM) but the samples are text.
  */
 #include <float.h>
 #include <math.h>

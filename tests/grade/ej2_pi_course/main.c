@@ -1,7 +1,7 @@
 /*
- * ej2_pi_course/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: PI copied from the course's code as sqrt(9.81): z is about 321.5, not 320.
+ * ej2_pi_course/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: PI copied from the course as sqrt(9.81): z = 321.5, not 320.
  */
 #include <float.h>
 #include <math.h>

@@ -1,6 +1,6 @@
 /*
- * ej2_self_shadow/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
+ * ej2_self_shadow/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
  * Mistake: the shadow test loops over every sphere, the one hit included.
  */
 #include <float.h>

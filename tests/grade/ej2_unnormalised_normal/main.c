@@ -1,7 +1,7 @@
 /*
- * ej2_unnormalised_normal/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: normal_esfera returns P - C without dividing by the radius (not unit).
+ * ej2_unnormalised_normal/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: normal_esfera returns P - C, not divided by the radius.
  */
 #include <float.h>
 #include <math.h>

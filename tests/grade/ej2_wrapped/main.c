@@ -1,7 +1,7 @@
 /*
- * ej2_wrapped/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: the intensity is stored in an unsigned char, so 256..260 wrap to 0..4.
+ * ej2_wrapped/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: the intensity is kept in an unsigned char: 256..260 wrap to 0..4.
  */
 #include <float.h>
 #include <math.h>

@@ -1,7 +1,7 @@
 /*
- * ej2_wrong_signature/main.c - a student-style submission for Ejercicio obligatorio 2,
- * written for rayo's grade tests.
- * Mistake: normal_esfera takes double normal[3] instead of the statement's float.
+ * ej2_wrong_signature/main.c - a student-style submission for Ejercicio
+ * obligatorio 2, written for rayo's grade tests.
+ * Mistake: normal_esfera takes double normal[3], not the statement's float.
  */
 #include <float.h>
 #include <math.h>
