@@ -6,8 +6,8 @@
  *
  * The texts are one sentence each, in the student's terms, naming the
  * formula or the statement's line: they go into JSON and one-line
- * reports as they are, so they hold no newline, double quote or
- * backslash (t_course checks).
+ * reports as they are, so they hold no newline, quote or backslash
+ * (t_course checks).
  */
 #include <math.h>
 #include <string.h>
@@ -96,8 +96,8 @@ static const char *const ej3_texts[RAYO_MISTAKE_COUNT] = {
         "the ambient term is missing: C = Ia ka + sum delta_i Ii kd (Li.N) "
         "starts at Ia ka, so the unlit parts must not be black",
     [RAYO_MISTAKE_AMBIENT_NOT_ABSORBED] =
-        "the ambient light is not tinted by the sphere's colour: Ia ka "
-        "belongs in C before the product C (x) M, not added after it",
+        "the ambient light is not tinted by the colour of the sphere: "
+        "Ia ka belongs in C before the product C (x) M, not added after it",
     [RAYO_MISTAKE_LIGHT_REVERSED] =
         "the spheres are lit from the wrong side: Li points from P towards "
         "light i, normalise(posicion - P) for a point light and the given "

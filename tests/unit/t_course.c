@@ -393,13 +393,13 @@ static void test_names(void)
             for (k = 0; text != NULL && text[k] != '\0'; k++)
                 if ((unsigned char)text[k] < 32 ||
                     (unsigned char)text[k] > 126 || text[k] == '"' ||
-                    text[k] == '\\')
+                    text[k] == '\'' || text[k] == '\\')
                     clean = 0;
             if (text != NULL && (strlen(text) < 40 || strlen(text) > 300))
                 clean = 0;
         }
     ok(right, "each exercise's mistakes apply as listed, with a text each");
-    ok(clean, "texts: printable ASCII, no quote or backslash, 40-300 bytes");
+    ok(clean, "texts: printable ASCII, no quotes or backslash, 40-300 bytes");
     ok(strstr(rayo_course_mistake_text(RAYO_COURSE_EJ2,
                                        RAYO_MISTAKE_NO_SHADOWS),
               "II (L.N)") != NULL &&
