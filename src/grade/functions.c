@@ -15,6 +15,8 @@ rayo_status grade_step_functions(grade_context *ctx, rayo_error *err)
     switch (ctx->options->exercise->course) {
     case RAYO_COURSE_EJ2:
         return grade_functions_ej2(ctx, err);
+    case RAYO_COURSE_EJ3:
+        return grade_functions_ej3(ctx, err);
     case RAYO_COURSE_EJ1:
     case RAYO_COURSE_EXERCISES:
     default:

@@ -700,41 +700,34 @@ static const char *sphere_text(const ray_case *rc, size_t i, char *out,
 }
 
 /* One wrong computar_intensidad: the mistake that agrees, named. */
-/* The modelled mistake that gives got (and not the right value), or
-   M_COUNT when none does; exact agreement first, then within 1. */
-static int ray_mistake(const ray_case *rc, double got)
+/* How well each modelled mistake agrees with the results: 2 for each
+   case within 1, 3 when exact. */
+static void mistake_scores(const double *got, unsigned *score)
 {
-    double want = shade(rc, M_NONE).value;
-    int k, pass;
-    for (pass = 0; pass < 2; pass++)
+    unsigned c;
+    int k;
+    for (k = 0; k < M_COUNT; k++)
+        score[k] = 0;
+    for (c = 0; c < RAY_CASES; c++)
         for (k = M_NONE + 1; k < M_COUNT; k++) {
-            double m = shade(rc, k).value;
-            if (fabs(m - want) > 1 && fabs(got - m) <= (pass ? 1 : 0.5))
-                return k;
+            double m = shade(&ray_cases[c], k).value;
+            if (fabs(got[c] - m) <= 1)
+                score[k] += 2 + (fabs(got[c] - m) < 0.5);
         }
-    return M_COUNT;
 }
 
-/* The mistake that agrees with the most of the results (got[k] for ray
-   case k), or M_COUNT when none explains a wrong one. */
-static int likely_mistake(const double *got)
+/* The mistake that gives got for this case (and not the right value)
+   and agrees best with the results overall; M_COUNT when none does. */
+static int ray_mistake(const ray_case *rc, double got,
+                       const unsigned *score)
 {
+    double want = shade(rc, M_NONE).value;
     int k, best = M_COUNT;
-    unsigned c, best_score = 0;
     for (k = M_NONE + 1; k < M_COUNT; k++) {
-        unsigned score = 0, explains = 0;
-        for (c = 0; c < RAY_CASES; c++) {
-            double m = shade(&ray_cases[c], k).value;
-            double want = shade(&ray_cases[c], M_NONE).value;
-            if (fabs(got[c] - m) > 1)
-                continue;
-            score += 2 + (fabs(got[c] - m) < 0.5);
-            explains += fabs(m - want) > 1;
-        }
-        if (explains > 0 && score > best_score) {
+        double m = shade(rc, k).value;
+        if (fabs(m - want) > 1 && fabs(got - m) <= 1 &&
+            (best == M_COUNT || score[k] > score[best]))
             best = k;
-            best_score = score;
-        }
     }
     return best;
 }
@@ -871,11 +864,12 @@ static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
     }
     if (i == F_INTENSIDAD) {
         double got[RAY_CASES];
-        int likely, mistake;
+        unsigned score[M_COUNT];
+        int mistake;
         for (k = 0; k < RAY_CASES; k++)
             if (harness_result(log, names[i], k, &got[k], 1) != 1)
                 return RAYO_OK; /* it ended inside or before */
-        likely = likely_mistake(got);
+        mistake_scores(got, score);
         for (k = 0; k < RAY_CASES; k++) {
             const ray_case *rc = &ray_cases[k];
             cases++;
@@ -884,10 +878,7 @@ static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
             wrong++;
             /* One line per mistake recognised; the same one again
                counted. */
-            mistake = likely < M_COUNT &&
-                              fabs(got[k] - shade(rc, likely).value) <= 1
-                          ? likely
-                          : ray_mistake(rc, got[k]);
+            mistake = ray_mistake(rc, got[k], score);
             if (said & (1u << mistake) || wrong > SAID_PER_FUNCTION + 2) {
                 unsaid++;
                 continue;
