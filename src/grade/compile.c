@@ -138,6 +138,16 @@ static size_t line_at(const char *text, const char *p, const char **start)
  * on the line), *plain the first that is an error of its own.  Each is
  * the start of its line, or NULL when there is none.
  */
+/* 1 when the length bytes at line hold word. */
+static int line_has(const char *line, size_t length, const char *word)
+{
+    size_t n = strlen(word), i;
+    for (i = 0; i + n <= length; i++)
+        if (line[i] == word[0] && memcmp(line + i, word, n) == 0)
+            return 1;
+    return 0;
+}
+
 static void find_errors(const char *text, const char **werror,
                         const char **plain)
 {
@@ -146,10 +156,8 @@ static void find_errors(const char *text, const char **werror,
     *plain = NULL;
     while (*p != '\0') {
         size_t length = strcspn(p, "\n");
-        const char *mark = strstr(p, "error: ");
-        if (mark != NULL && (size_t)(mark - p) < length) {
-            const char *flag = strstr(p, "[-Werror");
-            int is_werror = flag != NULL && (size_t)(flag - p) < length;
+        if (line_has(p, length, "error: ")) {
+            int is_werror = line_has(p, length, "[-Werror");
             if (is_werror && *werror == NULL)
                 *werror = p;
             if (!is_werror && *plain == NULL)
