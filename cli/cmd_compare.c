@@ -190,7 +190,8 @@ static int write_diff(const char *path, const rayo_image *reference,
 
 static int compare_images(const compare_request *req,
                           const rayo_image *reference,
-                          const rayo_image *image)
+                          const rayo_image *image, uint64_t reference_surplus,
+                          uint64_t image_surplus)
 {
     rayo_compare_report report;
     rayo_error err;
@@ -199,6 +200,8 @@ static int compare_images(const compare_request *req,
     if (rayo_compare_images(reference, image, &req->options, &report,
                             &err) != RAYO_OK)
         return cli_report(&err);
+    report.reference_surplus = reference_surplus;
+    report.image_surplus = image_surplus;
     if (req->diff != NULL &&
         (status = write_diff(req->diff, reference, image, &req->options)) != CLI_EXIT_OK)
         return status;
@@ -215,6 +218,7 @@ static int compare_images(const compare_request *req,
 typedef struct input {
     const char *path;
     rayo_image image;
+    rayo_read_report read;
     rayo_error err;
     rayo_status status;
 } input;
@@ -223,7 +227,8 @@ static void *read_input(void *context)
 {
     input *in = context;
     rayo_error_clear(&in->err);
-    in->status = rayo_image_read_file(in->path, &in->image, NULL, &in->err);
+    in->status = rayo_image_read_file(in->path, &in->image, &in->read,
+                                      &in->err);
     return NULL;
 }
 
@@ -260,7 +265,9 @@ int cli_compare(int argc, char **argv)
     image.path = req.image;
     if ((status = read_both(&reference, &image)) != CLI_EXIT_OK)
         return status;
-    status = compare_images(&req, &reference.image, &image.image);
+    status = compare_images(&req, &reference.image, &image.image,
+                            reference.read.trailing_samples,
+                            image.read.trailing_samples);
     rayo_image_free(&reference.image);
     rayo_image_free(&image.image);
     return status;

@@ -153,6 +153,11 @@ typedef struct rayo_compare_tone {
 
 typedef struct rayo_compare_report {
     rayo_compare_kind kind;
+    /* Samples each file held beyond the raster its header promises (a
+       481st row), as the reader found them (reader.h); left 0 by
+       rayo_compare_images, set by a caller that read the files, and
+       printed by the formatters as a note. */
+    uint64_t reference_surplus, image_surplus;
     rayo_compare_tone tone;   /* RAYO_COMPARE_TONE; zero for masks */
     uint32_t reference_width, reference_height;
     uint32_t image_width, image_height;

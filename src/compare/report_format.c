@@ -37,6 +37,39 @@ static void put(sink *s, const char *format, ...)
         s->length += (size_t)n;
 }
 
+/* The note about samples beyond a raster, for each file that had any. */
+static void put_surplus(sink *s, const char *which, uint64_t samples,
+                        uint32_t width, unsigned per_pixel)
+{
+    uint64_t row = (uint64_t)width * per_pixel;
+    if (samples == 0)
+        return;
+    put(s, "note: the %s's file holds %llu sample%s beyond the raster its "
+           "header promises",
+        which, (unsigned long long)samples, samples == 1 ? "" : "s");
+    if (row > 0 && samples % row == 0)
+        put(s, " (%llu more row%s)", (unsigned long long)(samples / row),
+            samples / row == 1 ? "" : "s");
+    put(s, "; they were not compared\n");
+}
+
+void cmp_put_surplus(char *buffer, size_t size, size_t *length,
+                     const rayo_compare_report *r)
+{
+    sink s;
+    unsigned ref_pp = r->kind == RAYO_COMPARE_TONE
+                          ? r->tone.reference_channels : 1;
+    unsigned img_pp = r->kind == RAYO_COMPARE_TONE ? r->tone.image_channels
+                                                   : 1;
+    s.buffer = buffer;
+    s.size = size;
+    s.length = *length;
+    put_surplus(&s, "reference", r->reference_surplus, r->reference_width,
+                ref_pp);
+    put_surplus(&s, "image", r->image_surplus, r->image_width, img_pp);
+    *length = s.length;
+}
+
 /* One sentence (no quotes, no backslashes) saying what went wrong. */
 static void put_diagnosis(sink *s, const rayo_compare_report *r)
 {
@@ -125,6 +158,7 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
     if (r->kind == RAYO_COMPARE_TONE) {
         tone_sink t = {buffer, size, 0};
         tone_format_text(r, &t);
+        cmp_put_surplus(buffer, size, &t.length, r);
         return t.length;
     }
     put(&s, "reference: %ux%u, %llu black pixels\n", r->reference_width,
@@ -151,6 +185,7 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
         put_diagnosis(&s, r);
         put(&s, "\n");
     }
+    cmp_put_surplus(buffer, size, &s.length, r);
     return s.length;
 }
 
@@ -188,6 +223,10 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
             r->offset_x, r->offset_y, r->scale);
     else
         put(&s, ", \"offset\": null, \"scale\": null");
+    if (r->reference_surplus != 0 || r->image_surplus != 0)
+        put(&s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
+            (unsigned long long)r->reference_surplus,
+            (unsigned long long)r->image_surplus);
     put(&s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
             "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),

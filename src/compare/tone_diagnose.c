@@ -173,7 +173,7 @@ static tone_xform best_shift(const tone_image *ref, const tone_image *image,
 }
 
 /* The most common difference (image - reference) of differing pixels,
-   per channel, and whether the reference's black is where it is not. */
+   per channel, leaving out image values that may have been clamped. */
 static void common_offset(const tone_image *ref, const tone_image *image,
                           unsigned levels, int *offset)
 {
@@ -188,7 +188,9 @@ static void common_offset(const tone_image *ref, const tone_image *image,
             const unsigned char *b = tone_pixel(image, x, y);
             for (c = 0; c < n; c++) {
                 int d = (int)b[c] - (int)a[c];
-                if (d > (int)levels || -d > (int)levels)
+                /* values at 0 or 255 may have been clamped there */
+                if (b[c] != 0 && b[c] != 255 &&
+                    (d > (int)levels || -d > (int)levels))
                     hist[c][d + 255]++;
             }
         }

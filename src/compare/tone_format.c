@@ -158,10 +158,19 @@ void tone_put_diagnosis(const rayo_compare_report *r, tone_sink *s)
         put_offset(s, t);
         break;
     case RAYO_DIAGNOSIS_SHIFTED:
-        put(s, "the picture is moved %+d, %+d pixels (right, down): check "
-               "the pixel grid, x = i - ANCHO/2 and rows from y = ALTO/2 at "
-               "the top",
-            r->shift_x, r->shift_y);
+        put(s, "the picture is moved ");
+        if (r->shift_x != 0)
+            put(s, "%d pixel%s %s%s", r->shift_x < 0 ? -r->shift_x
+                                                   : r->shift_x,
+                r->shift_x == 1 || r->shift_x == -1 ? "" : "s",
+                r->shift_x < 0 ? "left" : "right",
+                r->shift_y != 0 ? " and " : "");
+        if (r->shift_y != 0)
+            put(s, "%d row%s %s", r->shift_y < 0 ? -r->shift_y : r->shift_y,
+                r->shift_y == 1 || r->shift_y == -1 ? "" : "s",
+                r->shift_y < 0 ? "up" : "down");
+        put(s, ": check the pixel grid, x = i - ANCHO/2 and rows from y = "
+               "ALTO/2 at the top");
         break;
     case RAYO_DIAGNOSIS_SCALED:
         put(s, "the picture is scaled by %.3f about the centre: a wrong "
@@ -269,6 +278,9 @@ void tone_format_json(const rayo_compare_report *r, tone_sink *s)
             (int)t->first_x, (int)t->first_y);
     else
         put(s, ", \"first_unexplained\": null");
+    put(s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
+        (unsigned long long)r->reference_surplus,
+        (unsigned long long)r->image_surplus);
     put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, \"course\": ",
         t->scale_fit, (unsigned long long)t->differing_scaled);
     if (t->course >= 0)

@@ -145,4 +145,9 @@ void tone_format_text(const rayo_compare_report *r, tone_sink *s);
 void tone_format_json(const rayo_compare_report *r, tone_sink *s);
 void tone_put_diagnosis(const rayo_compare_report *r, tone_sink *s);
 
+/* report_format.c: the notes on samples beyond a raster, appended at
+   *length (snprintf semantics). */
+void cmp_put_surplus(char *buffer, size_t size, size_t *length,
+                     const rayo_compare_report *r);
+
 #endif

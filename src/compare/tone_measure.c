@@ -96,8 +96,15 @@ static int undo(const tone_image *ref, const tone_image *image,
             break;
         /* fall through */
     case TONE_OFFSET:
-        for (c = 0; c < n; c++)
-            u[c] = clamp_level((int)p[c] - t->offset[c]);
+        for (c = 0; c < n; c++) {
+            int moved = (int)r[c] + t->offset[c];
+            /* A value the offset pushed past 0 or 255 was clamped there:
+               it agrees with any reference value that would be. */
+            if ((p[c] == 255 && moved >= 255) || (p[c] == 0 && moved <= 0))
+                u[c] = r[c];
+            else
+                u[c] = clamp_level((int)p[c] - t->offset[c]);
+        }
         break;
     case TONE_WRAPPED:
         for (c = 0; c < n; c++)
