@@ -1570,6 +1570,7 @@ static rayo_status probe_functions(grade_context *ctx, size_t i,
                                    int *ok, char *reason, rayo_error *err)
 {
     harness_text t = {NULL, 0, 0, 0};
+    char *messages = NULL, type[200];
     size_t k;
     rayo_status status;
     harness_append(&t, "\n");
@@ -1579,8 +1580,24 @@ static rayo_status probe_functions(grade_context *ctx, size_t i,
         free(t.data);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     }
-    status = harness_probe(ctx, i, "#include <stddef.h>\n", t.data, ok,
-                           reason, HARNESS_REASON, err);
+    status = harness_probe_full(ctx, i, "#include <stddef.h>\n", t.data,
+                                ok, reason, HARNESS_REASON, &messages, err);
+    /* Our declaration comes second, so the compiler's "have" is ours;
+       the student's type is in its note, when it gives one. */
+    if (status == RAYO_OK && !*ok && count == 1) {
+        char said[HARNESS_REASON];
+        harness_previous_type(messages, functions[which[0]].name, type,
+                              sizeof type);
+        if (strstr(reason, "; have ") != NULL)
+            *strstr(reason, "; have ") = '\0';
+        memcpy(said, reason, sizeof said);
+        if (type[0] != '\0')
+            snprintf(reason, HARNESS_REASON, "the file has %s", type);
+        else
+            snprintf(reason, HARNESS_REASON, "the compiler says: %.300s",
+                     said);
+    }
+    free(messages);
     free(t.data);
     return status;
 }
@@ -1686,8 +1703,8 @@ static rayo_status say_probes(rayo_grade_item *item, const probing *p,
     for (f = 0; f < F_COUNT && status == RAYO_OK; f++)
         if (!p->usable[f] && !(functions[f].types & bad_types))
             status = grade_fail(item, err, "%s: the signature differs from "
-                                           "the statement's %s (the "
-                                           "compiler says: %s); not called",
+                                           "the statement's %s (%s); not "
+                                           "called",
                                 functions[f].name, functions[f].prototype,
                                 p->reasons[f]);
     return status;

@@ -11,6 +11,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
+#include <ctype.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -123,6 +124,15 @@ rayo_status harness_probe(grade_context *ctx, size_t i, const char *before,
                           const char *after, int *ok, char *reason,
                           size_t room, rayo_error *err)
 {
+    return harness_probe_full(ctx, i, before, after, ok, reason, room, NULL,
+                              err);
+}
+
+rayo_status harness_probe_full(grade_context *ctx, size_t i,
+                               const char *before, const char *after,
+                               int *ok, char *reason, size_t room,
+                               char **messages, rayo_error *err)
+{
     char *path = grade_path_join(ctx->dir, "probe.c");
     harness_text t = {NULL, 0, 0, 0};
     char *errors = NULL;
@@ -146,9 +156,44 @@ rayo_status harness_probe(grade_context *ctx, size_t i, const char *before,
         status = harness_cc(ctx, words, 4, ok, &errors, err);
     if (status == RAYO_OK && !*ok)
         harness_first_error(errors, reason, room);
-    free(errors);
+    if (messages != NULL)
+        *messages = errors;
+    else
+        free(errors);
     free(path);
     return status;
+}
+
+void harness_previous_type(const char *errors, const char *name, char *out,
+                           size_t room)
+{
+    const char *p = errors;
+    size_t n = strlen(name);
+    out[0] = '\0';
+    while (p != NULL && (p = strstr(p, "previous ")) != NULL) {
+        const char *line_end = strchr(p, '\n'), *type;
+        const char *at = strstr(p, name);
+        p += 9;
+        if (at == NULL || (line_end != NULL && at > line_end))
+            continue;
+        type = strstr(at + n, " with type ");
+        if (type == NULL || (line_end != NULL && type > line_end))
+            continue;
+        type += 11;
+        /* The type between quotes of any kind (ASCII or UTF-8). */
+        while (*type != '\0' && *type != '\n' &&
+               !isalpha((unsigned char)*type) && *type != '_')
+            type++;
+        {
+            size_t length = line_end != NULL ? (size_t)(line_end - type)
+                                             : strlen(type);
+            while (length > 0 && !isalnum((unsigned char)type[length - 1]) &&
+                   strchr(")*]", type[length - 1]) == NULL)
+                length--;
+            harness_clean(type, length, out, room);
+        }
+        return;
+    }
 }
 
 rayo_status harness_build(grade_context *ctx, const char *source,

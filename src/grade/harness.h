@@ -49,6 +49,18 @@ rayo_status harness_probe(grade_context *ctx, size_t i, const char *before,
                           const char *after, int *ok, char *reason,
                           size_t room, rayo_error *err);
 
+/* The same, and the compiler's messages in *messages (allocated). */
+rayo_status harness_probe_full(grade_context *ctx, size_t i,
+                               const char *before, const char *after,
+                               int *ok, char *reason, size_t room,
+                               char **messages, rayo_error *err);
+
+/* From the messages of a probe that redeclared name: the type of the
+   student's own definition, as the compiler's note "previous definition
+   of NAME with type TYPE" gives it (gcc); "" when there is none. */
+void harness_previous_type(const char *errors, const char *name, char *out,
+                           size_t room);
+
 /* Compiles each source with main renamed to rayo_student_main, then
    source (the harness) with them into ctx->dir/harness, with the extra
    link words (e.g. -Wl,--wrap=realloc) before -lm.  ok when both worked;
