@@ -669,14 +669,14 @@ static void write_value_case(harness_text *t, const value_case *v,
             "(int)l->es_puntual);\n"
             "            fflush(stdout);\n"
             "            if (luz_destruir != 0) {\n"
-            "                printf(\"\\ncall luz_destruir %u\\n\");\n"
+            "                printf(\"\\ncall luz_destruir 0\\n\");\n"
             "                fflush(stdout);\n"
             "                luz_destruir(l);\n"
-            "                printf(\"\\nresult luz_destruir %u 0\\n\");\n"
+            "                printf(\"\\nresult luz_destruir 0 0\\n\");\n"
             "            }\n"
             "        }\n"
             "        fflush(stdout);\n",
-            s != 0, k, k, k, k);
+            s != 0, k, k);
         break;
     default: /* F_DISTANCIA */
         harness_append(t, "        esfera_t e = {{%.9g, %.9g, %.9g}, %.9g, "
@@ -1524,8 +1524,11 @@ static rayo_status probe_types(grade_context *ctx, size_t i, int *state,
         if (ok) {
             state[t] = TYPE_OK;
         } else {
+            /* gcc: unknown type name; clang: also "must use 'struct'
+               tag" for a struct of that name without its typedef. */
             state[t] = strstr(reason, "unknown type name") != NULL ||
-                               strstr(reason, "undeclared") != NULL
+                               strstr(reason, "undeclared") != NULL ||
+                               strstr(reason, "must use 'struct'") != NULL
                            ? TYPE_MISSING
                            : TYPE_WRONG;
             memcpy(reasons[t], reason, sizeof reason);

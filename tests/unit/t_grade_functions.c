@@ -1,0 +1,310 @@
+/*
+ * t_grade_functions.c - the "functions" criterion for the course's
+ * exercises 2 and 3, through its seam (grade_step_functions on a
+ * grade_context built here, with an exercise of our own whose course is
+ * EJ2 or EJ3), so it does not depend on the registry: each fixture of
+ * tests/grade/functions has one mistake, and the criterion must fail on
+ * it with the exact reason line that names it, and pass the right ones
+ * with every function checked.  Also the harness's log reading and the
+ * compiler-note parsing, which need no compiler.
+ *
+ * Needs a C compiler ($CC, else cc), as `rayo grade` does.
+ */
+#define _XOPEN_SOURCE 700
+
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../src/grade/grade_impl.h"
+#include "../../src/grade/harness.h"
+#include "rayo.h"
+#include "tap.h"
+
+typedef struct graded {
+    rayo_grade_report report;
+    rayo_status status;
+} graded;
+
+/* Runs the functions step of exercise course on one fixture file. */
+static void grade_fixture(rayo_course_exercise course, const char *name,
+                          graded *g)
+{
+    static const rayo_grade_exercise ej2 = {
+        "ej2", "test", 640, 480, '2', RAYO_COURSE_EJ2, NULL};
+    static const rayo_grade_exercise ej3 = {
+        "ej3", "test", 640, 480, '3', RAYO_COURSE_EJ3, NULL};
+    const char *root = getenv("RAYO_SOURCE");
+    const char *cc = getenv("CC");
+    char path[PATH_MAX], ccbuf[256];
+    const char *sources[1];
+    char *absolute[1], *words[16], *save = NULL, *w;
+    rayo_grade_options o;
+    grade_context ctx;
+    rayo_error err;
+    size_t n = 0;
+    snprintf(path, sizeof path, "%s/tests/grade/functions/%s",
+             root != NULL ? root : ".", name);
+    snprintf(ccbuf, sizeof ccbuf, "%s",
+             cc != NULL && cc[0] != '\0' ? cc : "cc");
+    for (w = strtok_r(ccbuf, " ", &save); w != NULL && n < 15;
+         w = strtok_r(NULL, " ", &save))
+        words[n++] = w;
+    memset(&g->report, 0, sizeof g->report);
+    rayo_grade_options_init(&o);
+    o.exercise = course == RAYO_COURSE_EJ2 ? &ej2 : &ej3;
+    o.timeout = 5;
+    sources[0] = path;
+    absolute[0] = realpath(path, NULL);
+    memset(&ctx, 0, sizeof ctx);
+    ctx.options = &o;
+    ctx.report = &g->report;
+    ctx.sources = sources;
+    ctx.absolute = absolute;
+    ctx.source_count = 1;
+    ctx.cc = words;
+    ctx.cc_words = n;
+    g->status = absolute[0] == NULL ? RAYO_ERR_IO
+                                    : grade_tempdir_create(&ctx.dir, &err);
+    if (g->status == RAYO_OK)
+        g->status = grade_step_functions(&ctx, &err);
+    if (g->status != RAYO_OK)
+        printf("# %s: %s\n", name, absolute[0] == NULL ? path : err.message);
+    grade_tempdir_remove(ctx.dir);
+    free(absolute[0]);
+}
+
+static const rayo_grade_item *item(const graded *g)
+{
+    return &g->report.items[RAYO_GRADE_FUNCTIONS];
+}
+
+static int has_line(const graded *g, const char *line)
+{
+    size_t i;
+    for (i = 0; i < item(g)->line_count; i++)
+        if (strcmp(item(g)->lines[i], line) == 0)
+            return 1;
+    return 0;
+}
+
+static int starts(const char *line, const char *prefix)
+{
+    return strncmp(line, prefix, strlen(prefix)) == 0;
+}
+
+static void show(const graded *g)
+{
+    size_t i;
+    for (i = 0; i < item(g)->line_count; i++)
+        printf("#   %s\n", item(g)->lines[i]);
+}
+
+/* fails FIXTURE LINE: the criterion fails and says LINE exactly. */
+static void expect_fail(rayo_course_exercise course, const char *fixture,
+                        const char *line)
+{
+    graded g;
+    grade_fixture(course, fixture, &g);
+    is_int(g.status, RAYO_OK, "%s: graded", fixture);
+    is_int(item(&g)->result, RAYO_GRADE_FAIL, "%s: functions fail",
+           fixture);
+    ok(has_line(&g, line), "%s: says '%.60s...'", fixture, line);
+    if (!has_line(&g, line))
+        show(&g);
+    rayo_grade_report_free(&g.report);
+}
+
+static void expect_pass(rayo_course_exercise course, const char *fixture,
+                        size_t lines, const char *line)
+{
+    graded g;
+    grade_fixture(course, fixture, &g);
+    is_int(g.status, RAYO_OK, "%s: graded", fixture);
+    is_int(item(&g)->result, RAYO_GRADE_PASS, "%s: functions pass", fixture);
+    is_int(item(&g)->line_count, lines, "%s: one line per function",
+           fixture);
+    ok(has_line(&g, line), "%s: says '%s'", fixture, line);
+    if (item(&g)->result != RAYO_GRADE_PASS)
+        show(&g);
+    rayo_grade_report_free(&g.report);
+}
+
+static void test_log(void)
+{
+    const char *log = "call norma 0\n1 2 3\nresult norma 0 1.5 -2 inf\n"
+                      "x result norma 1 9\nmissing resta\nmissing restaX\n";
+    double v[4];
+    char text[32];
+    is_int(harness_result(log, "norma", 0, v, 4), 3, "log: three numbers");
+    is_double(v[0], 1.5, 0, "log: the first");
+    is_double(v[1], -2, 0, "log: the second");
+    is_int(harness_result(log, "norma", 1, v, 4), -1,
+           "log: a result not at a line's start is not one");
+    is_int(harness_result(log, "resta", 0, v, 4), -1, "log: no result");
+    ok(harness_missing(log, "resta"), "log: missing resta");
+    ok(!harness_missing(log, "norma"), "log: norma is not missing");
+    ok(!harness_missing(log, "rest"), "log: a prefix is not a name");
+    ok(harness_result_text(log, "norma", 0, text, sizeof text) &&
+           strcmp(text, "1.5 -2 inf") == 0,
+       "log: the result's text");
+}
+
+static void test_notes(void)
+{
+    char type[128];
+    harness_previous_type(
+        "p.c:9:9: error: conflicting types for \xe2\x80\x98" "color_sumar"
+        "\xe2\x80\x99; have \xe2\x80\x98" "color_t(color_t, float)"
+        "\xe2\x80\x99\nx.c:80:9: note: previous definition of "
+        "\xe2\x80\x98" "color_sumar\xe2\x80\x99 with type \xe2\x80\x98"
+        "color_t(color_t,  color_t,  double)\xe2\x80\x99\n",
+        "color_sumar", type, sizeof type);
+    is_string(type, "color_t(color_t,  color_t,  double)",
+              "note: gcc's type, UTF-8 quotes");
+    harness_previous_type("x.c:3:7: note: previous declaration of 'norma' "
+                          "with type 'double(const float *)'\n",
+                          "norma", type, sizeof type);
+    is_string(type, "double(const float *)", "note: ASCII quotes");
+    harness_previous_type("x.c:3:7: note: previous definition is here\n",
+                          "norma", type, sizeof type);
+    is_string(type, "", "note: clang's gives no type");
+}
+
+static void test_ej2(void)
+{
+    expect_pass(RAYO_COURSE_EJ2, "ej2_right.c", 8,
+                "computar_intensidad: right on 11 known inputs");
+    expect_fail(RAYO_COURSE_EJ2, "ej2_resta_reversed.c",
+                "resta(r, (1, 2, 3), (4, 6, 8)) gave (3, 4, 5), which is "
+                "b - a; expected (-3, -4, -5): r = a - b");
+    expect_fail(RAYO_COURSE_EJ2, "ej2_normalizar_copy.c",
+                "normalizar((3, 4, 12)) left a unchanged (3, 4, 12); "
+                "expected (0.2307692, 0.3076923, 0.9230769): normalizar "
+                "divides the array it is given by its norm");
+    expect_fail(RAYO_COURSE_EJ2, "ej2_miss_zero.c",
+                "distancia_esfera((0, 0, 3), 1, (0, 0, 0), (1, 0, 0)) "
+                "returned 0 for a ray that misses the sphere; expected "
+                "INFINITO (FLT_MAX)");
+    expect_fail(RAYO_COURSE_EJ2, "ej2_near_root_always.c",
+                "distancia_esfera((0, 0, 1), 2, (0, 0, 0), (0, 0, 1)) "
+                "returned -1, a root behind the origin (t < 0), for a ray "
+                "that starts inside the sphere; expected 3: when "
+                "beta - sqrt(delta) <= 0 the answer is beta + sqrt(delta)");
+    expect_fail(RAYO_COURSE_EJ2, "ej2_shadow_behind.c",
+                "computar_intensidad on a sphere (0, 0, 3) r 1 with a "
+                "sphere (0, -2.5, 2) r 0.5 below it and the light straight "
+                "up, luz = (0, 1, 0), along d = (0, 0.2873479, 0.9578263) "
+                "returned 5; expected 178: the sphere at (0, -2.5, 2) is on "
+                "the other side of the point, away from the light, and "
+                "casts no shadow: only a sphere hit at t > 0 from P towards "
+                "L does");
+    expect_fail(RAYO_COURSE_EJ2, "ej2_no_intensidad.c",
+                "computar_intensidad: not defined; the statement asks for "
+                "int computar_intensidad(const float cs[][3], const float "
+                "rs[], size_t n_esferas, const float luz[3], const float "
+                "o[3], const float d[3])");
+    expect_fail(RAYO_COURSE_EJ2, "ej2_normal_crash.c",
+                "normal_esfera(n, (1, 2, 3), 2, (1, 2, 5)) crashed: "
+                "segmentation fault (SIGSEGV)");
+    {
+        graded g;
+        grade_fixture(RAYO_COURSE_EJ2, "ej2_norma_double.c", &g);
+        ok(item(&g)->result == RAYO_GRADE_FAIL && item(&g)->line_count > 1 &&
+               starts(item(&g)->lines[1],
+                       "norma: the signature differs from the statement's "
+                       "float norma(const float a[3]) (the compiler says: ") &&
+               (strstr(item(&g)->lines[1], "double") != NULL ||
+                strstr(item(&g)->lines[1], "conflicting types") != NULL),
+           "ej2_norma_double.c: the signature (gcc: with the student's "
+           "double)");
+        ok(has_line(&g, "computar_intensidad: right on 11 known inputs"),
+           "ej2_norma_double.c: the others are still called");
+        rayo_grade_report_free(&g.report);
+    }
+}
+
+static void test_ej3(void)
+{
+    expect_pass(RAYO_COURSE_EJ3, "ej3_right.c", 15,
+                "arreglo_agregar: right on 2 known inputs");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_realloc_direct.c",
+                "arreglo_agregar lost the array when realloc failed: a->v "
+                "became NULL; keep realloc's result in a temporary and "
+                "assign it only when it is not NULL");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_n_first.c",
+                "arreglo_agregar changed a->n from 3 to 4 when realloc "
+                "failed; on failure the array is left exactly as it was");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_beyond_light.c",
+                "computar_intensidad on a sphere (0, 0, 3) r 1, a point "
+                "light at (0, 0, 1) and a sphere (0, 0, -2) r 0.5 beyond "
+                "the light, along d = (0, 0, 1) returned (0.1, 0.1, 0.1); "
+                "expected (0.6, 0.6, 0.6): the sphere at (0, 0, -2) of "
+                "colour (1, 1, 1) lies beyond the point light, not between "
+                "the point and the light, and casts no shadow: only a "
+                "sphere hit at t < |posicion - P| does");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_imprimir_rounds.c",
+                "color_imprimir((0.999, 0.5, 0)) printed \"255 128 0\"; "
+                "expected \"254 127 0\": 255 x 0.999 was rounded; the byte "
+                "is the integer part of 255 c");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_crear_swaps.c",
+                "esfera_crear((0.5, -0.6, 3), 0.3, (1, 0.5, 0.25), 0.3, "
+                "0.8) returned a sphere whose ka is 0.8, not the 0.3 it was "
+                "given");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_luz_always_point.c",
+                "luz_crear((0, 1, 0), (0.2, 0.3, 0.4), false) returned a "
+                "light whose es_puntual is 1, not the 0 it was given");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_normal_unnormalised.c",
+                "computar_intensidad on the course's scene 3, along "
+                "d = (-0.5465762, -0.1642295, 0.8211474) returned "
+                "(0.0955, 0, 0); expected (0.202, 0, 0): as if the normal "
+                "were P - C, not divided by the radius");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_double_vector.c",
+                "vector_t: its member x is not of the statement's type; the "
+                "statement gives typedef struct { float x, y, z; } "
+                "vector_t;");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_no_typedef.c",
+                "not called, as they use a type that is not the "
+                "statement's: vector_producto_interno, vector_norma, "
+                "vector_resta, vector_interpolar_recta, vector_normalizar, "
+                "esfera_crear, esfera_destruir, luz_crear, luz_destruir, "
+                "esfera_distancia, computar_intensidad");
+    {
+        graded g;
+        grade_fixture(RAYO_COURSE_EJ3, "ej3_no_typedef.c", &g);
+        ok(item(&g)->line_count > 0 &&
+               starts(item(&g)->lines[0],
+                       "vector_t: not defined as the statement's type (the "
+                       "compiler says: "),
+           "ej3_no_typedef.c: vector_t is not defined");
+        if (item(&g)->line_count > 0 &&
+            strstr(item(&g)->lines[0], "not defined") == NULL)
+            show(&g);
+        ok(has_line(&g, "color_imprimir: right on 4 known inputs") &&
+               has_line(&g, "arreglo_agregar: right on 2 known inputs"),
+           "ej3_no_typedef.c: the functions without vector_t are called");
+        rayo_grade_report_free(&g.report);
+        grade_fixture(RAYO_COURSE_EJ3, "ej3_sumar_double.c", &g);
+        ok(item(&g)->line_count > 0 &&
+               starts(item(&g)->lines[0],
+                       "color_sumar: the signature differs from the "
+                       "statement's color_t color_sumar(color_t c, color_t "
+                       "m, float p) (") &&
+               (strstr(item(&g)->lines[0], "double") != NULL ||
+                strstr(item(&g)->lines[0], "conflicting types") != NULL),
+           "ej3_sumar_double.c: the signature is named");
+        ok(has_line(&g, "color_absorber: right on 1 known input"),
+           "ej3_sumar_double.c: the others are still called");
+        rayo_grade_report_free(&g.report);
+    }
+}
+
+int main(void)
+{
+    test_log();
+    test_notes();
+    test_ej2();
+    test_ej3();
+    return tap_done();
+}
