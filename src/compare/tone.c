@@ -126,6 +126,8 @@ rayo_status tone_image_make(const rayo_image *image, unsigned channels,
 void tone_image_free(tone_image *t)
 {
     free(t->v);
+    free(t->near);
+    free(t->slope);
     memset(t, 0, sizeof *t);
 }
 
@@ -197,6 +199,12 @@ rayo_status tone_compare(const rayo_image *reference, const rayo_image *image,
     s = tone_image_make(image, channels, &img, err);
     if (s != RAYO_OK) {
         tone_image_free(&ref);
+        return s;
+    }
+    s = tone_image_find_edges(&ref, r->tolerance, options->levels, err);
+    if (s != RAYO_OK) {
+        tone_image_free(&ref);
+        tone_image_free(&img);
         return s;
     }
     r->kind = RAYO_COMPARE_TONE;

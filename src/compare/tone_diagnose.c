@@ -31,9 +31,19 @@ typedef struct choice {
     int mistake; /* >= 0: a course mistake instead of t */
 } choice;
 
+/* Caps a candidate's pass at what could still make it fit (consider). */
+static void cap(tone_xform *t, const rayo_compare_report *r)
+{
+    t->capped = 1;
+    t->max_unexplained = r->tone.unexplained / CLOSE_REDUCTION;
+    t->max_differing = r->tone.differing / 2;
+}
+
 static void consider(choice *ch, const rayo_compare_report *r,
                      const tone_counts *k, const tone_xform *t, int mistake)
 {
+    if (k->stopped)
+        return;
     if ((k->unexplained != 0 &&
          k->unexplained * CLOSE_REDUCTION > r->tone.unexplained) ||
         2 * k->differing > r->tone.differing)
@@ -55,7 +65,9 @@ static void try_xform(choice *ch, const tone_image *ref,
                       const tone_xform *t)
 {
     tone_counts k;
-    tone_measure(ref, image, t, r->tolerance, r->tone.levels, 0, &k);
+    tone_xform capped = *t;
+    cap(&capped, r);
+    tone_measure(ref, image, &capped, r->tolerance, r->tone.levels, 0, &k);
     consider(ch, r, &k, t, -1);
 }
 
@@ -84,10 +96,17 @@ static rayo_status detect_course(const tone_image *ref,
         return s;
     s = tone_image_make(&render, ref->channels, &t, err);
     rayo_image_free(&render);
-    if (s != RAYO_OK)
+    if (s == RAYO_OK)
+        s = tone_image_find_edges(&t, r->tolerance, r->tone.levels, err);
+    if (s != RAYO_OK) {
+        tone_image_free(&t);
         return s;
+    }
+    id.capped = 1; /* one unexplained pixel settles it */
+    id.max_unexplained = 0;
+    id.max_differing = UINT64_MAX;
     tone_measure(&t, ref, &id, r->tolerance, r->tone.levels, 0, &k);
-    if (k.unexplained == 0)
+    if (!k.stopped && k.unexplained == 0)
         *course = (int)e;
     tone_image_free(&t);
     return RAYO_OK;
@@ -116,8 +135,13 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
             return s;
         s = tone_image_make(&render, image->channels, &t, err);
         rayo_image_free(&render);
-        if (s != RAYO_OK)
+        if (s == RAYO_OK)
+            s = tone_image_find_edges(&t, r->tolerance, r->tone.levels, err);
+        if (s != RAYO_OK) {
+            tone_image_free(&t);
             return s;
+        }
+        cap(&id, r);
         tone_measure(&t, image, &id, r->tolerance, r->tone.levels, 0, &k);
         tone_image_free(&t);
         consider(ch, r, &k, NULL, m);
@@ -162,7 +186,7 @@ static tone_xform best_shift(const tone_image *ref, const tone_image *image,
                 continue;
             t.dx = dx;
             t.dy = dy;
-            tone_measure(ref, image, &t, 0, levels, 0, &k);
+            tone_measure(ref, image, &t, 0, levels, -1, &k);
             if (k.differing < *fewest) {
                 *fewest = k.differing;
                 best = t;
@@ -279,7 +303,7 @@ static rayo_status differing_from(const tone_image *image, int course,
     rayo_image_free(&render);
     if (s != RAYO_OK)
         return s;
-    tone_measure(&t, image, &id, 0, 0, 0, &k);
+    tone_measure(&t, image, &id, 0, 0, -1, &k);
     *count = k.differing;
     tone_image_free(&t);
     return RAYO_OK;
@@ -331,7 +355,7 @@ static void judge_close(const tone_image *ref, const tone_image *image,
     r->verdict = RAYO_VERDICT_CONSISTENT;
     if (t.dx > 1 || t.dx < -1 || t.dy > 1 || t.dy < -1)
         return; /* far shifts are rounding's look-alikes only when tiny */
-    tone_measure(ref, image, &t, 0, r->tone.levels, 0, &k);
+    tone_measure(ref, image, &t, 0, r->tone.levels, -1, &k);
     if (2 * k.differing > r->tone.differing)
         return;
     r->verdict = RAYO_VERDICT_INCONSISTENT;

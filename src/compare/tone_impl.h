@@ -28,6 +28,13 @@ typedef struct tone_image {
     uint32_t width, height;
     unsigned channels;
     unsigned char *v; /* owned */
+    /* tone_image_find_edges: 1 where an edge lies within near_radius
+       (levels near_levels); NULL until then.  Owned. */
+    unsigned char *near;
+    unsigned char *slope; /* the largest step of the shading (not an
+                             edge) within near_radius; owned */
+    int near_radius;
+    unsigned near_levels;
 } tone_image;
 
 static inline const unsigned char *tone_pixel(const tone_image *t,
@@ -47,6 +54,12 @@ int tone_has_colour(const rayo_image *image);
 rayo_status tone_image_make(const rayo_image *image, unsigned channels,
                             tone_image *out, rayo_error *err);
 void tone_image_free(tone_image *t);
+
+/* Marks, once, the pixels of t within the tolerance of an edge (for
+   levels), so tone_measure, used with t as the reference, needs not look
+   around every differing pixel for one. */
+rayo_status tone_image_find_edges(tone_image *t, double tolerance,
+                                  unsigned levels, rayo_error *err);
 
 /* A candidate mistake undone on the image, as it is read at a pixel of
    the reference's frame. */
@@ -73,6 +86,11 @@ typedef struct tone_xform {
     unsigned char perm[3];
     int offset[3];
     uint32_t step;   /* sample every step-th row and column (>= 1) */
+    /* capped: stop the pass (tone_counts.stopped) once more than
+       max_unexplained pixels are unexplained or more than max_differing
+       differ: a candidate that cannot win is not measured to the end. */
+    int capped;
+    uint64_t max_unexplained, max_differing;
 } tone_xform;
 
 /* A transform that changes nothing. */
@@ -85,13 +103,15 @@ typedef struct tone_counts {
     unsigned max_difference[3], max_edge_difference;
     double sum_squares[3];
     int32_t first_x, first_y;
+    int stopped;          /* a cap of the transform was passed */
 } tone_counts;
 
 /*
- * Compares ref with image undone by t.  classify: sort the explained
- * differences into edges and shading (else they all count as
- * in_shading).  With ref->width != image->width or heights different,
- * the image is laid on the reference's frame centred.
+ * Compares ref with image undone by t.  classify 1: sort the explained
+ * differences into edges and shading; 0: count them all as in_shading;
+ * -1: only count the differences, explaining none (unexplained stays
+ * 0).  With sizes that differ, the image is laid on the reference's
+ * frame centred.
  */
 void tone_measure(const tone_image *ref, const tone_image *image,
                   const tone_xform *t, double tolerance, unsigned levels,

@@ -17,6 +17,7 @@
  * costs about one read of each image.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "tone_impl.h"
@@ -228,7 +229,11 @@ static int explained(const tone_image *ref, uint32_t x, uint32_t y,
             (int)u[c] <= hi[c] + (int)levels)
             continue;
         if (slack < 0)
-            slack = (int)(levels + shading_step(ref, x, y, radius, levels));
+            slack = (int)levels +
+                    (int)(ref->slope != NULL && ref->near_radius == radius &&
+                                  ref->near_levels == levels
+                              ? ref->slope[(size_t)y * ref->width + x]
+                              : shading_step(ref, x, y, radius, levels));
         if ((int)u[c] + slack < lo[c] || (int)u[c] > hi[c] + slack)
             return 0;
     }
@@ -239,6 +244,9 @@ static int near_edge(const tone_image *ref, uint32_t x, uint32_t y,
                      int radius, unsigned levels)
 {
     int dx, dy;
+    if (ref->near != NULL && ref->near_radius == radius &&
+        ref->near_levels == levels)
+        return ref->near[(size_t)y * ref->width + x];
     for (dy = -radius; dy <= radius; dy++)
         for (dx = -radius; dx <= radius; dx++) {
             int64_t xx = (int64_t)x + dx, yy = (int64_t)y + dy;
@@ -280,6 +288,8 @@ void tone_measure(const tone_image *ref, const tone_image *image,
             if (worst <= levels)
                 continue;
             k->differing++;
+            if (classify < 0)
+                continue;
             if (explained(ref, x, y, u, radius, levels)) {
                 if (classify && near_edge(ref, x, y, radius, levels)) {
                     k->at_edges++;
@@ -296,7 +306,117 @@ void tone_measure(const tone_image *ref, const tone_image *image,
                 k->first_x = (int32_t)x;
                 k->first_y = (int32_t)y;
             }
+            if (t->capped && (k->unexplained > t->max_unexplained ||
+                              k->differing > t->max_differing)) {
+                k->stopped = 1;
+                return;
+            }
         }
+}
+
+/* A step stands out when it is more than the levels and more than twice
+   the steps on either side of it (0 outside the frame). */
+static int stands_out(unsigned step, unsigned before, unsigned after,
+                      unsigned levels)
+{
+    return step > levels && step > 2 * (before > after ? before : after);
+}
+
+/* Running maximum of in over [i - r, i + r], into out (strided). */
+static void max_line(const unsigned char *in, size_t stride, unsigned char *out,
+                     uint32_t n, int radius)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        int64_t j, lo = (int64_t)i - radius, hi = (int64_t)i + radius;
+        unsigned char best = 0;
+        for (j = lo < 0 ? 0 : lo; j <= hi && j < n; j++)
+            if (in[(size_t)j * stride] > best)
+                best = in[(size_t)j * stride];
+        out[(size_t)i * stride] = best;
+    }
+}
+
+/* The window maximum of map (radius in x and y), in place, with scratch
+   of the same size. */
+static void window_max(unsigned char *map, unsigned char *scratch,
+                       uint32_t w, uint32_t h, int radius)
+{
+    uint32_t x, y;
+    for (y = 0; y < h; y++)
+        max_line(map + (size_t)y * w, 1, scratch + (size_t)y * w, w, radius);
+    for (x = 0; x < w; x++)
+        max_line(scratch + x, w, map + x, h, radius);
+}
+
+rayo_status tone_image_find_edges(tone_image *t, double tolerance,
+                                  unsigned levels, rayo_error *err)
+{
+    size_t n = (size_t)t->width * t->height, i;
+    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    unsigned char *hs, *vs, *edge, *slope;
+    uint32_t x, y, w = t->width, h = t->height;
+    if (t->near != NULL && t->near_radius == radius &&
+        t->near_levels == levels)
+        return RAYO_OK;
+    free(t->near);
+    free(t->slope);
+    t->near = t->slope = NULL;
+    hs = malloc(n);
+    vs = malloc(n);
+    edge = malloc(n);
+    slope = malloc(n);
+    if (hs == NULL || vs == NULL || edge == NULL || slope == NULL) {
+        free(hs);
+        free(vs);
+        free(edge);
+        free(slope);
+        return rayo_error_set(err, RAYO_ERR_NOMEM,
+                              "compare: out of memory for the edges of a "
+                              "%ux%u image",
+                              w, h);
+    }
+    /* hs: the step to the right neighbour, vs: to the one below. */
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            i = (size_t)y * w + x;
+            hs[i] = (unsigned char)(x + 1 < w
+                                        ? step_between(t, x, y, x + 1, y)
+                                        : 0);
+            vs[i] = (unsigned char)(y + 1 < h
+                                        ? step_between(t, x, y, x, y + 1)
+                                        : 0);
+        }
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            unsigned right, left, down, up, smooth = 0;
+            i = (size_t)y * w + x;
+            right = x + 1 < w && stands_out(hs[i], x > 0 ? hs[i - 1] : 0,
+                                            x + 2 < w ? hs[i + 1] : 0,
+                                            levels);
+            left = x > 0 && stands_out(hs[i - 1], x > 1 ? hs[i - 2] : 0,
+                                       hs[i], levels);
+            down = y + 1 < h && stands_out(vs[i], y > 0 ? vs[i - w] : 0,
+                                           y + 2 < h ? vs[i + w] : 0,
+                                           levels);
+            up = y > 0 && stands_out(vs[i - w], y > 1 ? vs[i - 2 * w] : 0,
+                                     vs[i], levels);
+            edge[i] = (unsigned char)(right || left || down || up);
+            if (!right && hs[i] > smooth)
+                smooth = hs[i];
+            if (!down && vs[i] > smooth)
+                smooth = vs[i];
+            slope[i] = (unsigned char)smooth;
+        }
+    window_max(edge, hs, w, h, radius);
+    window_max(slope, hs, w, h, radius);
+    free(hs);
+    free(vs);
+    t->near = edge;
+    t->slope = slope;
+    t->near_radius = radius;
+    t->near_levels = levels;
+    return RAYO_OK;
 }
 
 static double squares_of(const tone_counts *k)
@@ -319,7 +439,7 @@ double tone_best_scale(const tone_image *ref, const tone_image *image,
     ratio = pow(hi / lo, 1.0 / (scan - 1));
     for (i = 0; i < scan; i++) {
         t.scale = lo * pow(ratio, i);
-        tone_measure(ref, image, &t, 0, levels, 0, &k);
+        tone_measure(ref, image, &t, 0, levels, -1, &k);
         if (squares_of(&k) < fewest) {
             fewest = squares_of(&k);
             best = t.scale;
@@ -329,7 +449,7 @@ double tone_best_scale(const tone_image *ref, const tone_image *image,
     hi = best * ratio;
     for (i = 0; i < fine; i++) {
         t.scale = lo + (hi - lo) * i / (fine - 1);
-        tone_measure(ref, image, &t, 0, levels, 0, &k);
+        tone_measure(ref, image, &t, 0, levels, -1, &k);
         if (squares_of(&k) < fewest) {
             fewest = squares_of(&k);
             best = t.scale;
@@ -337,10 +457,10 @@ double tone_best_scale(const tone_image *ref, const tone_image *image,
     }
     t.step = 1;
     t.scale = 1;
-    tone_measure(ref, image, &t, 0, levels, 0, &k);
+    tone_measure(ref, image, &t, 0, levels, -1, &k);
     none = squares_of(&k);
     t.scale = best;
-    tone_measure(ref, image, &t, 0, levels, 0, &k);
+    tone_measure(ref, image, &t, 0, levels, -1, &k);
     *left = k.differing;
     *gain = squares_of(&k) > 0 ? none / squares_of(&k) : HUGE_VAL;
     return best;

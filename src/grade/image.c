@@ -166,10 +166,22 @@ static rayo_status judge_tone(rayo_grade_item *item,
 {
     const rayo_compare_tone *t = &r->tone;
     char sentence[1024];
-    if (r->verdict == RAYO_VERDICT_IDENTICAL) {
+    unsigned c, largest = 0;
+    for (c = 0; c < t->channels; c++)
+        if (t->channel[c].max_difference > largest)
+            largest = t->channel[c].max_difference;
+    if (r->verdict == RAYO_VERDICT_IDENTICAL && largest == 0) {
         item->result = RAYO_GRADE_PASS;
         return grade_say(item, err, "identical to the reference, pixel for "
                                     "pixel");
+    }
+    if (r->verdict == RAYO_VERDICT_IDENTICAL) {
+        item->result = RAYO_GRADE_PASS;
+        return grade_say(item, err, "the same as the reference to within "
+                                    "%u level%s in every %s (rounding, "
+                                    "float precision)",
+                         t->levels, t->levels == 1 ? "" : "s",
+                         t->channels == 1 ? "pixel" : "channel");
     }
     if (r->verdict == RAYO_VERDICT_CONSISTENT) {
         item->result = RAYO_GRADE_PASS;
