@@ -160,6 +160,8 @@ install: all
 	install -m 644 include/rayo.h $(DESTDIR)$(PREFIX)/include/rayo.h
 	install -m 644 include/rayo/*.h $(DESTDIR)$(PREFIX)/include/rayo/
 	install -m 644 man/rayo.1 $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1
+	install -d $(DESTDIR)$(PREFIX)/share/rayo/course
+	install -m 644 data/course/*.png $(DESTDIR)$(PREFIX)/share/rayo/course/
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(shell sed -n 's/^#define RAYO_VERSION "\(.*\)"/\1/p' include/rayo.h)|g' \
 	    rayo.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc
 
@@ -168,7 +170,7 @@ uninstall:
 	    $(DESTDIR)$(PREFIX)/include/rayo.h \
 	    $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1 \
 	    $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc
-	rm -rf $(DESTDIR)$(PREFIX)/include/rayo
+	rm -rf $(DESTDIR)$(PREFIX)/include/rayo $(DESTDIR)$(PREFIX)/share/rayo
 
 clean:
 	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-fuzz esfera.pbm esfera.png

@@ -75,6 +75,11 @@ int cli_parse_double(const char *option, const char *text, double *value);
 int cli_parse_numbers(const char *option, const char *text, size_t count,
                       const char *shape, double *values);
 
+/* grade --reference course: the path of the course's reference image
+   for exercise ("ej1", ...) into path; 0 when it is not installed
+   (course_data.c says where it looks). */
+int cli_course_reference(const char *exercise, char *path, size_t room);
+
 /* 1 when standard output is a terminal (so binary output is refused). */
 int cli_stdout_is_terminal(void);
 

@@ -18,6 +18,7 @@
 
 typedef struct grade_request {
     rayo_grade_options options;
+    char course_reference[4096]; /* --reference course, resolved */
     int json, each;
 } grade_request;
 
@@ -50,7 +51,9 @@ static void print_help(void)
         "      --exercise NAME    the exercise (default ej1)\n"
         "      --reference FILE   compare with this image instead of the "
         "exercise's\n"
-        "                         reference rendered by rayo\n"
+        "                         reference rendered by rayo; 'course': "
+        "the course's\n"
+        "                         own image (referencia-catedra-ejN.png)\n"
         "      --diff OUT.png     keep the difference picture\n"
         "      --json             the report as JSON\n"
         "      --each             DIRECTORY holds one folder per student: "
@@ -181,6 +184,20 @@ static int parse_request(int argc, char **argv, grade_request *req)
     if (req->each && req->options.diff != NULL)
         return cli_usage_error("--diff: applies to one submission, not to "
                                "--each");
+    if (req->options.reference != NULL &&
+        strcmp(req->options.reference, "course") == 0) {
+        const char *name = req->options.exercise->name;
+        if (!cli_course_reference(name, req->course_reference,
+                                  sizeof req->course_reference))
+            return cli_usage_error("--reference course: the course's image "
+                                   "for %s (referencia-catedra-%s.png) is "
+                                   "not installed; looked in "
+                                   "$RAYO_DATA_DIR/course and beside the "
+                                   "command (../data/course, "
+                                   "../share/rayo/course)",
+                                   name, name);
+        req->options.reference = req->course_reference;
+    }
     return CLI_EXIT_OK;
 }
 

@@ -40,6 +40,33 @@ static unsigned char clamp_level(int v)
     return (unsigned char)(v < 0 ? 0 : v > 255 ? 255 : v);
 }
 
+/* The image read at reference pixel (x, y) scaled by s about the
+   optical centre, between pixels by bilinear interpolation (so the
+   scale search sees gradients move smoothly); 0 outside the image. */
+static int undo_scaled(const tone_image *ref, const tone_image *image,
+                       double s, uint32_t x, uint32_t y, unsigned char *u)
+{
+    double fx = s * ((double)x - ref->width / 2) + image->width / 2;
+    double fy = s * ((double)y - ref->height / 2) + image->height / 2;
+    double x0 = floor(fx), y0 = floor(fy), ax = fx - x0, ay = fy - y0;
+    int64_t ix = (int64_t)x0, iy = (int64_t)y0, jx, jy;
+    unsigned c;
+    if (ix < 0 || iy < 0 || ix >= image->width || iy >= image->height)
+        return 0;
+    jx = ix + 1 < image->width ? ix + 1 : ix;
+    jy = iy + 1 < image->height ? iy + 1 : iy;
+    for (c = 0; c < ref->channels; c++) {
+        double a = tone_pixel(image, (uint32_t)ix, (uint32_t)iy)[c];
+        double b = tone_pixel(image, (uint32_t)jx, (uint32_t)iy)[c];
+        double d = tone_pixel(image, (uint32_t)ix, (uint32_t)jy)[c];
+        double e = tone_pixel(image, (uint32_t)jx, (uint32_t)jy)[c];
+        double v = (a * (1 - ax) + b * ax) * (1 - ay) +
+                   (d * (1 - ax) + e * ax) * ay;
+        u[c] = (unsigned char)floor(v + 0.5);
+    }
+    return 1;
+}
+
 /* The image's pixel for reference pixel (x, y), undone by t, into u;
    0 when it falls outside the image. */
 static int undo(const tone_image *ref, const tone_image *image,
@@ -67,12 +94,7 @@ static int undo(const tone_image *ref, const tone_image *image,
         ry += t->dy;
         break;
     case TONE_SCALE:
-        rx = (int64_t)floor(t->scale * (double)(rx - ref->width / 2) + 0.5) +
-             ref->width / 2;
-        ry = (int64_t)floor(t->scale * (double)(ry - ref->height / 2) +
-                            0.5) +
-             ref->height / 2;
-        break;
+        return undo_scaled(ref, image, t->scale, x, y, u);
     default:
         break;
     }

@@ -218,11 +218,45 @@ static rayo_status judge_tone(rayo_grade_item *item,
     }
 }
 
+/* The course's references for EJ1 and EJ2 were drawn with a focal
+   distance about 0.47% longer than the formula's (z = 321.5 for 320,
+   pi computed as sqrt(9.81)): when the scale that best lays one picture
+   on the other is that, say which one follows the formula. */
+#define COURSE_FOCAL_SCALE 1.0047
+
+static rayo_status say_focal(rayo_grade_item *item,
+                             const rayo_compare_report *r, rayo_error *err)
+{
+    double s = r->tone.scale_fit;
+    if (r->kind != RAYO_COMPARE_TONE || s == 1)
+        return RAYO_OK;
+    if (fabs(1 / s - COURSE_FOCAL_SCALE) < 0.002)
+        return grade_say(item, err, "note: the reference's picture is "
+                                    "%.4f times yours about the centre: it "
+                                    "was drawn with the course's focal "
+                                    "distance, z = 321.5 (pi as sqrt(9.81)), "
+                                    "where the formula gives 320; that is "
+                                    "why outlines and shadow edges differ",
+                         1 / s);
+    if (fabs(s - COURSE_FOCAL_SCALE) < 0.002)
+        return grade_say(item, err, "note: your picture is %.4f times the "
+                                    "reference's about the centre: z = "
+                                    "ANCHO / (2 tan(FOV/2)) gives 320, and "
+                                    "yours is about 321.5, the course's own "
+                                    "value (is PI sqrt(9.81)?)",
+                         s);
+    return RAYO_OK;
+}
+
 static rayo_status judge(rayo_grade_item *item, const rayo_compare_report *r,
                          rayo_error *err)
 {
-    return r->kind == RAYO_COMPARE_TONE ? judge_tone(item, r, err)
-                                        : judge_mask(item, r, err);
+    rayo_status status = r->kind == RAYO_COMPARE_TONE
+                             ? judge_tone(item, r, err)
+                             : judge_mask(item, r, err);
+    if (status == RAYO_OK && r->verdict != RAYO_VERDICT_INCONSISTENT)
+        status = say_focal(item, r, err);
+    return status;
 }
 
 static rayo_status write_diff(rayo_grade_item *item, const char *path,

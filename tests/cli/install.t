@@ -8,11 +8,17 @@ prefix="$TMP/prefix"
 make -s -C "$RAYO_SOURCE" install BUILD="$RAYO_BUILD" PREFIX="$prefix" >"$TMP/make.out" 2>&1
 ok $? "make install PREFIX=... succeeds"
 for f in bin/rayo lib/librayo.a include/rayo.h include/rayo/ejercicio1.h \
-         include/rayo/render.h lib/pkgconfig/rayo.pc share/man/man1/rayo.1; do
+         include/rayo/render.h include/rayo/course.h lib/pkgconfig/rayo.pc \
+         share/man/man1/rayo.1 share/rayo/course/referencia-catedra-ej2.png; do
     ok "$([ -f "$prefix/$f" ]; echo $?)" "installs $f"
 done
 "$prefix/bin/rayo" -W 8 -H 4 >"$TMP/small.pbm"
 is "$(head -n 2 "$TMP/small.pbm" | tr '\n' ' ')" "P1 8 4 " "the installed rayo runs"
+"$prefix/bin/rayo" grade --exercise ej2 --reference course --no-valgrind \
+    --cc "${RAYO_CC:-cc}" "$RAYO_SOURCE/tests/grade/ej2_pi_course/main.c" >"$TMP/course.out" 2>&1
+grep -q '^image  *pass  *the same as the reference' "$TMP/course.out"
+ok $? "the installed rayo finds the course's image: --reference course"
+[ $? -eq 0 ] || sed 's/^/#   /' "$TMP/course.out"
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
 is "$(pkg-config --modversion rayo)" "$(sed -n 's/^#define RAYO_VERSION "\(.*\)"/\1/p' "$RAYO_SOURCE/include/rayo.h")" "pkg-config knows rayo's version"
 ${RAYO_CC:-cc} -std=c99 -Wall -Werror -pedantic -o "$TMP/student" \

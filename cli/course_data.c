@@ -1,0 +1,62 @@
+/*
+ * course_data.c - where the course's own reference images are on this
+ * machine, for `rayo grade --reference course`.
+ *
+ * They are data files, not code (data/course/ in the source tree,
+ * PREFIX/share/rayo/course/ once installed), looked for in this order:
+ * $RAYO_DATA_DIR/course, then beside the running command
+ * (DIR/../data/course for build/rayo in a work tree, DIR/../share/rayo/
+ * course for PREFIX/bin/rayo).  Finding files is the command's job; the
+ * library only ever gets a path.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+
+static int readable(const char *path)
+{
+    return access(path, R_OK) == 0;
+}
+
+/* dir + "/" + file into out; 0 when it does not fit. */
+static int join(char *out, size_t room, const char *dir, const char *file)
+{
+    int n = snprintf(out, room, "%s/%s", dir, file);
+    return n > 0 && (size_t)n < room;
+}
+
+int cli_course_reference(const char *exercise, char *path, size_t room)
+{
+    static const char *const beside[] = {"../data/course",
+                                         "../share/rayo/course"};
+    char file[64], exe[4096], dir[4096 + 32];
+    const char *env = getenv("RAYO_DATA_DIR");
+    ssize_t n;
+    size_t i;
+    char *slash;
+    snprintf(file, sizeof file, "referencia-catedra-%s.png", exercise);
+    if (env != NULL && env[0] != '\0') {
+        snprintf(dir, sizeof dir, "%s/course", env);
+        if (join(path, room, dir, file) && readable(path))
+            return 1;
+    }
+    n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n <= 0)
+        return 0;
+    exe[n] = '\0';
+    slash = strrchr(exe, '/');
+    if (slash == NULL)
+        return 0;
+    *slash = '\0';
+    for (i = 0; i < sizeof beside / sizeof beside[0]; i++) {
+        snprintf(dir, sizeof dir, "%s/%s", exe, beside[i]);
+        if (join(path, room, dir, file) && readable(path))
+            return 1;
+    }
+    return 0;
+}
