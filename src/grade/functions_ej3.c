@@ -708,16 +708,20 @@ static const char agregar_source[] =
     "        void *saved[70];\n"
     "        void **before;\n"
     "        size_t n, i;\n"
-    "        int r0, r1, r2, r, same = 1;\n"
+    "        int r0, r1, r2, r, same = 1, guard;\n"
     "        printf(\"\\ncall arreglo_agregar 0\\n\");\n"
     "        fflush(stdout);\n"
     "        r0 = arreglo_agregar(&a, &x[0]);\n"
     "        r1 = arreglo_agregar(&a, &x[1]);\n"
     "        r2 = arreglo_agregar(&a, &x[2]);\n"
+    "        guard = (void *)a.v != (void *)rayo_last_block ||\n"
+    "                rayo_guard_intact();\n"
     "        for (i = 0; i < 3 && a.v != NULL && a.n == 3; i++)\n"
     "            same &= a.v[i] == (void *)&x[i];\n"
-    "        printf(\"\\nresult arreglo_agregar 0 %d %d %d %lu %d %d\\n\",\n"
-    "               r0, r1, r2, (unsigned long)a.n, a.v != NULL, same);\n"
+    "        printf(\"\\nresult arreglo_agregar 0 %d %d %d %lu %d %d %d "
+    "%lu\\n\",\n"
+    "               r0, r1, r2, (unsigned long)a.n, a.v != NULL, same,\n"
+    "               guard, (unsigned long)rayo_last_size);\n"
     "        fflush(stdout);\n"
     "        if (a.v == NULL || a.n != 3 || !same)\n"
     "            return 0;\n"
@@ -787,22 +791,48 @@ static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
     harness_append(t, "    }\n");
 }
 
+/* The allocation functions as the student's objects see them: made to
+   fail while rayo_fail_alloc is set; otherwise each block has 32 guard
+   bytes past the size asked for, so that a write past its end is seen
+   (the last block and its size are kept). */
 static const char wrap_source[] =
+    "#define RAYO_GUARD 32\n"
     "static int rayo_fail_alloc;\n"
     "static unsigned rayo_alloc_tries;\n"
+    "static unsigned char *rayo_last_block;\n"
+    "static size_t rayo_last_size;\n"
     "void *__real_malloc(size_t);\n"
     "void *__real_calloc(size_t, size_t);\n"
     "void *__real_realloc(void *, size_t);\n"
     "void *__wrap_malloc(size_t n);\n"
     "void *__wrap_calloc(size_t n, size_t m);\n"
     "void *__wrap_realloc(void *p, size_t n);\n"
+    "static void *rayo_guard(void *p, size_t n)\n"
+    "{\n"
+    "    if (p != NULL) {\n"
+    "        memset((unsigned char *)p + n, 0xa5, RAYO_GUARD);\n"
+    "        rayo_last_block = p;\n"
+    "        rayo_last_size = n;\n"
+    "    }\n"
+    "    return p;\n"
+    "}\n"
+    "static int rayo_guard_intact(void)\n"
+    "{\n"
+    "    size_t i;\n"
+    "    for (i = 0; i < RAYO_GUARD; i++)\n"
+    "        if (rayo_last_block[rayo_last_size + i] != 0xa5)\n"
+    "            return 0;\n"
+    "    return 1;\n"
+    "}\n"
     "void *__wrap_malloc(size_t n)\n"
     "{\n"
     "    if (rayo_fail_alloc) {\n"
     "        rayo_alloc_tries++;\n"
     "        return NULL;\n"
     "    }\n"
-    "    return __real_malloc(n);\n"
+    "    if (n > (size_t)-1 - RAYO_GUARD)\n"
+    "        return NULL;\n"
+    "    return rayo_guard(__real_malloc(n + RAYO_GUARD), n);\n"
     "}\n"
     "void *__wrap_calloc(size_t n, size_t m)\n"
     "{\n"
@@ -810,7 +840,9 @@ static const char wrap_source[] =
     "        rayo_alloc_tries++;\n"
     "        return NULL;\n"
     "    }\n"
-    "    return __real_calloc(n, m);\n"
+    "    if (m != 0 && n > ((size_t)-1 - RAYO_GUARD) / m)\n"
+    "        return NULL;\n"
+    "    return rayo_guard(__real_calloc(n * m + RAYO_GUARD, 1), n * m);\n"
     "}\n"
     "void *__wrap_realloc(void *p, size_t n)\n"
     "{\n"
@@ -818,7 +850,9 @@ static const char wrap_source[] =
     "        rayo_alloc_tries++;\n"
     "        return NULL;\n"
     "    }\n"
-    "    return __real_realloc(p, n);\n"
+    "    if (n > (size_t)-1 - RAYO_GUARD)\n"
+    "        return NULL;\n"
+    "    return rayo_guard(__real_realloc(p, n + RAYO_GUARD), n);\n"
     "}\n";
 
 static char *harness_source(const int *usable)
@@ -1218,11 +1252,19 @@ static rayo_status judge_crear(judging *j, unsigned k, rayo_error *err)
 
 static rayo_status judge_agregar(judging *j, rayo_error *err)
 {
-    double r[7];
-    int count = harness_result(j->log, "arreglo_agregar", 0, r, 6);
-    if (count < 6)
+    double r[8];
+    int count = harness_result(j->log, "arreglo_agregar", 0, r, 8);
+    if (count < 8)
         return RAYO_ERR_CANCELLED;
     j->cases++;
+    if (r[6] == 0)
+        return wrong_line(j, err, "arreglo_agregar wrote past the end of "
+                                  "a->v: after three additions to an empty "
+                                  "array its last realloc asked for %g "
+                                  "bytes, and a pointer was written beyond "
+                                  "them; ask for (a->n + 1) * sizeof(void *) "
+                                  "before writing a->v[a->n]",
+                          r[7]);
     if (r[0] == 0 || r[1] == 0 || r[2] == 0)
         return wrong_line(j, err, "arreglo_agregar returned false while "
                                   "adding three elements to an empty "

@@ -233,6 +233,11 @@ static void test_ej3(void)
                 "arreglo_agregar lost the array when realloc failed: a->v "
                 "became NULL; keep realloc's result in a temporary and "
                 "assign it only when it is not NULL");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_write_past_end.c",
+                "arreglo_agregar wrote past the end of a->v: after three "
+                "additions to an empty array its last realloc asked for 16 "
+                "bytes, and a pointer was written beyond them; ask for "
+                "(a->n + 1) * sizeof(void *) before writing a->v[a->n]");
     expect_fail(RAYO_COURSE_EJ3, "ej3_n_first.c",
                 "arreglo_agregar changed a->n from 3 to 4 when realloc "
                 "failed; on failure the array is left exactly as it was");

@@ -24,6 +24,10 @@ double norma(const float a[3])
 float norma(const float a[3])
 #endif
 {
+#ifdef MISTAKE_NORMA_HANGS
+    for (;;)
+        ;
+#endif
     return sqrt(producto_interno(a, a));
 }
 

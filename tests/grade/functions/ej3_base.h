@@ -185,6 +185,13 @@ bool arreglo_agregar(arreglo_t *a, void *e)
         return false;
     a->v[a->n++] = e;
     return true;
+#elif defined(MISTAKE_WRITE_PAST_END)
+    void **aux = realloc(a->v, a->n * sizeof(void *));
+    if (aux == NULL)
+        return false;
+    a->v = aux;
+    a->v[a->n++] = e;
+    return true;
 #elif defined(MISTAKE_N_FIRST)
     a->n++;
     void **aux = realloc(a->v, a->n * sizeof(void *));

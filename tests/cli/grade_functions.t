@@ -1,0 +1,143 @@
+#!/bin/sh
+# grade_functions.t - `rayo grade --exercise ej2|ej3` and its functions
+# criterion on the fixtures of tests/grade/functions (the statement's
+# functions, one mistake each) and on the student corpus of tests/grade:
+# the reason lines name the mistake in the student's terms, a crash or a
+# hang is pinned on its call, and the other functions are still called.
+# An exercise not (yet) in the registry is skipped, said in a diagnostic.
+. "$(dirname "$0")/lib.sh"
+
+FIX="$RAYO_SOURCE/tests/grade/functions"
+STUDENTS="$RAYO_SOURCE/tests/grade"
+
+# grade EXERCISE FILE [OPTIONS...]: the report in $TMP/out, the
+# functions criterion's result in $result and its lines in $TMP/functions.
+grade() {
+    exercise=$1 file=$2
+    shift 2
+    run_capture grade --no-valgrind --exercise "$exercise" "$@" "$file"
+    awk '$1 ~ /^(compile|run|output|image|valgrind)$/ { inside = 0 }
+         $1 == "functions" { inside = 1; sub(/^functions +[A-Za-z]+ +/, "") }
+         inside { sub(/^ +/, ""); print }' "$TMP/out" >"$TMP/functions"
+    result=$(awk '$1 == "functions" { print $2 }' "$TMP/out")
+}
+
+# says LINE NAME: the functions criterion has exactly this line.
+says() {
+    found=0
+    grep -Fxq -- "$1" "$TMP/functions" || found=1
+    ok "$found" "$2"
+    [ "$found" -eq 0 ] || sed 's/^/#   /' "$TMP/functions"
+}
+
+registered() {
+    rayo grade --help 2>/dev/null | grep -q "^  $1 "
+}
+
+tested=0
+if registered ej2; then
+    tested=1
+    grade ej2 "$FIX/ej2_right.c"
+    is "$result" pass "ej2 right: the functions pass"
+    is "$(wc -l <"$TMP/functions" | tr -d ' ')" 8 "ej2 right: eight functions"
+    says "distancia_esfera: right on 6 known inputs" "ej2 right: distancia_esfera"
+    says "computar_intensidad: right on 11 known inputs" \
+        "ej2 right: computar_intensidad"
+
+    grade ej2 "$FIX/ej2_near_root_always.c"
+    is "$result" FAIL "ej2 near root behind the origin: fails"
+    says "distancia_esfera((0, 0, 1), 2, (0, 0, 0), (0, 0, 1)) returned -1, a root behind the origin (t < 0), for a ray that starts inside the sphere; expected 3: when beta - sqrt(delta) <= 0 the answer is beta + sqrt(delta)" \
+        "ej2 near root behind the origin: named"
+
+    grade ej2 "$FIX/ej2_normal_crash.c"
+    says "normal_esfera(n, (1, 2, 3), 2, (1, 2, 5)) crashed: segmentation fault (SIGSEGV)" \
+        "ej2 crash: pinned on the call"
+    says "distancia_esfera: right on 6 known inputs" \
+        "ej2 crash: the functions called before it are judged"
+
+    mkdir "$TMP/scratch"
+    TMPDIR="$TMP/scratch" grade ej2 "$FIX/ej2_norma_hangs.c" --timeout 1
+    says "norma((3, 4, 12)) did not return within 1 seconds" \
+        "ej2 hang: pinned on the call"
+    is "$(ls -A "$TMP/scratch")" "" "ej2 hang: the temporary directory is removed"
+
+    grade ej2 "$FIX/ej2_no_intensidad.c"
+    says "computar_intensidad: not defined; the statement asks for int computar_intensidad(const float cs[][3], const float rs[], size_t n_esferas, const float luz[3], const float o[3], const float d[3])" \
+        "ej2 missing function: named with the statement's prototype"
+    says "normal_esfera: right on 2 known inputs" \
+        "ej2 missing function: the others are called"
+
+    if [ -d "$STUDENTS/ej2_correct" ]; then
+        grade ej2 "$STUDENTS/ej2_correct/main.c"
+        is "$result" pass "ej2_correct: the functions pass"
+
+        grade ej2 "$STUDENTS/ej2_first_sphere/main.c"
+        says "computar_intensidad on 2 spheres, the far one first: (0, 0, 4) r 1, (0, -0.3, 2) r 0.5, luz = (0.5773503, 0.5773503, -0.5773503), along d = (0.04993762, 0, 0.9987524) returned 172, the intensity of the sphere at (0, 0, 4), the first sphere in the array the ray hits, not the nearest (the sphere at (0, -0.3, 2), 232): keep the smallest t" \
+            "ej2_first_sphere: the nearest sphere, not the first"
+
+        grade ej2 "$STUDENTS/ej2_far_root/main.c"
+        says "distancia_esfera((0, 0, 2), 0.8, (0, 0, 0), (0, 0, 1)) returned the far root 2.8 for a ray that meets the sphere at t = 1.2 first: beta - sqrt(delta) when it is > 0" \
+            "ej2_far_root: the far root named"
+
+        grade ej2 "$STUDENTS/ej2_wrong_signature/main.c"
+        grep -q "^normal_esfera: the signature differs from the statement's void normal_esfera(float normal\[3\], const float c\[3\], float r, const float p\[3\]) (the compiler says: .*); not called$" "$TMP/functions"
+        ok $? "ej2_wrong_signature: reported as ej1's are"
+        says "computar_intensidad: right on 11 known inputs" \
+            "ej2_wrong_signature: the others are still called"
+    else
+        diag "tests/grade/ej2_* not there: the corpus is not tested"
+    fi
+else
+    diag "ej2 is not in the registry: its checks are skipped"
+fi
+
+if registered ej3; then
+    tested=1
+    grade ej3 "$FIX/ej3_right.c"
+    is "$result" pass "ej3 right: the functions pass"
+    is "$(wc -l <"$TMP/functions" | tr -d ' ')" 15 "ej3 right: fifteen functions"
+    says "arreglo_agregar: right on 2 known inputs" "ej3 right: arreglo_agregar"
+    says "color_imprimir: right on 4 known inputs" "ej3 right: color_imprimir"
+
+    grade ej3 "$FIX/ej3_realloc_direct.c"
+    says "arreglo_agregar lost the array when realloc failed: a->v became NULL; keep realloc's result in a temporary and assign it only when it is not NULL" \
+        "ej3 realloc into a->v: the lost array named"
+
+    grade ej3 "$FIX/ej3_beyond_light.c"
+    says "computar_intensidad on a sphere (0, 0, 3) r 1, a point light at (0, 0, 1) and a sphere (0, 0, -2) r 0.5 beyond the light, along d = (0, 0, 1) returned (0.1, 0.1, 0.1); expected (0.6, 0.6, 0.6): the sphere at (0, 0, -2) of colour (1, 1, 1) lies beyond the point light, not between the point and the light, and casts no shadow: only a sphere hit at t < |posicion - P| does" \
+        "ej3 a sphere beyond a point light: named"
+
+    grade ej3 "$FIX/ej3_imprimir_rounds.c"
+    says 'color_imprimir((0.999, 0.5, 0)) printed "255 128 0"; expected "254 127 0": 255 x 0.999 was rounded; the byte is the integer part of 255 c' \
+        "ej3 color_imprimir rounding: named"
+
+    grade ej3 "$FIX/ej3_double_vector.c"
+    says "vector_t: its member x is not of the statement's type; the statement gives typedef struct { float x, y, z; } vector_t;" \
+        "ej3 double members: the type named"
+    says "color_imprimir: right on 4 known inputs" \
+        "ej3 double members: the functions without vector_t are called"
+
+    if [ -d "$STUDENTS/ej3_realloc_loses" ]; then
+        grade ej3 "$STUDENTS/ej3_realloc_loses/main.c"
+        says "arreglo_agregar lost the array when realloc failed: a->v became NULL; keep realloc's result in a temporary and assign it only when it is not NULL" \
+            "ej3_realloc_loses: the lost array named"
+
+        grade ej3 "$STUDENTS/ej3_write_past_end/main.c"
+        says "arreglo_agregar wrote past the end of a->v: after three additions to an empty array its last realloc asked for 16 bytes, and a pointer was written beyond them; ask for (a->n + 1) * sizeof(void *) before writing a->v[a->n]" \
+            "ej3_write_past_end: the write past the block named"
+
+        grade ej3 "$STUDENTS/ej3_first_sphere/main.c"
+        grep -q "the first sphere in the array the ray hits, not the nearest" "$TMP/functions"
+        ok $? "ej3_first_sphere: the nearest sphere, not the first"
+    else
+        diag "tests/grade/ej3_* not there: the corpus is not tested"
+    fi
+else
+    diag "ej3 is not in the registry: its checks are skipped"
+fi
+
+if [ "$tested" = 0 ]; then
+    echo "1..0 # SKIP neither ej2 nor ej3 is registered"
+    exit 0
+fi
+done_testing
