@@ -6,7 +6,8 @@
  * straight down +z from the origin, so its hit point and normal are known
  * exactly and the expected colour is a line of arithmetic written in the
  * test: diffuse, specular, a point light blocked only between the point
- * and the light (the course's models block along the whole half-line),
+ * and the light (the course's models too; a directional light is
+ * blocked along the whole half-line),
  * mirror reflections to a depth limit, the background, and triangles.
  */
 #include <math.h>
@@ -113,8 +114,11 @@ static void shadows(void)
            "phong: a ball between the point and the light casts a shadow");
     is_rgb(pixel(beyond, RAYO_SHADE_PHONG, 5, MID, MID), lit, lit, lit,
            "phong: a ball beyond the light does not (%d = 255/sqrt 2)", lit);
-    is_rgb(pixel(beyond, RAYO_SHADE_COURSE_COLOR, 5, MID, MID), 0, 0, 0,
-           "course-color: the whole half-line towards the light counts");
+    is_rgb(pixel(beyond, RAYO_SHADE_COURSE_COLOR, 5, MID, MID), 180, 180,
+           180, "course-color: nor in the course's model (the integer part "
+                "of 255/sqrt 2)");
+    is_rgb(pixel(between, RAYO_SHADE_COURSE_COLOR, 5, MID, MID), 0, 0, 0,
+           "course-color: a ball between the point and the light does");
 }
 
 static void reflections(void)

@@ -195,12 +195,15 @@ color_t computar_intensidad(const arreglo_t *esferas, const arreglo_t *luces,
             continue;
 
         /* Sombra: otra esfera entre el punto y la luz */
+        /* Una luz puntual solo la tapa una esfera antes de llegar a ella */
+        float distancia_luz = luz->es_puntual
+            ? vector_norma(vector_resta(luz->posicion, punto)) : INFINITO;
         bool sombra = false;
         for (size_t j = 0; j < esferas->n; j++) {
             vector_t p, n;
             if (esferas->v[j] == cercana)
                 continue;
-            if (esfera_distancia(esferas->v[j], punto, l, &p, &n) < INFINITO) {
+            if (esfera_distancia(esferas->v[j], punto, l, &p, &n) < distancia_luz) {
                 sombra = true;
                 break;
             }
