@@ -118,6 +118,9 @@ if registered ej3; then
         "ej3 double members: the functions without vector_t are called"
 
     if [ -d "$STUDENTS/ej3_realloc_loses" ]; then
+        grade ej3 "$STUDENTS/ej3_correct/main.c"
+        is "$result" pass "ej3_correct: the functions pass"
+
         grade ej3 "$STUDENTS/ej3_realloc_loses/main.c"
         says "arreglo_agregar lost the array when realloc failed: a->v became NULL; keep realloc's result in a temporary and assign it only when it is not NULL" \
             "ej3_realloc_loses: the lost array named"
