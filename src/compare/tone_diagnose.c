@@ -12,8 +12,7 @@
  * distance or the field of view); a constant offset, everywhere or on
  * the objects only (a missing ambient term); values wrapped past 255.
  * Among those that fit, the fewest unexplained pixels win, then the
- * first tried, so a course mistake, which names the line of code, comes
- * before a picture-level description of the same effect.
+ * first tried; the rounds are in try_all.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -365,6 +364,18 @@ static void judge_close(const tone_image *ref, const tone_image *image,
     r->shift_y = t.dy;
 }
 
+/* A candidate that leaves nothing unexplained ends the search. */
+static int exact(const choice *ch)
+{
+    return ch->found && ch->unexplained == 0;
+}
+
+/* Three rounds, each only when the ones before found nothing exact:
+   what the picture shows wrongly (channels, flips, inversion, shift,
+   scale), cheap to undo; the course's mistakes, a render each, which
+   name the line of code; then constant offsets and wrapped values,
+   which the course's mistakes explain better when they can (no
+   ambient is an offset on the objects). */
 static rayo_status try_all(const tone_image *ref, const tone_image *image,
                            const rayo_compare_options *options,
                            rayo_compare_report *r, choice *ch,
@@ -378,17 +389,6 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
     int course = options->course;
     size_t i;
     rayo_status s = RAYO_OK;
-    if (course == RAYO_COMPARE_COURSE_AUTO)
-        s = detect_course(ref, r, &course, err);
-    if (s != RAYO_OK)
-        return s;
-    if (course >= 0 && course < RAYO_COURSE_EXERCISES &&
-        course != RAYO_COURSE_EJ1 && ref->width == 640 &&
-        ref->height == 480) {
-        r->tone.course = course;
-        if ((s = try_mistakes(ch, image, course, r, err)) != RAYO_OK)
-            return s;
-    }
     try_permutations(ch, ref, image, r);
     for (i = 0; i < sizeof plain / sizeof plain[0]; i++) {
         t.kind = plain[i];
@@ -402,6 +402,21 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
                               &fewest, &gain);
     if (fabs(t.scale - 1) >= 0.004)
         try_xform(ch, ref, image, r, &t);
+    if (exact(ch))
+        return RAYO_OK;
+    if (course == RAYO_COMPARE_COURSE_AUTO)
+        s = detect_course(ref, r, &course, err);
+    if (s != RAYO_OK)
+        return s;
+    if (course >= 0 && course < RAYO_COURSE_EXERCISES &&
+        course != RAYO_COURSE_EJ1 && ref->width == 640 &&
+        ref->height == 480) {
+        r->tone.course = course;
+        if ((s = try_mistakes(ch, image, course, r, err)) != RAYO_OK)
+            return s;
+    }
+    if (exact(ch))
+        return RAYO_OK;
     t = tone_identity();
     common_offset(ref, image, r->tone.levels, t.offset);
     t.kind = TONE_OFFSET;
