@@ -12,20 +12,10 @@
 #include <string.h>
 
 #include "compare_impl.h"
+#include "report_sink.h"
 #include "tone_impl.h"
 
-typedef struct sink {
-    char *buffer;
-    size_t size, length;
-} sink;
-
-static void put(sink *s, const char *format, ...)
-#if defined(__GNUC__) || defined(__clang__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void put(sink *s, const char *format, ...)
+void cmp_put(cmp_sink *s, const char *format, ...)
 {
     va_list ap;
     int n;
@@ -38,25 +28,25 @@ static void put(sink *s, const char *format, ...)
 }
 
 /* The note about samples beyond a raster, for each file that had any. */
-static void put_surplus(sink *s, const char *which, uint64_t samples,
+static void put_surplus(cmp_sink *s, const char *which, uint64_t samples,
                         uint32_t width, unsigned per_pixel)
 {
     uint64_t row = (uint64_t)width * per_pixel;
     if (samples == 0)
         return;
-    put(s, "note: the %s's file holds %llu sample%s beyond the raster its "
+    cmp_put(s, "note: the %s's file holds %llu sample%s beyond the raster its "
            "header promises",
         which, (unsigned long long)samples, samples == 1 ? "" : "s");
     if (row > 0 && samples % row == 0)
-        put(s, " (%llu more row%s)", (unsigned long long)(samples / row),
+        cmp_put(s, " (%llu more row%s)", (unsigned long long)(samples / row),
             samples / row == 1 ? "" : "s");
-    put(s, "; they were not compared\n");
+    cmp_put(s, "; they were not compared\n");
 }
 
 void cmp_put_surplus(char *buffer, size_t size, size_t *length,
                      const rayo_compare_report *r)
 {
-    sink s;
+    cmp_sink s;
     unsigned ref_pp = r->kind == RAYO_COMPARE_TONE
                           ? r->tone.reference_channels : 1;
     unsigned img_pp = r->kind == RAYO_COMPARE_TONE ? r->tone.image_channels
@@ -71,79 +61,79 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
 }
 
 /* One sentence (no quotes, no backslashes) saying what went wrong. */
-static void put_diagnosis(sink *s, const rayo_compare_report *r)
+static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
 {
     if (!r->diagnosis_exact && r->diagnosis <= RAYO_DIAGNOSIS_SCALED &&
         r->diagnosis != RAYO_DIAGNOSIS_NONE)
-        put(s, "most likely (undoing it comes close, not exact): ");
+        cmp_put(s, "most likely (undoing it comes close, not exact): ");
     switch (r->diagnosis) {
     case RAYO_DIAGNOSIS_NONE:
-        put(s, "none");
+        cmp_put(s, "none");
         break;
     case RAYO_DIAGNOSIS_FLIPPED_VERTICALLY:
-        put(s, "the image is upside down (flipped vertically): rows written "
+        cmp_put(s, "the image is upside down (flipped vertically): rows written "
                "from the bottom up, or y not negated in the ray direction");
         break;
     case RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY:
-        put(s, "the image is mirrored left to right (flipped horizontally): "
+        cmp_put(s, "the image is mirrored left to right (flipped horizontally): "
                "columns written from the right, or x negated");
         break;
     case RAYO_DIAGNOSIS_ROTATED_180:
-        put(s, "the image is upside down and mirrored (flipped both ways, "
+        cmp_put(s, "the image is upside down and mirrored (flipped both ways, "
                "a half turn)");
         break;
     case RAYO_DIAGNOSIS_INVERTED:
-        put(s, "the colours are inverted (0 and 1 swapped): in PBM 1 is "
+        cmp_put(s, "the colours are inverted (0 and 1 swapped): in PBM 1 is "
                "black, and a ray that hits the sphere is black");
         break;
     case RAYO_DIAGNOSIS_TRANSPOSED:
-        put(s, "the image is transposed (width and height swapped): rows "
+        cmp_put(s, "the image is transposed (width and height swapped): rows "
                "written as columns");
         break;
     case RAYO_DIAGNOSIS_SHIFTED:
-        put(s, "the picture is shifted by (%+d, %+d) pixels (right, down): "
+        cmp_put(s, "the picture is shifted by (%+d, %+d) pixels (right, down): "
                "check the pixel grid, x = i - w/2 and y = j - h/2",
             r->shift_x, r->shift_y);
         break;
     case RAYO_DIAGNOSIS_SCALED:
-        put(s, "the shape is scaled by %.3f about the centre of the image: "
+        cmp_put(s, "the shape is scaled by %.3f about the centre of the image: "
                "a wrong field of view or focal distance (z = w / (2 "
                "tan(fov/2)), fov in radians)",
             r->scale_found);
         break;
     case RAYO_DIAGNOSIS_DIFFERENT_SIZE:
-        put(s, "the image is %ux%u but the reference is %ux%u: check the "
+        cmp_put(s, "the image is %ux%u but the reference is %ux%u: check the "
                "width and height (ANCHO, ALTO)",
             r->image_width, r->image_height, r->reference_width,
             r->reference_height);
         break;
     case RAYO_DIAGNOSIS_EMPTY:
-        put(s, "the image has no black pixel: no ray hit the sphere");
+        cmp_put(s, "the image has no black pixel: no ray hit the sphere");
         break;
     case RAYO_DIAGNOSIS_NOT_A_SPHERE:
-        put(s, "the black region is not an ellipse-shaped blob: this does "
+        cmp_put(s, "the black region is not an ellipse-shaped blob: this does "
                "not look like a picture of a sphere");
         break;
     case RAYO_DIAGNOSIS_OTHER_SPHERE:
-        put(s, "a sphere, but not the reference's: its shape is offset by "
+        cmp_put(s, "a sphere, but not the reference's: its shape is offset by "
                "(%+.1f, %+.1f) pixels and %.3f times the size; check the "
                "sphere's centre and radius",
             r->offset_x, r->offset_y, r->scale);
         break;
     default:
-        put(s, "no single mistake (flip, inversion, transposition, shift, "
+        cmp_put(s, "no single mistake (flip, inversion, transposition, shift, "
                "scale) explains the differences");
         break;
     }
 }
 
-static void put_distance_text(sink *s, const rayo_compare_report *r)
+static void put_distance_text(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->max_distance < 0)
-        put(s, "farthest mismatch from the reference's outline: - (the "
+        cmp_put(s, "farthest mismatch from the reference's outline: - (the "
                "reference is all one colour)\n");
     else
-        put(s, "farthest mismatch from the reference's outline: %.2f px "
+        cmp_put(s, "farthest mismatch from the reference's outline: %.2f px "
                "(tolerance %g px; %llu beyond it)\n",
             r->max_distance, r->tolerance,
             (unsigned long long)r->beyond_tolerance);
@@ -152,38 +142,38 @@ static void put_distance_text(sink *s, const rayo_compare_report *r)
 size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
                                 size_t size)
 {
-    sink s = {buffer, size, 0};
+    cmp_sink s = {buffer, size, 0};
     if (size > 0)
         buffer[0] = '\0';
     if (r->kind == RAYO_COMPARE_TONE) {
-        tone_sink t = {buffer, size, 0};
+        cmp_sink t = {buffer, size, 0};
         tone_format_text(r, &t);
         cmp_put_surplus(buffer, size, &t.length, r);
         return t.length;
     }
-    put(&s, "reference: %ux%u, %llu black pixels\n", r->reference_width,
+    cmp_put(&s, "reference: %ux%u, %llu black pixels\n", r->reference_width,
         r->reference_height, (unsigned long long)r->reference_black);
-    put(&s, "image:     %ux%u, %llu black pixels\n", r->image_width,
+    cmp_put(&s, "image:     %ux%u, %llu black pixels\n", r->image_width,
         r->image_height, (unsigned long long)r->image_black);
-    put(&s, "mismatched pixels: %llu of %llu (%.3f%%): %llu black only in "
+    cmp_put(&s, "mismatched pixels: %llu of %llu (%.3f%%): %llu black only in "
             "the reference, %llu black only in the image\n",
         (unsigned long long)r->mismatches, (unsigned long long)r->pixels,
         r->mismatch_percent, (unsigned long long)r->reference_only,
         (unsigned long long)r->image_only);
-    put(&s, "IoU of the black regions: %.4f\n", r->iou);
+    cmp_put(&s, "IoU of the black regions: %.4f\n", r->iou);
     put_distance_text(&s, r);
     if (r->shapes_measured)
-        put(&s, "black shape of the image vs the reference: offset "
+        cmp_put(&s, "black shape of the image vs the reference: offset "
                 "(%+.2f, %+.2f) px (right, down), scale %.4f\n",
             r->offset_x, r->offset_y, r->scale);
     else
-        put(&s, "black shape of the image vs the reference: - (one of them "
+        cmp_put(&s, "black shape of the image vs the reference: - (one of them "
                 "has no black pixel)\n");
-    put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
+    cmp_put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
-        put(&s, "diagnosis: ");
+        cmp_put(&s, "diagnosis: ");
         put_diagnosis(&s, r);
-        put(&s, "\n");
+        cmp_put(&s, "\n");
     }
     cmp_put_surplus(buffer, size, &s.length, r);
     return s.length;
@@ -192,65 +182,65 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
 size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
                                 size_t size)
 {
-    sink s = {buffer, size, 0};
+    cmp_sink s = {buffer, size, 0};
     if (size > 0)
         buffer[0] = '\0';
     if (r->kind == RAYO_COMPARE_TONE) {
-        tone_sink t = {buffer, size, 0};
+        cmp_sink t = {buffer, size, 0};
         tone_format_json(r, &t);
         return t.length;
     }
-    put(&s, "{\"reference\": {\"width\": %u, "
+    cmp_put(&s, "{\"reference\": {\"width\": %u, "
             "\"height\": %u, \"black\": %llu}, \"image\": {\"width\": "
             "%u, \"height\": %u, \"black\": %llu}",
         r->reference_width, r->reference_height,
         (unsigned long long)r->reference_black, r->image_width,
         r->image_height, (unsigned long long)r->image_black);
-    put(&s, ", \"pixels\": %llu, \"mismatches\": %llu, \"reference_only\": "
+    cmp_put(&s, ", \"pixels\": %llu, \"mismatches\": %llu, \"reference_only\": "
             "%llu, \"image_only\": %llu, \"mismatch_percent\": %.6f, "
             "\"iou\": %.6f",
         (unsigned long long)r->pixels, (unsigned long long)r->mismatches,
         (unsigned long long)r->reference_only,
         (unsigned long long)r->image_only, r->mismatch_percent, r->iou);
     if (r->max_distance < 0)
-        put(&s, ", \"max_distance\": null");
+        cmp_put(&s, ", \"max_distance\": null");
     else
-        put(&s, ", \"max_distance\": %.6f", r->max_distance);
-    put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": %llu", r->tolerance,
+        cmp_put(&s, ", \"max_distance\": %.6f", r->max_distance);
+    cmp_put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": %llu", r->tolerance,
         (unsigned long long)r->beyond_tolerance);
     if (r->shapes_measured)
-        put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, \"scale\": %.6f",
+        cmp_put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, \"scale\": %.6f",
             r->offset_x, r->offset_y, r->scale);
     else
-        put(&s, ", \"offset\": null, \"scale\": null");
+        cmp_put(&s, ", \"offset\": null, \"scale\": null");
     if (r->reference_surplus != 0 || r->image_surplus != 0)
-        put(&s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
+        cmp_put(&s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
             (unsigned long long)r->reference_surplus,
             (unsigned long long)r->image_surplus);
-    put(&s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
+    cmp_put(&s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
             "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),
         rayo_compare_diagnosis_name(r->diagnosis),
         r->diagnosis_exact ? "true" : "false");
     if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
-        put(&s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
+        cmp_put(&s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
             r->shift_y);
     if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
-        put(&s, ", \"scale\": %.6f", r->scale_found);
-    put(&s, ", \"text\": \"");
+        cmp_put(&s, ", \"scale\": %.6f", r->scale_found);
+    cmp_put(&s, ", \"text\": \"");
     put_diagnosis(&s, r);
-    put(&s, "\"}}\n");
+    cmp_put(&s, "\"}}\n");
     return s.length;
 }
 
 size_t rayo_compare_format_diagnosis(const rayo_compare_report *r,
                                      char *buffer, size_t size)
 {
-    sink s = {buffer, size, 0};
+    cmp_sink s = {buffer, size, 0};
     if (size > 0)
         buffer[0] = '\0';
     if (r->kind == RAYO_COMPARE_TONE) {
-        tone_sink t = {buffer, size, 0};
+        cmp_sink t = {buffer, size, 0};
         tone_put_diagnosis(r, &t);
         return t.length;
     }

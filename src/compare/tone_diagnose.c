@@ -70,6 +70,32 @@ static void try_xform(choice *ch, const tone_image *ref,
     consider(ch, r, &k, t, -1);
 }
 
+/* Rayo's render of the course's exercise with mistake m as a tone
+   image of `channels`, its edges found for the report's tolerance and
+   levels (edges 0: not needed). */
+static rayo_status course_tone(rayo_course_exercise e, rayo_course_mistake m,
+                               unsigned channels, int edges,
+                               const rayo_compare_report *r, tone_image *t,
+                               rayo_error *err)
+{
+    rayo_course_options o;
+    rayo_image render;
+    rayo_status s;
+    rayo_course_options_init(&o);
+    o.mistake = m;
+    memset(t, 0, sizeof *t);
+    s = rayo_course_render(e, &o, &render, err);
+    if (s != RAYO_OK)
+        return s;
+    s = tone_image_make(&render, channels, t, err);
+    rayo_image_free(&render);
+    if (s == RAYO_OK && edges)
+        s = tone_image_find_edges(t, r->tolerance, r->tone.levels, err);
+    if (s != RAYO_OK)
+        tone_image_free(t);
+    return s;
+}
+
 /* The course exercise the reference shows: the one whose render it is
    consistent with (only for 640x480, gray for EJ2 and colour for EJ3). */
 static rayo_status detect_course(const tone_image *ref,
@@ -80,7 +106,6 @@ static rayo_status detect_course(const tone_image *ref,
                                                         == 1
                                  ? RAYO_COURSE_EJ2
                                  : RAYO_COURSE_EJ3;
-    rayo_image render;
     tone_image t;
     tone_counts k;
     tone_xform id = tone_identity();
@@ -90,17 +115,9 @@ static rayo_status detect_course(const tone_image *ref,
         return RAYO_OK;
     if (e == RAYO_COURSE_EJ3 && r->tone.reference_channels != 3)
         return RAYO_OK;
-    s = rayo_course_render(e, NULL, &render, err);
+    s = course_tone(e, RAYO_MISTAKE_NONE, ref->channels, 1, r, &t, err);
     if (s != RAYO_OK)
         return s;
-    s = tone_image_make(&render, ref->channels, &t, err);
-    rayo_image_free(&render);
-    if (s == RAYO_OK)
-        s = tone_image_find_edges(&t, r->tolerance, r->tone.levels, err);
-    if (s != RAYO_OK) {
-        tone_image_free(&t);
-        return s;
-    }
     id.capped = 1; /* one unexplained pixel settles it */
     id.max_unexplained = 0;
     id.max_differing = UINT64_MAX;
@@ -115,11 +132,8 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
                                 int course, const rayo_compare_report *r,
                                 rayo_error *err)
 {
-    rayo_course_options o;
     int m;
-    rayo_course_options_init(&o);
     for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT; m++) {
-        rayo_image render;
         tone_image t;
         tone_counts k;
         tone_xform id = tone_identity();
@@ -127,19 +141,10 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
         if (!rayo_course_mistake_applies((rayo_course_exercise)course,
                                          (rayo_course_mistake)m))
             continue;
-        o.mistake = (rayo_course_mistake)m;
-        s = rayo_course_render((rayo_course_exercise)course, &o, &render,
-                               err);
+        s = course_tone((rayo_course_exercise)course, (rayo_course_mistake)m,
+                        image->channels, 1, r, &t, err);
         if (s != RAYO_OK)
             return s;
-        s = tone_image_make(&render, image->channels, &t, err);
-        rayo_image_free(&render);
-        if (s == RAYO_OK)
-            s = tone_image_find_edges(&t, r->tolerance, r->tone.levels, err);
-        if (s != RAYO_OK) {
-            tone_image_free(&t);
-            return s;
-        }
         cap(&id, r);
         tone_measure(&t, image, &id, r->tolerance, r->tone.levels, 0, &k);
         tone_image_free(&t);
@@ -284,22 +289,15 @@ static void name_choice(const choice *ch, rayo_compare_report *r)
 /* Differing pixels between image and the course's render with mistake
    m (RAYO_MISTAKE_NONE: the right render). */
 static rayo_status differing_from(const tone_image *image, int course,
-                                  rayo_course_mistake m, uint64_t *count,
-                                  rayo_error *err)
+                                  rayo_course_mistake m,
+                                  const rayo_compare_report *r,
+                                  uint64_t *count, rayo_error *err)
 {
-    rayo_course_options o;
-    rayo_image render;
     tone_image t;
     tone_counts k;
     tone_xform id = tone_identity();
-    rayo_status s;
-    rayo_course_options_init(&o);
-    o.mistake = m;
-    s = rayo_course_render((rayo_course_exercise)course, &o, &render, err);
-    if (s != RAYO_OK)
-        return s;
-    s = tone_image_make(&render, image->channels, &t, err);
-    rayo_image_free(&render);
+    rayo_status s = course_tone((rayo_course_exercise)course, m,
+                                image->channels, 0, r, &t, err);
     if (s != RAYO_OK)
         return s;
     tone_measure(&t, image, &id, 0, 0, -1, &k);
@@ -317,15 +315,15 @@ static rayo_status hidden_mistake(const tone_image *image, int course,
 {
     uint64_t right, best = UINT64_MAX, d;
     int m, found = -1;
-    rayo_status s = differing_from(image, course, RAYO_MISTAKE_NONE, &right,
-                                   err);
+    rayo_status s = differing_from(image, course, RAYO_MISTAKE_NONE, r,
+                                   &right, err);
     if (s != RAYO_OK || right < CLOSE_REDUCTION)
         return s;
     for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT; m++) {
         if (!rayo_course_mistake_applies((rayo_course_exercise)course,
                                          (rayo_course_mistake)m))
             continue;
-        if ((s = differing_from(image, course, (rayo_course_mistake)m, &d,
+        if ((s = differing_from(image, course, (rayo_course_mistake)m, r, &d,
                                 err)) != RAYO_OK)
             return s;
         if (d * CLOSE_REDUCTION <= right && d < best) {

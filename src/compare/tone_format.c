@@ -9,28 +9,9 @@
  * double quote and no backslash, so they go into JSON as they are.
  */
 #include <math.h>
-#include <stdarg.h>
-#include <stdio.h>
 
+#include "report_sink.h"
 #include "tone_impl.h"
-
-static void put(tone_sink *s, const char *format, ...)
-#if defined(__GNUC__) || defined(__clang__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void put(tone_sink *s, const char *format, ...)
-{
-    va_list ap;
-    int n;
-    size_t room = s->length < s->size ? s->size - s->length : 0;
-    va_start(ap, format);
-    n = vsnprintf(room ? s->buffer + s->length : NULL, room, format, ap);
-    va_end(ap);
-    if (n > 0)
-        s->length += (size_t)n;
-}
 
 static const char *channel_name(const rayo_compare_tone *t, unsigned c)
 {
@@ -51,13 +32,13 @@ static int looks_like_course_focal(const rayo_compare_report *r)
            fabs(1.0 / r->tone.scale_fit - 1.0047) < 0.002;
 }
 
-static void put_scale(tone_sink *s, const rayo_compare_report *r)
+static void put_scale(cmp_sink *s, const rayo_compare_report *r)
 {
     const rayo_compare_tone *t = &r->tone;
     double larger = 1.0 / t->scale_fit;
     if (t->scale_fit == 1)
         return;
-    put(s, "scale: the reference is this picture %s %.4f times about the "
+    cmp_put(s, "scale: the reference is this picture %s %.4f times about the "
            "centre (%llu pixels differ then, not %llu): its focal distance "
            "is about %.2f%% %s",
         larger > 1 ? "enlarged" : "shrunk", larger,
@@ -65,12 +46,12 @@ static void put_scale(tone_sink *s, const rayo_compare_report *r)
         (unsigned long long)t->differing, fabs(larger - 1) * 100,
         larger > 1 ? "longer" : "shorter");
     if (looks_like_course_focal(r))
-        put(s, "; at 640 pixels and 90 degrees the formula gives z = 320 "
+        cmp_put(s, "; at 640 pixels and 90 degrees the formula gives z = 320 "
                "and the reference was most likely drawn with z = 321.5, as the "
                "course's "
                "references for EJ1 and EJ2 were: that is why outlines and "
                "shadow edges differ");
-    put(s, "\n");
+    cmp_put(s, "\n");
 }
 
 static const char *flip_text(rayo_compare_diagnosis d)
@@ -100,37 +81,37 @@ static const char *flip_text(rayo_compare_diagnosis d)
     }
 }
 
-static void put_channels(tone_sink *s, const rayo_compare_tone *t)
+static void put_channels(cmp_sink *s, const rayo_compare_tone *t)
 {
     static const char *const rgb[3] = {"red", "green", "blue"};
-    put(s, "the colour channels are in another order: the image's red, "
+    cmp_put(s, "the colour channels are in another order: the image's red, "
            "green and blue show the reference's %s, %s and %s; print R G B "
            "in that order (color_imprimir)",
         rgb[t->order[0]], rgb[t->order[1]], rgb[t->order[2]]);
 }
 
-static void put_offset(tone_sink *s, const rayo_compare_tone *t)
+static void put_offset(cmp_sink *s, const rayo_compare_tone *t)
 {
     unsigned c;
-    put(s, "every pixel %sis off by a constant: ",
+    cmp_put(s, "every pixel %sis off by a constant: ",
         t->offset_on_shapes ? "of the objects (not the background) " : "");
     for (c = 0; c < t->channels; c++)
-        put(s, "%s%+d", c ? ", " : "", t->offset[c]);
-    put(s, " level%s", t->channels == 1 && (t->offset[0] == 1 ||
+        cmp_put(s, "%s%+d", c ? ", " : "", t->offset[c]);
+    cmp_put(s, " level%s", t->channels == 1 && (t->offset[0] == 1 ||
                                             t->offset[0] == -1)
                            ? ""
                            : "s");
     if (t->offset_on_shapes && t->offset[0] < 0)
-        put(s, " (darker): is the ambient term missing (IA in I = IA + II "
+        cmp_put(s, " (darker): is the ambient term missing (IA in I = IA + II "
                "(L.N), Ia ka in C = Ia ka + ...)?");
     else if (t->offset_on_shapes)
-        put(s, " (brighter): is the ambient term too large or added "
+        cmp_put(s, " (brighter): is the ambient term too large or added "
                "twice?");
     else
-        put(s, ": a constant added to or missing from every value");
+        cmp_put(s, ": a constant added to or missing from every value");
 }
 
-void tone_put_diagnosis(const rayo_compare_report *r, tone_sink *s)
+void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     const char *text = flip_text(r->diagnosis);
@@ -138,17 +119,17 @@ void tone_put_diagnosis(const rayo_compare_report *r, tone_sink *s)
         r->diagnosis != RAYO_DIAGNOSIS_DIFFERENT_SIZE &&
         r->diagnosis != RAYO_DIAGNOSIS_EMPTY &&
         r->diagnosis != RAYO_DIAGNOSIS_UNKNOWN)
-        put(s, "most likely (undoing it comes close, not exact): ");
+        cmp_put(s, "most likely (undoing it comes close, not exact): ");
     if (text != NULL) {
-        put(s, "%s", text);
+        cmp_put(s, "%s", text);
         return;
     }
     switch (r->diagnosis) {
     case RAYO_DIAGNOSIS_NONE:
-        put(s, "none");
+        cmp_put(s, "none");
         break;
     case RAYO_DIAGNOSIS_MISTAKE:
-        put(s, "%s", rayo_course_mistake_text((rayo_course_exercise)t->course,
+        cmp_put(s, "%s", rayo_course_mistake_text((rayo_course_exercise)t->course,
                                               t->mistake));
         break;
     case RAYO_DIAGNOSIS_CHANNELS_SWAPPED:
@@ -158,65 +139,65 @@ void tone_put_diagnosis(const rayo_compare_report *r, tone_sink *s)
         put_offset(s, t);
         break;
     case RAYO_DIAGNOSIS_SHIFTED:
-        put(s, "the picture is moved ");
+        cmp_put(s, "the picture is moved ");
         if (r->shift_x != 0)
-            put(s, "%d pixel%s %s%s", r->shift_x < 0 ? -r->shift_x
+            cmp_put(s, "%d pixel%s %s%s", r->shift_x < 0 ? -r->shift_x
                                                    : r->shift_x,
                 r->shift_x == 1 || r->shift_x == -1 ? "" : "s",
                 r->shift_x < 0 ? "left" : "right",
                 r->shift_y != 0 ? " and " : "");
         if (r->shift_y != 0)
-            put(s, "%d row%s %s", r->shift_y < 0 ? -r->shift_y : r->shift_y,
+            cmp_put(s, "%d row%s %s", r->shift_y < 0 ? -r->shift_y : r->shift_y,
                 r->shift_y == 1 || r->shift_y == -1 ? "" : "s",
                 r->shift_y < 0 ? "up" : "down");
-        put(s, ": check the pixel grid, x = i - ANCHO/2 and rows from y = "
+        cmp_put(s, ": check the pixel grid, x = i - ANCHO/2 and rows from y = "
                "ALTO/2 at the top");
         break;
     case RAYO_DIAGNOSIS_SCALED:
-        put(s, "the picture is scaled by %.3f about the centre: a wrong "
+        cmp_put(s, "the picture is scaled by %.3f about the centre: a wrong "
                "field of view or focal distance (z = ANCHO / (2 tan(FOV/2)), "
                "FOV in radians)",
             r->scale_found);
         break;
     case RAYO_DIAGNOSIS_DIFFERENT_SIZE:
-        put(s, "the image is %ux%u but the reference is %ux%u: check the "
+        cmp_put(s, "the image is %ux%u but the reference is %ux%u: check the "
                "width and height (ANCHO, ALTO)",
             r->image_width, r->image_height, r->reference_width,
             r->reference_height);
         break;
     default:
-        put(s, "no single mistake explains the differences; the first "
+        cmp_put(s, "no single mistake explains the differences; the first "
                "unexplained pixel is column %d, row %d",
             (int)t->first_x, (int)t->first_y);
         break;
     }
 }
 
-void tone_format_text(const rayo_compare_report *r, tone_sink *s)
+void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
-    put(s, "reference: %ux%u, %s\n", r->reference_width, r->reference_height,
+    cmp_put(s, "reference: %ux%u, %s\n", r->reference_width, r->reference_height,
         kind_of(t->reference_channels));
-    put(s, "image:     %ux%u, %s\n", r->image_width, r->image_height,
+    cmp_put(s, "image:     %ux%u, %s\n", r->image_width, r->image_height,
         kind_of(t->image_channels));
-    put(s, "compared:  %s values; a pixel differs when off by more than %u "
+    cmp_put(s, "compared:  %s values; a pixel differs when off by more than %u "
            "level%s (of 255)\n",
         t->channels == 1 ? "gray" : "RGB", t->levels,
         t->levels == 1 ? "" : "s");
     for (c = 0; c < t->channels; c++) {
         const rayo_compare_channel *ch = &t->channel[c];
-        put(s, "%-6s %llu pixels off (%.3f%%), largest difference %u, "
+        cmp_put(s, "%-6s %llu pixels off (%.3f%%), largest difference %u, "
                "RMSE %.3f, ",
             channel_name(t, c), (unsigned long long)ch->beyond,
             r->pixels ? 100.0 * (double)ch->beyond / (double)r->pixels : 0,
             ch->max_difference, ch->rmse);
         if (isinf(ch->psnr))
-            put(s, "PSNR infinite\n");
+            cmp_put(s, "PSNR infinite\n");
         else
-            put(s, "PSNR %.2f dB\n", ch->psnr);
+            cmp_put(s, "PSNR %.2f dB\n", ch->psnr);
     }
-    put(s, "differing pixels: %llu of %llu (%.3f%%): %llu at outlines and "
+    cmp_put(s, "differing pixels: %llu of %llu (%.3f%%): %llu at outlines and "
            "shadow edges (largest difference %u), %llu in shading where the "
            "reference takes their value within %g px, %llu unexplained\n",
         (unsigned long long)t->differing, (unsigned long long)r->pixels,
@@ -225,30 +206,30 @@ void tone_format_text(const rayo_compare_report *r, tone_sink *s)
         r->tolerance, (unsigned long long)t->unexplained);
     put_scale(s, r);
     if (r->verdict == RAYO_VERDICT_CONSISTENT && t->at_edges > 0)
-        put(s, "note: the differences at outlines and shadow edges are "
+        cmp_put(s, "note: the differences at outlines and shadow edges are "
                "the same picture drawn a pixel or two apart there (another "
                "focal distance, float instead of double), not a mistake\n");
-    put(s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
+    cmp_put(s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
-        put(s, "diagnosis: ");
+        cmp_put(s, "diagnosis: ");
         tone_put_diagnosis(r, s);
-        put(s, "\n");
+        cmp_put(s, "\n");
     }
 }
 
-static void put_number(tone_sink *s, double v)
+static void put_number(cmp_sink *s, double v)
 {
     if (isfinite(v))
-        put(s, "%.6f", v);
+        cmp_put(s, "%.6f", v);
     else
-        put(s, "null");
+        cmp_put(s, "null");
 }
 
-void tone_format_json(const rayo_compare_report *r, tone_sink *s)
+void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
-    put(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, \"height\": "
+    cmp_put(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, \"height\": "
            "%u, \"channels\": %u}, \"image\": {\"width\": %u, \"height\": "
            "%u, \"channels\": %u}, \"pixels\": %llu, \"levels\": %u, "
            "\"tolerance\": %.6g, \"channels\": [",
@@ -257,14 +238,14 @@ void tone_format_json(const rayo_compare_report *r, tone_sink *s)
         (unsigned long long)r->pixels, t->levels, r->tolerance);
     for (c = 0; c < t->channels; c++) {
         const rayo_compare_channel *ch = &t->channel[c];
-        put(s, "%s{\"name\": \"%s\", \"beyond\": %llu, \"max_difference\": "
+        cmp_put(s, "%s{\"name\": \"%s\", \"beyond\": %llu, \"max_difference\": "
                "%u, \"rmse\": %.6f, \"psnr\": ",
             c ? ", " : "", channel_name(t, c),
             (unsigned long long)ch->beyond, ch->max_difference, ch->rmse);
         put_number(s, ch->psnr);
-        put(s, "}");
+        cmp_put(s, "}");
     }
-    put(s, "], \"differing\": %llu, \"mismatches\": %llu, "
+    cmp_put(s, "], \"differing\": %llu, \"mismatches\": %llu, "
            "\"mismatch_percent\": %.6f, \"at_edges\": %llu, "
            "\"max_edge_difference\": %u, \"in_shading\": %llu, "
            "\"unexplained\": %llu, \"beyond_tolerance\": %llu",
@@ -274,41 +255,41 @@ void tone_format_json(const rayo_compare_report *r, tone_sink *s)
         (unsigned long long)t->unexplained,
         (unsigned long long)r->beyond_tolerance);
     if (t->first_x >= 0)
-        put(s, ", \"first_unexplained\": {\"x\": %d, \"y\": %d}",
+        cmp_put(s, ", \"first_unexplained\": {\"x\": %d, \"y\": %d}",
             (int)t->first_x, (int)t->first_y);
     else
-        put(s, ", \"first_unexplained\": null");
-    put(s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
+        cmp_put(s, ", \"first_unexplained\": null");
+    cmp_put(s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
         (unsigned long long)r->reference_surplus,
         (unsigned long long)r->image_surplus);
-    put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, \"course\": ",
+    cmp_put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, \"course\": ",
         t->scale_fit, (unsigned long long)t->differing_scaled);
     if (t->course >= 0)
-        put(s, "\"%s\"", rayo_course_name((rayo_course_exercise)t->course));
+        cmp_put(s, "\"%s\"", rayo_course_name((rayo_course_exercise)t->course));
     else
-        put(s, "null");
-    put(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
+        cmp_put(s, "null");
+    cmp_put(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
            "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),
         rayo_compare_diagnosis_name(r->diagnosis),
         r->diagnosis_exact ? "true" : "false");
     if (r->diagnosis == RAYO_DIAGNOSIS_MISTAKE)
-        put(s, ", \"mistake\": \"%s\"", rayo_course_mistake_name(t->mistake));
+        cmp_put(s, ", \"mistake\": \"%s\"", rayo_course_mistake_name(t->mistake));
     if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
-        put(s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
+        cmp_put(s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
             r->shift_y);
     if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
-        put(s, ", \"scale\": %.6f", r->scale_found);
+        cmp_put(s, ", \"scale\": %.6f", r->scale_found);
     if (r->diagnosis == RAYO_DIAGNOSIS_CHANNELS_SWAPPED)
-        put(s, ", \"order\": [%u, %u, %u]", t->order[0], t->order[1],
+        cmp_put(s, ", \"order\": [%u, %u, %u]", t->order[0], t->order[1],
             t->order[2]);
     if (r->diagnosis == RAYO_DIAGNOSIS_OFFSET) {
-        put(s, ", \"offset\": [");
+        cmp_put(s, ", \"offset\": [");
         for (c = 0; c < t->channels; c++)
-            put(s, "%s%d", c ? ", " : "", t->offset[c]);
-        put(s, "], \"on_shapes\": %s", t->offset_on_shapes ? "true" : "false");
+            cmp_put(s, "%s%d", c ? ", " : "", t->offset[c]);
+        cmp_put(s, "], \"on_shapes\": %s", t->offset_on_shapes ? "true" : "false");
     }
-    put(s, ", \"text\": \"");
+    cmp_put(s, ", \"text\": \"");
     tone_put_diagnosis(r, s);
-    put(s, "\"}}\n");
+    cmp_put(s, "\"}}\n");
 }

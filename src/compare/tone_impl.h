@@ -155,15 +155,11 @@ rayo_status tone_write_diff(const rayo_image *reference,
                             const rayo_compare_options *options,
                             rayo_output *out, rayo_error *err);
 
-/* report_format.c's tone parts. */
-typedef struct tone_sink {
-    char *buffer;
-    size_t size, length;
-} tone_sink;
-
-void tone_format_text(const rayo_compare_report *r, tone_sink *s);
-void tone_format_json(const rayo_compare_report *r, tone_sink *s);
-void tone_put_diagnosis(const rayo_compare_report *r, tone_sink *s);
+/* tone_format.c: the tone parts of report_format.c's forms. */
+struct cmp_sink;
+void tone_format_text(const rayo_compare_report *r, struct cmp_sink *s);
+void tone_format_json(const rayo_compare_report *r, struct cmp_sink *s);
+void tone_put_diagnosis(const rayo_compare_report *r, struct cmp_sink *s);
 
 /* report_format.c: the notes on samples beyond a raster, appended at
    *length (snprintf semantics). */

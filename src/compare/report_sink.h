@@ -1,0 +1,24 @@
+/*
+ * report_sink.h - the text a comparison report is written into: the
+ * caller's buffer with snprintf semantics (the whole length is counted,
+ * the text cut to fit), shared by the mask and tone formatters of
+ * src/compare and by no one else.
+ */
+#ifndef RAYO_REPORT_SINK_H
+#define RAYO_REPORT_SINK_H
+
+#include <stddef.h>
+
+typedef struct cmp_sink {
+    char *buffer;
+    size_t size, length;
+} cmp_sink;
+
+/* Appends a formatted text (report_format.c). */
+void cmp_put(cmp_sink *s, const char *format, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+#endif
