@@ -28,6 +28,7 @@
 #include <string.h>
 
 #include "harness.h"
+#include "harness_math.h"
 
 #define IA 5.0
 #define II 255.0
@@ -179,32 +180,7 @@ static const ray_case ray_cases[] = {
 };
 #define RAY_CASES (sizeof ray_cases / sizeof ray_cases[0])
 
-/* ---- arithmetic in double, on float-rounded inputs ---- */
-
-static double fl(double x)
-{
-    return (double)(float)x;
-}
-
-static void vfl(const double *in, double *out)
-{
-    out[0] = fl(in[0]);
-    out[1] = fl(in[1]);
-    out[2] = fl(in[2]);
-}
-
-static double dot(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void unit(const double *in, double *out)
-{
-    double n = sqrt(dot(in, in));
-    out[0] = in[0] / n;
-    out[1] = in[1] / n;
-    out[2] = in[2] / n;
-}
+/* ---- arithmetic in double, on float-rounded inputs (harness_math.h) ---- */
 
 /* The float arguments of a vector case. */
 static void case_args(const vector_case *v, double *a, double *b, double *c,
@@ -464,12 +440,6 @@ static char *harness_source(const int *usable)
 
 /* ---- what the student reads ---- */
 
-static const char *vec_text(const double *v, char *out, size_t room)
-{
-    snprintf(out, room, "(%.7g, %.7g, %.7g)", v[0], v[1], v[2]);
-    return out;
-}
-
 static void describe_vector_case(unsigned k, char *out, size_t room)
 {
     const vector_case *v = &vector_cases[k];
@@ -526,22 +496,6 @@ static void describe(const char *name, unsigned k, char *out, size_t room)
     if (k < VECTOR_CASES && strcmp(name, names[vector_cases[k].function]) ==
                                 0)
         describe_vector_case(k, out, room);
-}
-
-static int near_value(double got, double want)
-{
-    return fabs(got - want) <= 1e-5 + 1e-4 * fabs(want);
-}
-
-static int near_vector(const double *got, const double *want)
-{
-    return near_value(got[0], want[0]) && near_value(got[1], want[1]) &&
-           near_value(got[2], want[2]);
-}
-
-static int is_infinito(double v)
-{
-    return fabs(v / FLT_MAX - 1) < 1e-6;
 }
 
 /* The expected value (scalar functions) or vector, and the answer of

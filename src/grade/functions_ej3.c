@@ -40,6 +40,7 @@
 #include <string.h>
 
 #include "harness.h"
+#include "harness_math.h"
 
 #define SAID_PER_FUNCTION 2 /* wrong cases quoted; the others counted */
 #define MAX_SPHERES 25
@@ -320,32 +321,7 @@ static const ray_case ray_cases[] = {
 };
 #define RAY_CASES (sizeof ray_cases / sizeof ray_cases[0])
 
-/* ---- arithmetic in double on float-rounded inputs ---- */
-
-static double fl(double x)
-{
-    return (double)(float)x;
-}
-
-static void vfl(const double *in, double *out)
-{
-    out[0] = fl(in[0]);
-    out[1] = fl(in[1]);
-    out[2] = fl(in[2]);
-}
-
-static double dot(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void unit(const double *in, double *out)
-{
-    double n = sqrt(dot(in, in));
-    out[0] = in[0] / n;
-    out[1] = in[1] / n;
-    out[2] = in[2] / n;
-}
+/* ---- arithmetic in double on float-rounded inputs (harness_math.h) ---- */
 
 static void sub(const double *a, const double *b, double *out)
 {
@@ -888,12 +864,6 @@ static char *harness_source(const int *usable)
 
 /* ---- what the student reads ---- */
 
-static const char *vec_text(const double *v, char *out, size_t room)
-{
-    snprintf(out, room, "(%.7g, %.7g, %.7g)", v[0], v[1], v[2]);
-    return out;
-}
-
 static void describe_value_case(unsigned k, char *out, size_t room)
 {
     const value_case *v = &value_cases[k];
@@ -962,22 +932,6 @@ static void describe(const char *name, unsigned k, char *out, size_t room)
                strcmp(name, functions[value_cases[k].function].name) == 0) {
         describe_value_case(k, out, room);
     }
-}
-
-static int near_value(double got, double want)
-{
-    return fabs(got - want) <= 1e-5 + 1e-4 * fabs(want);
-}
-
-static int near_vector(const double *got, const double *want)
-{
-    return near_value(got[0], want[0]) && near_value(got[1], want[1]) &&
-           near_value(got[2], want[2]);
-}
-
-static int is_infinito(double v)
-{
-    return fabs(v / FLT_MAX - 1) < 1e-6;
 }
 
 /* The bytes color_imprimir must print for channel c (a float). */

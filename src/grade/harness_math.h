@@ -1,0 +1,67 @@
+/*
+ * harness_math.h - the arithmetic the functions criterion's expected
+ * values are computed with (functions_ej2.c, functions_ej3.c): double
+ * precision on arguments rounded to float as the student's call rounds
+ * them, the tolerance a float result is held to, and a vector in a
+ * reason line.  Private to src/grade.
+ */
+#ifndef RAYO_HARNESS_MATH_H
+#define RAYO_HARNESS_MATH_H
+
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+
+/* x as the student's float holds it. */
+static inline double fl(double x)
+{
+    return (double)(float)x;
+}
+
+static inline void vfl(const double *in, double *out)
+{
+    out[0] = fl(in[0]);
+    out[1] = fl(in[1]);
+    out[2] = fl(in[2]);
+}
+
+static inline double dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void unit(const double *in, double *out)
+{
+    double n = sqrt(dot(in, in));
+    out[0] = in[0] / n;
+    out[1] = in[1] / n;
+    out[2] = in[2] / n;
+}
+
+/* A float result within 1e-5 + 1e-4 relative of the expected value. */
+static inline int near_value(double got, double want)
+{
+    return fabs(got - want) <= 1e-5 + 1e-4 * fabs(want);
+}
+
+static inline int near_vector(const double *got, const double *want)
+{
+    return near_value(got[0], want[0]) && near_value(got[1], want[1]) &&
+           near_value(got[2], want[2]);
+}
+
+/* The statement's INFINITO, FLT_MAX, as a double read back. */
+static inline int is_infinito(double v)
+{
+    return fabs(v / FLT_MAX - 1) < 1e-6;
+}
+
+/* "(x, y, z)" with 7 significant digits into out. */
+static inline const char *vec_text(const double *v, char *out, size_t room)
+{
+    snprintf(out, room, "(%.7g, %.7g, %.7g)", v[0], v[1], v[2]);
+    return out;
+}
+
+#endif
