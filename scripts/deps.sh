@@ -3,7 +3,8 @@
 # start (`make run`, `make check`) works on a fresh one.
 #
 #   scripts/deps.sh build   a C compiler, pkg-config and libpng's headers
-#   scripts/deps.sh check   also the Netpbm tools the tests cross-check with
+#   scripts/deps.sh check   also the Netpbm tools the tests cross-check with,
+#                           and jq and python3, which read their JSON
 #
 # It installs with apt-get only when something is missing, and only as
 # root; otherwise it names the command to run and fails.  It never
@@ -19,6 +20,8 @@ pkg-config --exists libpng 2>/dev/null || need="$need libpng-dev"
 if [ "$profile" = check ]; then
     command -v pngtopnm >/dev/null 2>&1 || need="$need netpbm"
     command -v prove >/dev/null 2>&1 || need="$need perl"
+    command -v jq >/dev/null 2>&1 || need="$need jq"
+    command -v python3 >/dev/null 2>&1 || need="$need python3"
 fi
 [ -z "$need" ] && exit 0
 if ! command -v apt-get >/dev/null 2>&1; then
