@@ -30,7 +30,7 @@ static void print_help(void)
         "usage: rayo compare REFERENCE IMAGE [--tolerance PX] [--levels N]\n"
         "                    [--exercise NAME] [--diff OUT.png] [--json]\n\n"
         "Tells whether IMAGE shows what REFERENCE shows and, if not, what "
-        "is likely wrong.\nTwo bilevel images (PBM, or only black and "
+        "is likely\nwrong.  Two bilevel images (PBM, or only black and "
         "white pixels) are compared as\nblack/white masks; when either is "
         "gray or colour, values are compared (see\nbelow).  An image of "
         "another size is laid on the reference centred.\n\n"
@@ -44,7 +44,8 @@ static void print_help(void)
         "where the reference takes their value\nwithin the tolerance, or "
         "unexplained; and a verdict.\n\n"
         "Verdicts:\n"
-        "  identical     every pixel agrees\n"
+        "  identical     every pixel agrees (values: every sample within "
+        "--levels)\n"
         "  consistent    every mismatch within the tolerance of the "
         "outline (values:\n"
         "                every difference explained), and no whole-pixel "
@@ -62,15 +63,17 @@ static void print_help(void)
         "...) when\n"
         "                the reference shows the course's scene 2 or 3\n\n"
         "options:\n"
-        "      --tolerance PX  pixels a mismatch may be from the outline "
-        "(default 2)\n"
+        "      --tolerance PX  pixels a mismatch may be from the outline; "
+        "values: from an\n"
+        "                      edge or the same value (default 2)\n"
         "      --levels N      gray and colour: levels (of 255) a value may "
         "be off\n"
         "                      and still agree (0-255, default 1)\n"
         "      --exercise NAME the course exercise whose mistakes to try "
-        "(ej2, ej3), or\n"
-        "                      none; default: the one whose scene the "
-        "reference shows\n"
+        "(ej2, ej3; ej1's\n"
+        "                      images are masks), or none; default: the "
+        "one whose\n"
+        "                      scene the reference shows\n"
         "      --diff OUT.png  write the difference picture (reference's "
         "size):\n"
         "                        black, white  both agree\n"
@@ -223,6 +226,13 @@ typedef struct input {
     rayo_status status;
 } input;
 
+/* The pixels a file held beyond its raster (a part of one counts). */
+static uint64_t surplus_pixels(const input *in)
+{
+    unsigned per = in->image.info.channels > 0 ? in->image.info.channels : 1;
+    return (in->read.trailing_samples + per - 1) / per;
+}
+
 static void *read_input(void *context)
 {
     input *in = context;
@@ -266,8 +276,7 @@ int cli_compare(int argc, char **argv)
     if ((status = read_both(&reference, &image)) != CLI_EXIT_OK)
         return status;
     status = compare_images(&req, &reference.image, &image.image,
-                            reference.read.trailing_samples,
-                            image.read.trailing_samples);
+                            surplus_pixels(&reference), surplus_pixels(&image));
     rayo_image_free(&reference.image);
     rayo_image_free(&image.image);
     return status;

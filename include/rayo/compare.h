@@ -153,8 +153,9 @@ typedef struct rayo_compare_tone {
 
 typedef struct rayo_compare_report {
     rayo_compare_kind kind;
-    /* Samples each file held beyond the raster its header promises (a
-       481st row), as the reader found them (reader.h); left 0 by
+    /* Pixels each file held beyond the raster its header promises (a
+       481st row; the reader's trailing samples over the file's samples a
+       pixel, a part of a pixel counting as one); left 0 by
        rayo_compare_images, set by a caller that read the files, and
        printed by the formatters as a note. */
     uint64_t reference_surplus, image_surplus;

@@ -12,6 +12,21 @@
 #include "compare_impl.h"
 #include "tone_impl.h"
 
+rayo_status cmp_options_check(const rayo_compare_options *options,
+                              rayo_error *err)
+{
+    if (!(options->tolerance >= 0) || !isfinite(options->tolerance))
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "compare: tolerance %g; expected a finite "
+                              "number of pixels, 0 or more",
+                              options->tolerance);
+    if (options->levels > 255)
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "compare: %u levels; expected 0 to 255",
+                              options->levels);
+    return RAYO_OK;
+}
+
 void rayo_compare_options_init(rayo_compare_options *options)
 {
     options->tolerance = 2;
@@ -87,15 +102,8 @@ rayo_status rayo_compare_images(const rayo_image *reference,
     if (options == NULL)
         options = &defaults;
     report->tolerance = options->tolerance;
-    if (!(report->tolerance >= 0) || !isfinite(report->tolerance))
-        return rayo_error_set(err, RAYO_ERR_INVALID,
-                              "compare: tolerance %g; expected a finite "
-                              "number of pixels, 0 or more",
-                              report->tolerance);
-    if (options->levels > 255)
-        return rayo_error_set(err, RAYO_ERR_INVALID,
-                              "compare: %u levels; expected 0 to 255",
-                              options->levels);
+    if ((s = cmp_options_check(options, err)) != RAYO_OK)
+        return s;
     if ((s = rayo_image_info_check(&reference->info, err)) != RAYO_OK ||
         (s = rayo_image_info_check(&image->info, err)) != RAYO_OK)
         return s;

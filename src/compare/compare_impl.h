@@ -43,6 +43,11 @@ static inline const unsigned char *cmp_mask_row(const cmp_mask *m,
     return m->bits + (size_t)y * m->stride;
 }
 
+/* RAYO_ERR_INVALID unless the tolerance is finite and >= 0 and the
+   levels at most 255 (compare.c). */
+rayo_status cmp_options_check(const rayo_compare_options *options,
+                              rayo_error *err);
+
 /* The two masks of a comparison, converted from any layout when they
  * are not bilevel already (then borrowed, not copied). */
 typedef struct cmp_pair {

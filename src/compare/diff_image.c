@@ -147,7 +147,8 @@ rayo_status rayo_compare_write_diff(const rayo_image *reference,
     rayo_compare_options_init(&defaults);
     if (options == NULL)
         options = &defaults;
-    if ((s = rayo_image_info_check(&reference->info, err)) != RAYO_OK ||
+    if ((s = cmp_options_check(options, err)) != RAYO_OK ||
+        (s = rayo_image_info_check(&reference->info, err)) != RAYO_OK ||
         (s = rayo_image_info_check(&image->info, err)) != RAYO_OK)
         return s;
     if (!tone_is_bilevel(reference) || !tone_is_bilevel(image))

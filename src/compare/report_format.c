@@ -27,19 +27,18 @@ void cmp_put(cmp_sink *s, const char *format, ...)
         s->length += (size_t)n;
 }
 
-/* The note about samples beyond a raster, for each file that had any. */
-static void put_surplus(cmp_sink *s, const char *which, uint64_t samples,
-                        uint32_t width, unsigned per_pixel)
+/* The note about pixels beyond a raster, for each file that had any. */
+static void put_surplus(cmp_sink *s, const char *which, uint64_t pixels,
+                        uint32_t width)
 {
-    uint64_t row = (uint64_t)width * per_pixel;
-    if (samples == 0)
+    if (pixels == 0)
         return;
-    cmp_put(s, "note: the %s's file holds %llu sample%s beyond the raster its "
-           "header promises",
-        which, (unsigned long long)samples, samples == 1 ? "" : "s");
-    if (row > 0 && samples % row == 0)
-        cmp_put(s, " (%llu more row%s)", (unsigned long long)(samples / row),
-            samples / row == 1 ? "" : "s");
+    cmp_put(s, "note: the %s's file holds %llu pixel%s beyond the raster "
+               "its header promises",
+            which, (unsigned long long)pixels, pixels == 1 ? "" : "s");
+    if (width > 0 && pixels % width == 0)
+        cmp_put(s, " (%llu more row%s)", (unsigned long long)(pixels / width),
+                pixels / width == 1 ? "" : "s");
     cmp_put(s, "; they were not compared\n");
 }
 
@@ -47,16 +46,11 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
                      const rayo_compare_report *r)
 {
     cmp_sink s;
-    unsigned ref_pp = r->kind == RAYO_COMPARE_TONE
-                          ? r->tone.reference_channels : 1;
-    unsigned img_pp = r->kind == RAYO_COMPARE_TONE ? r->tone.image_channels
-                                                   : 1;
     s.buffer = buffer;
     s.size = size;
     s.length = *length;
-    put_surplus(&s, "reference", r->reference_surplus, r->reference_width,
-                ref_pp);
-    put_surplus(&s, "image", r->image_surplus, r->image_width, img_pp);
+    put_surplus(&s, "reference", r->reference_surplus, r->reference_width);
+    put_surplus(&s, "image", r->image_surplus, r->image_width);
     *length = s.length;
 }
 

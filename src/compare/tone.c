@@ -128,6 +128,8 @@ void tone_image_free(tone_image *t)
     free(t->v);
     free(t->near);
     free(t->slope);
+    free(t->lo);
+    free(t->hi);
     memset(t, 0, sizeof *t);
 }
 
@@ -177,7 +179,7 @@ static void fit_scale(const tone_image *ref, const tone_image *image,
         return;
     s = tone_best_scale(ref, image, r->tone.levels, 0.98, 1.02, &left,
                         &gain);
-    if (fabs(s - 1) >= 0.001 && gain >= 1.5) {
+    if (fabs(s - 1) >= 0.001 && gain >= 1.5 && left < r->tone.differing) {
         r->tone.scale_fit = s;
         r->tone.differing_scaled = left;
     }

@@ -41,7 +41,9 @@ static void cap(tone_xform *t, const rayo_compare_report *r)
 static void consider(choice *ch, const rayo_compare_report *r,
                      const tone_counts *k, const tone_xform *t, int mistake)
 {
-    if (k->stopped)
+    /* A candidate must read at least an eighth of the picture from the
+       image (a scale up to about 2.8 does), not bring in black. */
+    if (k->stopped || 8 * k->placed < r->pixels)
         return;
     if ((k->unexplained != 0 &&
          k->unexplained * CLOSE_REDUCTION > r->tone.unexplained) ||
@@ -406,20 +408,24 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
         s = detect_course(ref, r, &course, err);
     if (s != RAYO_OK)
         return s;
+    /* EJ3's colour renders are not compared with a gray pair. */
     if (course >= 0 && course < RAYO_COURSE_EXERCISES &&
         course != RAYO_COURSE_EJ1 && ref->width == 640 &&
-        ref->height == 480) {
+        ref->height == 480 &&
+        !(course == RAYO_COURSE_EJ3 && ref->channels == 1)) {
         r->tone.course = course;
         if ((s = try_mistakes(ch, image, course, r, err)) != RAYO_OK)
             return s;
     }
     if (exact(ch))
         return RAYO_OK;
+    /* On the objects first: on a black background both fit, and the
+       objects-only one says more (a missing ambient term). */
     t = tone_identity();
     common_offset(ref, image, r->tone.levels, t.offset);
-    t.kind = TONE_OFFSET;
-    try_xform(ch, ref, image, r, &t);
     t.kind = TONE_OFFSET_ON_SHAPES;
+    try_xform(ch, ref, image, r, &t);
+    t.kind = TONE_OFFSET;
     try_xform(ch, ref, image, r, &t);
     t = tone_identity();
     t.kind = TONE_WRAPPED;

@@ -67,8 +67,11 @@ rayo_status tone_write_diff(const rayo_image *reference,
     rayo_status s = tone_image_make(reference, channels, &ref, err);
     if (s != RAYO_OK)
         return s;
-    if ((s = tone_image_make(image, channels, &img, err)) != RAYO_OK) {
+    if ((s = tone_image_make(image, channels, &img, err)) != RAYO_OK ||
+        (s = tone_image_find_edges(&ref, options->tolerance, options->levels,
+                                   err)) != RAYO_OK) {
         tone_image_free(&ref);
+        tone_image_free(&img);
         return s;
     }
     info = rayo_image_info_rgb8(ref.width, ref.height);

@@ -33,6 +33,8 @@ typedef struct tone_image {
     unsigned char *near;
     unsigned char *slope; /* the largest step of the shading (not an
                              edge) within near_radius; owned */
+    unsigned char *lo, *hi; /* each channel's smallest and largest value
+                               within near_radius, laid out as v; owned */
     int near_radius;
     unsigned near_levels;
 } tone_image;
@@ -60,6 +62,19 @@ void tone_image_free(tone_image *t);
    around every differing pixel for one. */
 rayo_status tone_image_find_edges(tone_image *t, double tolerance,
                                   unsigned levels, rayo_error *err);
+
+/* tone_window.c: the extreme (max 1: largest, 0: smallest) of in over
+   the window |dx|, |dy| <= radius around each pixel, into out (both
+   width x height x channels, interleaved); one line of it, strided,
+   with scratch prefix and suffix of n + 2 radius bytes each. */
+rayo_status tone_window_map(const unsigned char *in, unsigned char *out,
+                            uint32_t width, uint32_t height,
+                            unsigned channels, int radius, int max,
+                            rayo_error *err);
+void tone_window_line(const unsigned char *in, size_t stride,
+                      unsigned char *out, size_t out_stride, uint32_t n,
+                      int radius, int max, unsigned char *prefix,
+                      unsigned char *suffix);
 
 /* A candidate mistake undone on the image, as it is read at a pixel of
    the reference's frame. */
@@ -97,7 +112,8 @@ typedef struct tone_xform {
 tone_xform tone_identity(void);
 
 typedef struct tone_counts {
-    uint64_t known;       /* pixels the transform could place */
+    uint64_t known;       /* pixels compared (outside the image: black) */
+    uint64_t placed;      /* of those, the ones read inside the image */
     uint64_t differing, at_edges, in_shading, unexplained;
     uint64_t beyond[3];
     unsigned max_difference[3], max_edge_difference;

@@ -227,12 +227,20 @@ static int explained(const tone_image *ref, uint32_t x, uint32_t y,
 {
     int lo[3] = {256, 256, 256}, hi[3] = {-1, -1, -1};
     unsigned c, n = ref->channels;
-    int dx, dy, slack = -1;
-    for (dy = -radius; dy <= radius; dy++) {
+    int dx, dy, slack = -1, window = radius;
+    if (ref->lo != NULL && ref->near_radius == radius) {
+        size_t at = ((size_t)y * ref->width + x) * n;
+        for (c = 0; c < n; c++) {
+            lo[c] = ref->lo[at + c];
+            hi[c] = ref->hi[at + c];
+        }
+        window = -1; /* the maps hold the window's range already */
+    }
+    for (dy = -window; dy <= window; dy++) {
         int64_t yy = (int64_t)y + dy;
         if (yy < 0 || yy >= ref->height)
             continue;
-        for (dx = -radius; dx <= radius; dx++) {
+        for (dx = -window; dx <= window; dx++) {
             int64_t xx = (int64_t)x + dx;
             const unsigned char *q;
             if (xx < 0 || xx >= ref->width)
@@ -294,8 +302,17 @@ void tone_measure(const tone_image *ref, const tone_image *image,
             const unsigned char *r = tone_pixel(ref, x, y);
             unsigned char u[3];
             unsigned worst = 0;
-            if (!undo(ref, image, t, x, y, u))
+            if (undo(ref, image, t, x, y, u)) {
+                k->placed++;
+            } else if (t->kind == TONE_SHIFT) {
+                /* What a shift brings in from outside the image is black,
+                   so moving what differs off the frame does not make it
+                   agree.  (A scale's border is not known: a narrower
+                   field of view shows less of the scene.) */
+                memset(u, 0, sizeof u);
+            } else {
                 continue;
+            }
             k->known++;
             for (c = 0; c < n; c++) {
                 unsigned d = u[c] > r[c] ? u[c] - r[c] : r[c] - u[c];
@@ -344,33 +361,6 @@ static int stands_out(unsigned step, unsigned before, unsigned after,
     return step > levels && step > 2 * (before > after ? before : after);
 }
 
-/* Running maximum of in over [i - r, i + r], into out (strided). */
-static void max_line(const unsigned char *in, size_t stride, unsigned char *out,
-                     uint32_t n, int radius)
-{
-    uint32_t i;
-    for (i = 0; i < n; i++) {
-        int64_t j, lo = (int64_t)i - radius, hi = (int64_t)i + radius;
-        unsigned char best = 0;
-        for (j = lo < 0 ? 0 : lo; j <= hi && j < n; j++)
-            if (in[(size_t)j * stride] > best)
-                best = in[(size_t)j * stride];
-        out[(size_t)i * stride] = best;
-    }
-}
-
-/* The window maximum of map (radius in x and y), in place, with scratch
-   of the same size. */
-static void window_max(unsigned char *map, unsigned char *scratch,
-                       uint32_t w, uint32_t h, int radius)
-{
-    uint32_t x, y;
-    for (y = 0; y < h; y++)
-        max_line(map + (size_t)y * w, 1, scratch + (size_t)y * w, w, radius);
-    for (x = 0; x < w; x++)
-        max_line(scratch + x, w, map + x, h, radius);
-}
-
 rayo_status tone_image_find_edges(tone_image *t, double tolerance,
                                   unsigned levels, rayo_error *err)
 {
@@ -378,12 +368,15 @@ rayo_status tone_image_find_edges(tone_image *t, double tolerance,
     int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
     unsigned char *hs, *vs, *edge, *slope;
     uint32_t x, y, w = t->width, h = t->height;
+    rayo_status s;
     if (t->near != NULL && t->near_radius == radius &&
         t->near_levels == levels)
         return RAYO_OK;
     free(t->near);
     free(t->slope);
-    t->near = t->slope = NULL;
+    free(t->lo);
+    free(t->hi);
+    t->near = t->slope = t->lo = t->hi = NULL;
     hs = malloc(n);
     vs = malloc(n);
     edge = malloc(n);
@@ -430,10 +423,37 @@ rayo_status tone_image_find_edges(tone_image *t, double tolerance,
                 smooth = vs[i];
             slope[i] = (unsigned char)smooth;
         }
-    window_max(edge, hs, w, h, radius);
-    window_max(slope, hs, w, h, radius);
     free(hs);
     free(vs);
+    hs = vs = NULL;
+    t->lo = malloc(n * t->channels);
+    t->hi = malloc(n * t->channels);
+    if (t->lo == NULL || t->hi == NULL) {
+        free(edge);
+        free(slope);
+        free(t->lo);
+        free(t->hi);
+        t->lo = t->hi = NULL;
+        return rayo_error_set(err, RAYO_ERR_NOMEM,
+                              "compare: out of memory for the edges of a "
+                              "%ux%u image",
+                              w, h);
+    }
+    if ((s = tone_window_map(edge, edge, w, h, 1, radius, 1, err)) !=
+            RAYO_OK ||
+        (s = tone_window_map(slope, slope, w, h, 1, radius, 1, err)) !=
+            RAYO_OK ||
+        (s = tone_window_map(t->v, t->lo, w, h, t->channels, radius, 0,
+                             err)) != RAYO_OK ||
+        (s = tone_window_map(t->v, t->hi, w, h, t->channels, radius, 1,
+                             err)) != RAYO_OK) {
+        free(edge);
+        free(slope);
+        free(t->lo);
+        free(t->hi);
+        t->lo = t->hi = NULL;
+        return s;
+    }
     t->near = edge;
     t->slope = slope;
     t->near_radius = radius;

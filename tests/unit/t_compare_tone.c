@@ -4,7 +4,8 @@
  * difference, RMSE and PSNR; which differences an edge or the shading
  * explains and which nothing does; the verdicts; the diagnoses that
  * undo a mistake (channel order, offset, flip, shift, size); bilevel
- * images still compared as masks; the JSON form.
+ * images still compared as masks; the JSON form; the window extremes
+ * the comparison's maps are made with, against a plain search.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -12,6 +13,8 @@
 
 #include "rayo.h"
 #include "tap.h"
+
+#include "../../src/compare/tone_impl.h"
 
 static rayo_image gray(uint32_t w, uint32_t h, unsigned char fill)
 {
@@ -192,6 +195,7 @@ static void test_diagnoses(void)
     r = compare(&e, &f, 1);
     is_int(r.diagnosis, RAYO_DIAGNOSIS_OFFSET, "a disc 5 levels darker: offset");
     is_int(r.tone.offset[0], -5, "  of -5");
+    ok(r.tone.offset_on_shapes, "  on the objects, not the black background");
     /* Moved a row down: a shift, said as (0, +1). */
     memset(f.pixels, 0, f.stride * 24);
     for (y = 5; y < 21; y++)
@@ -240,6 +244,61 @@ static void test_forms(void)
     rayo_image_free(&c);
 }
 
+static void test_windows(void)
+{
+    /* Random lines and radii against the obvious double loop. */
+    unsigned char in[97], out[97], prefix[97 + 2 * 9], suffix[97 + 2 * 9];
+    unsigned seed = 12345, wrong = 0, n, r, i, j, max;
+    for (n = 1; n <= 97; n += 8)
+        for (r = 0; r <= 9; r++)
+            for (max = 0; max <= 1; max++) {
+                for (i = 0; i < n; i++) {
+                    seed = seed * 1103515245u + 12345u;
+                    in[i] = (unsigned char)(seed >> 16);
+                }
+                tone_window_line(in, 1, out, 1, n, (int)r, (int)max, prefix,
+                                 suffix);
+                for (i = 0; i < n; i++) {
+                    unsigned char best = max ? 0 : 255;
+                    for (j = i > r ? i - r : 0; j <= i + r && j < n; j++)
+                        if (max ? in[j] > best : in[j] < best)
+                            best = in[j];
+                    wrong += out[i] != best;
+                }
+            }
+    is_int(wrong, 0, "window extremes equal a plain search (lines 1-97, "
+                     "radii 0-9)");
+}
+
+static void test_frame(void)
+{
+    /* A candidate cannot win by pushing what differs off the frame. */
+    rayo_image a = gray(1, 1, 0), b = gray(1, 1, 200);
+    rayo_image c = gray(64, 48, 0), d = gray(64, 48, 0);
+    rayo_compare_report r;
+    uint32_t x, y;
+    r = compare(&a, &b, 1);
+    ok(r.diagnosis != RAYO_DIAGNOSIS_SHIFTED &&
+           r.diagnosis != RAYO_DIAGNOSIS_SCALED,
+       "1x1, 0 against 200: not a shift nor a scale (%s)",
+       rayo_compare_diagnosis_name(r.diagnosis));
+    for (y = 0; y < 48; y++)
+        for (x = 0; x < 64; x++) {
+            at(&c, x, y)[0] = (unsigned char)(2 * x + y);
+            at(&d, x, y)[0] = x == 63 ? 0 : (unsigned char)(2 * x + y);
+        }
+    r = compare(&c, &d, 1);
+    is_int(r.tone.differing, 48, "a gradient with its last column black: "
+                                 "48 pixels differ");
+    ok(r.diagnosis != RAYO_DIAGNOSIS_SHIFTED, "  not a shift (%s)",
+       rayo_compare_diagnosis_name(r.diagnosis));
+    is_double(r.tone.scale_fit, 1, 0, "  and no scale fits better");
+    rayo_image_free(&a);
+    rayo_image_free(&b);
+    rayo_image_free(&c);
+    rayo_image_free(&d);
+}
+
 int main(void)
 {
     test_statistics();
@@ -247,5 +306,7 @@ int main(void)
     test_shading();
     test_diagnoses();
     test_forms();
+    test_windows();
+    test_frame();
     return tap_done();
 }
