@@ -15,7 +15,7 @@ done
 "$prefix/bin/rayo" -W 8 -H 4 >"$TMP/small.pbm"
 is "$(head -n 2 "$TMP/small.pbm" | tr '\n' ' ')" "P1 8 4 " "the installed rayo runs"
 "$prefix/bin/rayo" grade --exercise ej2 --reference course --no-valgrind \
-    --cc "${RAYO_CC:-cc}" "$RAYO_SOURCE/tests/grade/ej2_pi_course/main.c" >"$TMP/course.out" 2>&1
+    "$RAYO_SOURCE/tests/grade/ej2_pi_course/main.c" >"$TMP/course.out" 2>&1
 grep -q '^image  *pass  *the same as the reference' "$TMP/course.out"
 ok $? "the installed rayo finds the course's image: --reference course"
 [ $? -eq 0 ] || sed 's/^/#   /' "$TMP/course.out"

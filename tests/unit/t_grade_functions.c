@@ -116,6 +116,31 @@ static void expect_fail(rayo_course_exercise course, const char *fixture,
     rayo_grade_report_free(&g.report);
 }
 
+/* The same for a line that begins with head and ends with tail: where
+   the line quotes a ray's direction, its last digit depends on the
+   compiler that built rayo (gcc and clang round one operation apart). */
+static void expect_fail_ends(rayo_course_exercise course,
+                             const char *fixture, const char *head,
+                             const char *tail)
+{
+    graded g;
+    size_t i, found = 0;
+    grade_fixture(course, fixture, &g);
+    is_int(item(&g)->result, RAYO_GRADE_FAIL, "%s: functions fail",
+           fixture);
+    for (i = 0; i < item(&g)->line_count; i++) {
+        const char *line = item(&g)->lines[i];
+        size_t n = strlen(line), t = strlen(tail);
+        if (strncmp(line, head, strlen(head)) == 0 && n >= t &&
+            strcmp(line + n - t, tail) == 0)
+            found = 1;
+    }
+    ok(found, "%s: says '%.40s...%.40s'", fixture, head, tail);
+    if (!found)
+        show(&g);
+    rayo_grade_report_free(&g.report);
+}
+
 static void expect_pass(rayo_course_exercise course, const char *fixture,
                         size_t lines, const char *line)
 {
@@ -262,11 +287,11 @@ static void test_ej3(void)
     expect_fail(RAYO_COURSE_EJ3, "ej3_luz_always_point.c",
                 "luz_crear((0, 1, 0), (0.2, 0.3, 0.4), false) returned a "
                 "light whose es_puntual is 1, not the 0 it was given");
-    expect_fail(RAYO_COURSE_EJ3, "ej3_normal_unnormalised.c",
-                "computar_intensidad on the course's scene 3, along "
-                "d = (-0.5465762, -0.1642295, 0.8211474) returned "
-                "(0.0955, 0, 0); expected (0.202, 0, 0): as if the normal "
-                "were P - C, not divided by the radius");
+    expect_fail_ends(RAYO_COURSE_EJ3, "ej3_normal_unnormalised.c",
+                     "computar_intensidad on the course's scene 3, along "
+                     "d = (-0.546576",
+                     "returned (0.0955, 0, 0); expected (0.202, 0, 0): as "
+                     "if the normal were P - C, not divided by the radius");
     expect_fail(RAYO_COURSE_EJ3, "ej3_double_vector.c",
                 "vector_t: its member x is not of the statement's type; the "
                 "statement gives typedef struct { float x, y, z; } "
