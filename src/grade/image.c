@@ -347,10 +347,11 @@ rayo_status grade_step_image(grade_context *ctx, const rayo_image *image,
     if (status == RAYO_OK && literal)
         status = grade_say(item, err, "note: the rows run from y = %u down "
                                       "to -%u, the statement's y in "
-                                      "[-alto/2, alto/2) read literally; "
-                                      "the course's own program runs them "
-                                      "from %u down to -%u, one row lower, "
-                                      "and accepts both",
+                                      "[-alto/2, alto/2) read literally, so "
+                                      "the picture is one row higher than "
+                                      "the course's own program's, which "
+                                      "runs them from %u down to -%u; the "
+                                      "course accepts both",
                            ctx->options->exercise->height / 2 - 1,
                            ctx->options->exercise->height / 2,
                            ctx->options->exercise->height / 2,

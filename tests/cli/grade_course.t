@@ -81,6 +81,12 @@ grade literal_rows --no-valgrind
 is "$status/$results" "0/compile=pass functions=pass run=pass output=pass image=pass valgrind=skipped" \
     "EJ1 rows read literally (y from 239 down to -240): passes"
 says 'note: the rows run from y = 239 down to -240' "  which reading it follows is said"
+mkdir "$TMP/two_rows"
+sed 's|for (y = ALTO / 2 - 1; y >= -ALTO / 2; y--)|for (y = ALTO / 2 - 2; y >= -ALTO / 2 - 1; y--)|' \
+    "$STUDENTS/literal_rows/main.c" >"$TMP/two_rows/main.c"
+run_capture grade --no-valgrind "$TMP/two_rows/main.c"
+is "$status" 1 "EJ1 rows from 238 down to -241: fails"
+says 'the image is moved 2 rows up' "  the shift said in words: 2 rows up"
 
 if [ "$SHORT" = 1 ]; then
     check ej2_no_shadows "$BAD_FN image=FAIL" 'there are no shadows'
@@ -159,5 +165,9 @@ says '^1 of 2 submissions passed$' "  the tally"
 run_capture grade --exercise ej3 --no-valgrind --json "$STUDENTS/ej3_channels_bgr"
 is "$(jq -r '.exercise + "/" + .verdict + "/" + .result' "$TMP/out")" "ej3/inconsistent/fail" \
     "--json: exercise, verdict, result"
+run_capture grade --exercise ej3 --no-valgrind --diff "$TMP/diff.png" "$STUDENTS/ej3_channels_bgr"
+is "$(pngtopam "$TMP/diff.png" | pamfile | sed 's/.*: *//; s/^[[:space:]]*//')" \
+    "PPM raw, 640 by 480  maxval 255" "--diff: the tone difference picture, 640x480 RGB"
+says 'difference picture: .*amber where it explains them' "  and the report says how to read it"
 
 done_testing
