@@ -194,7 +194,8 @@ static int write_diff(const char *path, const rayo_image *reference,
 static int compare_images(const compare_request *req,
                           const rayo_image *reference,
                           const rayo_image *image, uint64_t reference_surplus,
-                          uint64_t image_surplus)
+                          uint64_t image_surplus,
+                          const rayo_read_report *clamped)
 {
     rayo_compare_report report;
     rayo_error err;
@@ -205,6 +206,7 @@ static int compare_images(const compare_request *req,
         return cli_report(&err);
     report.reference_surplus = reference_surplus;
     report.image_surplus = image_surplus;
+    rayo_compare_note_clamped(&report, clamped);
     if (req->diff != NULL &&
         (status = write_diff(req->diff, reference, image, &req->options)) != CLI_EXIT_OK)
         return status;
@@ -220,6 +222,7 @@ static int compare_images(const compare_request *req,
  * once (two plain 4096x4096 PBMs are 34 MB of text). */
 typedef struct input {
     const char *path;
+    int clamp; /* the image: samples out of range clamped and counted */
     rayo_image image;
     rayo_read_report read;
     rayo_error err;
@@ -237,8 +240,11 @@ static void *read_input(void *context)
 {
     input *in = context;
     rayo_error_clear(&in->err);
-    in->status = rayo_image_read_file(in->path, &in->image, &in->read,
-                                      &in->err);
+    rayo_read_options options;
+    memset(&options, 0, sizeof options);
+    options.clamp = in->clamp;
+    in->status = rayo_image_read_file_with(in->path, &options, &in->image,
+                                           &in->read, &in->err);
     return NULL;
 }
 
@@ -273,10 +279,12 @@ int cli_compare(int argc, char **argv)
         return status < 0 ? CLI_EXIT_OK : status;
     reference.path = req.reference;
     image.path = req.image;
+    image.clamp = 1; /* a student's unclamped values are a diagnosis */
     if ((status = read_both(&reference, &image)) != CLI_EXIT_OK)
         return status;
     status = compare_images(&req, &reference.image, &image.image,
-                            surplus_pixels(&reference), surplus_pixels(&image));
+                            surplus_pixels(&reference), surplus_pixels(&image),
+                            &image.read);
     rayo_image_free(&reference.image);
     rayo_image_free(&image.image);
     return status;

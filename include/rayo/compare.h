@@ -46,6 +46,7 @@
 #include "rayo/course.h"
 #include "rayo/image.h"
 #include "rayo/output.h"
+#include "rayo/reader.h"
 #include "rayo/status.h"
 
 #ifdef __cplusplus
@@ -81,8 +82,11 @@ typedef enum rayo_compare_diagnosis {
                                        tone.offset */
     RAYO_DIAGNOSIS_WRAPPED,         /* values past the maximum wrapped
                                        around 256 */
-    RAYO_DIAGNOSIS_MISTAKE          /* the render of one of the course's
+    RAYO_DIAGNOSIS_MISTAKE,         /* the render of one of the course's
                                        typical mistakes: tone.mistake */
+    RAYO_DIAGNOSIS_OUT_OF_RANGE     /* the image's file holds samples
+                                       outside 0..maxval (clamped to
+                                       compare: rayo_compare_note_clamped) */
 } rayo_compare_diagnosis;
 
 /* How a comparison was made. */
@@ -159,6 +163,11 @@ typedef struct rayo_compare_report {
        rayo_compare_images, set by a caller that read the files, and
        printed by the formatters as a note. */
     uint64_t reference_surplus, image_surplus;
+    /* Samples of the image's file outside 0..maxval, clamped by a reader
+       asked to (rayo_compare_note_clamped), and where the first were. */
+    uint64_t image_clamped_high, image_clamped_low;
+    uint64_t image_first_high_line, image_first_low_line;
+    long image_largest, image_smallest;
     rayo_compare_tone tone;   /* RAYO_COMPARE_TONE; zero for masks */
     uint32_t reference_width, reference_height;
     uint32_t image_width, image_height;
@@ -242,6 +251,17 @@ size_t rayo_compare_format_text(const rayo_compare_report *report,
                                 char *buffer, size_t size);
 size_t rayo_compare_format_json(const rayo_compare_report *report,
                                 char *buffer, size_t size);
+
+/*
+ * Records in report what a reader that clamped the image's samples
+ * (rayo_read_options.clamp) counted.  With any sample out of range, an
+ * image that was identical or consistent once clamped becomes
+ * inconsistent with RAYO_DIAGNOSIS_OUT_OF_RANGE (the file is not a valid
+ * image, whatever its picture); an inconsistent one keeps its own
+ * diagnosis, and the formatters note the clamping.
+ */
+void rayo_compare_note_clamped(rayo_compare_report *report,
+                               const rayo_read_report *read);
 
 /* The diagnosis alone as one sentence (no newline), as the text report
    gives it after "diagnosis: "; "none" when there is none. */

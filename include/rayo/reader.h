@@ -93,7 +93,25 @@ typedef struct rayo_read_report {
      */
     uint64_t trailing_samples;
     uint64_t trailing_data;
+    /*
+     * Plain PGM and PPM read with rayo_read_options.clamp only: the
+     * samples above maxval (taken as maxval) and the negative ones (taken
+     * as 0), the line of the first of each (0: none), the largest and
+     * the smallest number found (saturating at 65536 and -65536).
+     */
+    uint64_t clamped_high, clamped_low;
+    uint64_t first_high_line, first_low_line;
+    long largest_found, smallest_found;
 } rayo_read_report;
+
+/* How to read (rayo_image_read_file_with); zeroed: as
+   rayo_image_read_file. */
+typedef struct rayo_read_options {
+    /* Plain PGM/PPM samples above maxval, or negative, are clamped into
+       range and counted in the report instead of refused: a program that
+       did not clamp its values can still have its picture compared. */
+    int clamp;
+} rayo_read_options;
 
 /*
  * Reads the image in path ("-" = standard input) into image, which the
@@ -102,6 +120,13 @@ typedef struct rayo_read_report {
  */
 rayo_status rayo_image_read_file(const char *path, rayo_image *image,
                                  rayo_read_report *report, rayo_error *err);
+
+/* rayo_image_read_file with options (NULL: none). */
+rayo_status rayo_image_read_file_with(const char *path,
+                                      const rayo_read_options *options,
+                                      rayo_image *image,
+                                      rayo_read_report *report,
+                                      rayo_error *err);
 
 /* The same from size bytes at data; name is used in messages. */
 rayo_status rayo_image_read_memory(const void *data, size_t size,

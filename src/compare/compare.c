@@ -150,8 +150,25 @@ const char *rayo_compare_diagnosis_name(rayo_compare_diagnosis diagnosis)
         "shifted",     "scaled",             "different-size",
         "empty",       "not-a-sphere",       "other-sphere",
         "unknown",     "channels-swapped",   "offset",
-        "wrapped",     "mistake"};
+        "wrapped",     "mistake",            "out-of-range"};
     if ((size_t)diagnosis >= sizeof names / sizeof names[0])
         return "unknown";
     return names[diagnosis];
+}
+
+void rayo_compare_note_clamped(rayo_compare_report *report,
+                               const rayo_read_report *read)
+{
+    report->image_clamped_high = read->clamped_high;
+    report->image_clamped_low = read->clamped_low;
+    report->image_first_high_line = read->first_high_line;
+    report->image_first_low_line = read->first_low_line;
+    report->image_largest = read->largest_found;
+    report->image_smallest = read->smallest_found;
+    if (read->clamped_high + read->clamped_low == 0 ||
+        report->verdict == RAYO_VERDICT_INCONSISTENT)
+        return;
+    report->verdict = RAYO_VERDICT_INCONSISTENT;
+    report->diagnosis = RAYO_DIAGNOSIS_OUT_OF_RANGE;
+    report->diagnosis_exact = 1;
 }

@@ -42,6 +42,43 @@ static void put_surplus(cmp_sink *s, const char *which, uint64_t pixels,
     cmp_put(s, "; they were not compared\n");
 }
 
+void cmp_put_clamped_json(cmp_sink *s, const rayo_compare_report *r)
+{
+    if (r->image_clamped_high + r->image_clamped_low == 0)
+        return;
+    cmp_put(s, ", \"image_clamped\": {\"high\": %llu, \"low\": %llu, "
+               "\"largest\": %ld, \"smallest\": %ld}",
+            (unsigned long long)r->image_clamped_high,
+            (unsigned long long)r->image_clamped_low, r->image_largest,
+            r->image_smallest);
+}
+
+void cmp_put_out_of_range(cmp_sink *s, const rayo_compare_report *r)
+{
+    if (r->image_clamped_high > 0) {
+        cmp_put(s, "%llu sample%s above the maximum (the first on line "
+                   "%llu, the largest %ld): ",
+                (unsigned long long)r->image_clamped_high,
+                r->image_clamped_high == 1 ? "" : "s",
+                (unsigned long long)r->image_first_high_line,
+                r->image_largest);
+        if (r->image_largest == 256)
+            cmp_put(s, "0..1 scaled by 256 instead of 255, or ");
+        cmp_put(s, "values not clamped: the statements say values above "
+                   "255 become 255 (each channel above 1 becomes 1)");
+    }
+    if (r->image_clamped_low > 0)
+        cmp_put(s, "%s%llu negative sample%s (the first on line %llu, the "
+                   "smallest %ld): a negative intensity, the diffuse term "
+                   "added where L.N < 0; the statements add it only when "
+                   "L.N > 0",
+                r->image_clamped_high > 0 ? "; " : "",
+                (unsigned long long)r->image_clamped_low,
+                r->image_clamped_low == 1 ? "" : "s",
+                (unsigned long long)r->image_first_low_line,
+                r->image_smallest);
+}
+
 void cmp_put_surplus(char *buffer, size_t size, size_t *length,
                      const rayo_compare_report *r)
 {
@@ -51,6 +88,13 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
     s.length = *length;
     put_surplus(&s, "reference", r->reference_surplus, r->reference_width);
     put_surplus(&s, "image", r->image_surplus, r->image_width);
+    if (r->image_clamped_high + r->image_clamped_low > 0 &&
+        r->diagnosis != RAYO_DIAGNOSIS_OUT_OF_RANGE) {
+        cmp_put(&s, "note: the image was compared with its samples clamped "
+                    "to 0..maxval: ");
+        cmp_put_out_of_range(&s, r);
+        cmp_put(&s, "\n");
+    }
     *length = s.length;
 }
 
@@ -113,6 +157,9 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
                "(%+.1f, %+.1f) pixels and %.3f times the size; check the "
                "sphere's centre and radius",
             r->offset_x, r->offset_y, r->scale);
+        break;
+    case RAYO_DIAGNOSIS_OUT_OF_RANGE:
+        cmp_put_out_of_range(s, r);
         break;
     default:
         cmp_put(s, "no single mistake (flip, inversion, transposition, shift, "
@@ -211,6 +258,7 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
         cmp_put(&s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
             (unsigned long long)r->reference_surplus,
             (unsigned long long)r->image_surplus);
+    cmp_put_clamped_json(&s, r);
     cmp_put(&s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
             "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),

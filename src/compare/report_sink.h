@@ -21,4 +21,11 @@ void cmp_put(cmp_sink *s, const char *format, ...)
 #endif
     ;
 
+struct rayo_compare_report;
+
+/* The sentence about samples clamped out of 0..maxval, and their JSON
+   member (report_format.c). */
+void cmp_put_out_of_range(cmp_sink *s, const struct rayo_compare_report *r);
+void cmp_put_clamped_json(cmp_sink *s, const struct rayo_compare_report *r);
+
 #endif

@@ -128,6 +128,9 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
     case RAYO_DIAGNOSIS_NONE:
         cmp_put(s, "none");
         break;
+    case RAYO_DIAGNOSIS_OUT_OF_RANGE:
+        cmp_put_out_of_range(s, r);
+        break;
     case RAYO_DIAGNOSIS_MISTAKE:
         cmp_put(s, "%s", rayo_course_mistake_text((rayo_course_exercise)t->course,
                                               t->mistake));
@@ -262,6 +265,7 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
     cmp_put(s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
         (unsigned long long)r->reference_surplus,
         (unsigned long long)r->image_surplus);
+    cmp_put_clamped_json(s, r);
     cmp_put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, \"course\": ",
         t->scale_fit, (unsigned long long)t->differing_scaled);
     if (t->course >= 0)

@@ -31,6 +31,8 @@ typedef struct pnm_reader {
     uint32_t width, height;
     unsigned maxval; /* 1 for PBM */
     unsigned channels;
+    int clamp;       /* plain samples out of range clamped, counted */
+    rayo_read_report *report;
 } pnm_reader;
 
 static int is_space(int c)
@@ -351,11 +353,35 @@ static void store_sample(rayo_image *image, unsigned char *row, size_t index,
 }
 
 /* One decimal sample of a plain PGM/PPM raster, at most maxval. */
+/* A sample out of range, read with clamping: counted, taken as 0 or
+   maxval. */
+static rayo_status clamped(pnm_reader *r, int negative, uint64_t v,
+                           unsigned *value)
+{
+    rayo_read_report *rp = r->report;
+    long found = (long)(v > 65536 ? 65536 : v);
+    if (negative) {
+        found = -found;
+        if (rp->clamped_low++ == 0)
+            rp->first_low_line = r->line;
+        if (found < rp->smallest_found)
+            rp->smallest_found = found;
+        *value = 0;
+    } else {
+        if (rp->clamped_high++ == 0)
+            rp->first_high_line = r->line;
+        if (found > rp->largest_found)
+            rp->largest_found = found;
+        *value = r->maxval;
+    }
+    return RAYO_OK;
+}
+
 static rayo_status read_plain_sample(pnm_reader *r, unsigned *value,
                                      rayo_error *err)
 {
     char expected[64];
-    int c;
+    int c, negative = 0;
     uint64_t v = 0;
     for (;;) {
         c = rayo_source_getc(r->src);
@@ -368,6 +394,13 @@ static rayo_status read_plain_sample(pnm_reader *r, unsigned *value,
     }
     snprintf(expected, sizeof expected, "a sample from 0 to %u",
              r->maxval);
+    if (c == '-' && r->clamp && r->digit != '1') {
+        int d = rayo_source_peek(r->src);
+        if (d >= '0' && d <= '9') {
+            negative = 1;
+            c = rayo_source_getc(r->src);
+        }
+    }
     if (c < '0' || c > '9')
         return found_error(r, RAYO_ERR_FORMAT, c, expected, err);
     while (c >= '0' && c <= '9') {
@@ -382,6 +415,8 @@ static rayo_status read_plain_sample(pnm_reader *r, unsigned *value,
         return found_error(r, RAYO_ERR_FORMAT, c,
                            "whitespace after a sample", err);
     }
+    if (r->clamp && (negative || v > r->maxval))
+        return clamped(r, negative, v, value);
     if (v > r->maxval) {
         char found[48];
         snprintf(found, sizeof found, "%s%llu", v > 65535 ? "over " : "",
@@ -587,8 +622,9 @@ static rayo_status read_raster(pnm_reader *r, rayo_image *image,
     return status;
 }
 
-rayo_status rayo_pnm_read(rayo_source *src, int digit, rayo_image *image,
-                          rayo_read_report *report, rayo_error *err)
+rayo_status rayo_pnm_read(rayo_source *src, int digit, int clamp,
+                          rayo_image *image, rayo_read_report *report,
+                          rayo_error *err)
 {
     static const rayo_format formats[] = {RAYO_FORMAT_PBM, RAYO_FORMAT_PGM,
                                           RAYO_FORMAT_PPM};
@@ -599,6 +635,8 @@ rayo_status rayo_pnm_read(rayo_source *src, int digit, rayo_image *image,
     r.src = src;
     r.digit = digit;
     r.line = 1;
+    r.clamp = clamp;
+    r.report = report;
     report->format = formats[(digit - '1') % 3];
     report->plain = digit <= '3';
     status = read_header(&r, err);

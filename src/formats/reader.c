@@ -41,14 +41,15 @@ static rayo_status bad_magic(const rayo_source *src,
 }
 
 /* Reads the magic and dispatches; the image is zeroed on failure. */
-static rayo_status read_image(rayo_source *src, rayo_image *image,
-                              rayo_read_report *report, rayo_error *err)
+static rayo_status read_image(rayo_source *src, int clamp,
+                              rayo_image *image, rayo_read_report *report,
+                              rayo_error *err)
 {
     unsigned char magic[8];
     size_t got;
     rayo_source_read(src, magic, 2, &got);
     if (got == 2 && magic[0] == 'P' && magic[1] >= '1' && magic[1] <= '6')
-        return rayo_pnm_read(src, magic[1], image, report, err);
+        return rayo_pnm_read(src, magic[1], clamp, image, report, err);
     if (src->read_errno != 0)
         return rayo_source_end_error(src, "a magic number", err);
     if (got == 2 && magic[0] == png_signature[0] &&
@@ -70,7 +71,7 @@ static rayo_status read_image(rayo_source *src, rayo_image *image,
     return bad_magic(src, magic, got, err);
 }
 
-static rayo_status read_from(rayo_source *src, rayo_image *image,
+static rayo_status read_from(rayo_source *src, int clamp, rayo_image *image,
                              rayo_read_report *report, rayo_error *err)
 {
     rayo_read_report local;
@@ -80,7 +81,7 @@ static rayo_status read_from(rayo_source *src, rayo_image *image,
         report = &local;
     memset(report, 0, sizeof *report);
     memset(image, 0, sizeof *image);
-    status = read_image(src, image, report, err);
+    status = read_image(src, clamp, image, report, err);
     /* The Netpbm reader has counted what it looked at past the raster. */
     if (status == RAYO_OK)
         status = rayo_source_count_rest(src, &rest, err);
@@ -93,8 +94,11 @@ static rayo_status read_from(rayo_source *src, rayo_image *image,
     return status;
 }
 
-rayo_status rayo_image_read_file(const char *path, rayo_image *image,
-                                 rayo_read_report *report, rayo_error *err)
+rayo_status rayo_image_read_file_with(const char *path,
+                                      const rayo_read_options *options,
+                                      rayo_image *image,
+                                      rayo_read_report *report,
+                                      rayo_error *err)
 {
     rayo_source src;
     rayo_status status;
@@ -102,9 +106,16 @@ rayo_status rayo_image_read_file(const char *path, rayo_image *image,
     status = rayo_source_open_file(&src, path, err);
     if (status != RAYO_OK)
         return status;
-    status = read_from(&src, image, report, err);
+    status = read_from(&src, options != NULL && options->clamp, image,
+                       report, err);
     rayo_source_close(&src);
     return status;
+}
+
+rayo_status rayo_image_read_file(const char *path, rayo_image *image,
+                                 rayo_read_report *report, rayo_error *err)
+{
+    return rayo_image_read_file_with(path, NULL, image, report, err);
 }
 
 rayo_status rayo_image_read_memory(const void *data, size_t size,
@@ -114,5 +125,5 @@ rayo_status rayo_image_read_memory(const void *data, size_t size,
 {
     rayo_source src;
     rayo_source_open_memory(&src, data, size, name ? name : "memory");
-    return read_from(&src, image, report, err);
+    return read_from(&src, 0, image, report, err);
 }

@@ -17,8 +17,9 @@
  * RAYO_TRAILING_SCAN_BYTES bytes, which it counts in
  * report->trailing_bytes; the caller adds what is left after the cursor.
  */
-rayo_status rayo_pnm_read(rayo_source *src, int digit, rayo_image *image,
-                          rayo_read_report *report, rayo_error *err);
+rayo_status rayo_pnm_read(rayo_source *src, int digit, int clamp,
+                          rayo_image *image, rayo_read_report *report,
+                          rayo_error *err);
 
 /*
  * Reads a PNG image whose 8-byte signature has been consumed and checked;

@@ -119,6 +119,7 @@ static rayo_status say_diagnosis(rayo_grade_item *item,
     case RAYO_DIAGNOSIS_OFFSET:
     case RAYO_DIAGNOSIS_WRAPPED:
     case RAYO_DIAGNOSIS_MISTAKE:
+    case RAYO_DIAGNOSIS_OUT_OF_RANGE:
         break;
     }
     return grade_fail(item, err, "no simple mistake explains the "

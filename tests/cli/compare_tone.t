@@ -125,6 +125,27 @@ for mistake in no_shadows self_shadow; do
         "$TMP/$mistake.pgm" "$COURSE/referencia-catedra-ej2.png"
     is "$(json .diagnosis.mistake)/$(json .course)" "$name/ej2" "  the mistake $name of ej2"
 done
+
+# Values outside 0..255 (student programs that do not clamp): the
+# image's samples are clamped to be compared and the verdict says why.
+${RAYO_CC:-cc} -std=c99 -w -o "$TMP/no_clamp" \
+    "$RAYO_SOURCE/tests/grade/ej2_no_clamp/main.c" -lm
+(cd "$TMP" && ./no_clamp) >"$TMP/no_clamp.pgm"
+above255=$(tail -n +4 "$TMP/no_clamp.pgm" | tr -s ' \n' '\n' | awk '$1 > 255' |
+           wc -l | tr -d ' ')
+expect "EJ2 without clamping" inconsistent out-of-range "$TMP/no_clamp.pgm" "$TMP/ej2.pgm"
+is "$(json .image_clamped.high)" "$above255" "  $above255 samples above 255, as awk counts them"
+grep -q 'values not clamped' "$TMP/out"
+ok $? "  says the values are not clamped"
+${RAYO_CC:-cc} -std=c99 -w -o "$TMP/no_ln" \
+    "$RAYO_SOURCE/tests/grade/ej2_no_ln_test/main.c" -lm
+(cd "$TMP" && ./no_ln) >"$TMP/no_ln.pgm"
+negative=$(tail -n +4 "$TMP/no_ln.pgm" | tr -s ' \n' '\n' | grep -c '^-')
+expect "EJ2 without the L.N > 0 test" inconsistent mistake "$TMP/no_ln.pgm" "$TMP/ej2.pgm"
+is "$(json .diagnosis.mistake)/$(json .image_clamped.low)" "no-ln-test/$negative" \
+    "  the mistake no-ln-test, and $negative negative samples clamped"
+run_capture compare "$TMP/no_ln.pgm" "$TMP/ej2.pgm"
+is "$status" 2 "  as a reference it is refused (exit 2)"
 fi
 
 # --- the difference picture ---------------------------------------------

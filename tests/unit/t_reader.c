@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "rayo.h"
 #include "tap.h"
@@ -708,8 +709,48 @@ static void test_corpus_from_memory(void)
                            "named, nothing allocated");
 }
 
+/* rayo_read_options.clamp: plain samples out of range taken into range
+   and counted; without it the same file is refused. */
+static void test_clamp(void)
+{
+    static const char text[] = "P2\n4 2\n255\n260 -3 7 255\n"
+                               "0 300 -12 1\n";
+    char path[] = "/tmp/rayo-t-reader-XXXXXX";
+    rayo_read_options o;
+    rayo_read_report rp;
+    rayo_image image;
+    rayo_error err;
+    int fd = mkstemp(path);
+    ok(fd >= 0 && write(fd, text, sizeof text - 1) == (ssize_t)(sizeof text - 1),
+       "clamp: a P2 with 260, -3, 300 and -12 written");
+    if (fd >= 0)
+        close(fd);
+    is_int(rayo_image_read_file(path, &image, NULL, &err), RAYO_ERR_FORMAT,
+           "clamp: refused without the option");
+    memset(&o, 0, sizeof o);
+    o.clamp = 1;
+    is_int(rayo_image_read_file_with(path, &o, &image, &rp, &err), RAYO_OK,
+           "clamp: read with it");
+    if (image.pixels != NULL) {
+        const unsigned char *r0 = rayo_image_row(&image, 0);
+        const unsigned char *r1 = rayo_image_row(&image, 1);
+        is_int(r0[0] * 1000000 + r0[1] * 1000 + r0[2], 255000007,
+               "clamp: 260 -> 255, -3 -> 0, 7 kept");
+        is_int(r1[1] * 1000 + r1[2], 255000, "clamp: 300 -> 255, -12 -> 0");
+    }
+    is_int(rp.clamped_high * 10 + rp.clamped_low, 22,
+           "clamp: two above maxval, two negative");
+    is_int(rp.first_high_line * 10 + rp.first_low_line, 44,
+           "clamp: the first of each on line 4");
+    is_int(rp.largest_found, 300, "clamp: the largest found, 300");
+    is_int(rp.smallest_found, -12, "clamp: the smallest found, -12");
+    rayo_image_free(&image);
+    unlink(path);
+}
+
 int main(void)
 {
+    test_clamp();
     test_plain_pbm();
     test_raw_pbm_padding();
     test_gray_and_colour();
