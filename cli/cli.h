@@ -10,6 +10,7 @@
 #ifndef RAYO_CLI_H
 #define RAYO_CLI_H
 
+#include <stdarg.h>
 #include <stdio.h>
 
 #include "rayo.h"
@@ -38,6 +39,31 @@ int cli_print_preview(const rayo_image *image,
  * quietly, other failures exit 1). */
 int cli_unreadable(const rayo_error *err);
 int cli_flush_text(FILE *stream, const char *name);
+
+/* escape.c: text from outside on one line.  The character at s as shown
+   (control bytes and invalid UTF-8 as \n, \t, \r, \xHH; a backslash
+   doubled when names), into text; returns the bytes of s it stands for,
+   *columns how wide it is.  cli_put_escaped writes s so, at most max
+   bytes (0: no limit) then "...".  cli_say and cli_sayf print "rayo: "
+   and the message so, cut at CLI_MESSAGE_MAX bytes, and a newline on
+   stderr: every message of the command goes through them. */
+#define CLI_MESSAGE_MAX 1000
+/* Bytes in the valid UTF-8 sequence of 2 to 4 bytes at s, else 0. */
+size_t cli_utf8_sequence(const unsigned char *s);
+size_t cli_escape_unit(const char *s, int names, char text[8],
+                       size_t *columns);
+void cli_put_escaped(FILE *stream, const char *s, int names, size_t max);
+void cli_say(const char *text);
+void cli_sayf(const char *format, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+void cli_vsayf(const char *format, va_list args)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 1, 0)))
+#endif
+    ;
 
 /* Prints "rayo: MESSAGE" on stderr; returns CLI_EXIT_USAGE. */
 int cli_usage_error(const char *format, ...)

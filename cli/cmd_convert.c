@@ -163,28 +163,29 @@ static void report_read(const convert_request *req, const rayo_image *image,
                         const rayo_read_report *report)
 {
     const rayo_image_info *info = &image->info;
-    fprintf(stderr, "rayo: %s: %s%s, %lux%lu, %s, maxval %u",
-            strcmp(req->input, "-") == 0 ? "standard input" : req->input,
-            report->format == RAYO_FORMAT_PNG ? "" : (report->plain ? "plain "
-                                                                     : "raw "),
-            rayo_format_name(report->format), (unsigned long)info->width,
-            (unsigned long)info->height, layout_name(info), info->maxval);
-    fprintf(stderr, "; %llu byte%s after the image%s\n",
-            (unsigned long long)report->trailing_bytes,
-            report->trailing_bytes == 1 ? "" : "s",
-            report->trailing_bytes ? " (ignored)" : "");
+    cli_sayf("%s: %s%s, %lux%lu, %s, maxval %u; %llu byte%s after the "
+             "image%s",
+             strcmp(req->input, "-") == 0 ? "standard input" : req->input,
+             report->format == RAYO_FORMAT_PNG ? ""
+                                               : (report->plain ? "plain "
+                                                                : "raw "),
+             rayo_format_name(report->format), (unsigned long)info->width,
+             (unsigned long)info->height, layout_name(info), info->maxval,
+             (unsigned long long)report->trailing_bytes,
+             report->trailing_bytes == 1 ? "" : "s",
+             report->trailing_bytes ? " (ignored)" : "");
 }
 
 static void report_written(const convert_request *req, const rayo_image *fit,
                            const rayo_write_options *options)
 {
-    fprintf(stderr, "rayo: %s: wrote %s%s, %s, maxval %u\n",
-            strcmp(req->output, "-") == 0 ? "standard output" : req->output,
-            options->format == RAYO_FORMAT_PNG
-                ? ""
-                : (options->plain ? "plain " : "raw "),
-            rayo_format_name(options->format), layout_name(&fit->info),
-            fit->info.maxval);
+    cli_sayf("%s: wrote %s%s, %s, maxval %u",
+             strcmp(req->output, "-") == 0 ? "standard output" : req->output,
+             options->format == RAYO_FORMAT_PNG
+                 ? ""
+                 : (options->plain ? "plain " : "raw "),
+             rayo_format_name(options->format), layout_name(&fit->info),
+             fit->info.maxval);
 }
 
 static rayo_status write_image(const convert_request *req,

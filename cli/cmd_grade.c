@@ -215,74 +215,13 @@ static int parse_request(int argc, char **argv, grade_request *req)
  */
 #define STUDENT_COLUMNS 40 /* the widest the table's student column gets */
 
-/* Bytes in the valid UTF-8 sequence of 2 to 4 bytes at s, else 0. */
-static size_t utf8_sequence(const unsigned char *s)
-{
-    unsigned long cp;
-    size_t n, i;
-    if (s[0] >= 0xC2 && s[0] <= 0xDF) {
-        n = 2;
-        cp = s[0] & 0x1Fu;
-    } else if (s[0] >= 0xE0 && s[0] <= 0xEF) {
-        n = 3;
-        cp = s[0] & 0x0Fu;
-    } else if (s[0] >= 0xF0 && s[0] <= 0xF4) {
-        n = 4;
-        cp = s[0] & 0x07u;
-    } else {
-        return 0;
-    }
-    for (i = 1; i < n; i++) {
-        if ((s[i] & 0xC0u) != 0x80u)
-            return 0; /* also stops at the terminating NUL */
-        cp = cp << 6 | (s[i] & 0x3Fu);
-    }
-    if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) ||
-        cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
-        return 0;
-    return n;
-}
-
-/* The character at s as shown (into text, NUL-terminated): returns the
-   bytes of s it stands for; *columns is how wide it is.  A backslash is
-   doubled only in names (so "a\\nb" and "a", newline, "b" differ); in
-   reason lines, which quote C source and shell words, it stays one. */
-static size_t escape_unit(const char *s, int names, char text[8],
-                          size_t *columns)
-{
-    const unsigned char *p = (const unsigned char *)s;
-    size_t n = p[0] >= 0x80 ? utf8_sequence(p) : 0;
-    if (n > 0) {
-        memcpy(text, s, n);
-        text[n] = '\0';
-        *columns = 1;
-        return n;
-    }
-    if (p[0] == '\n')
-        strcpy(text, "\\n");
-    else if (p[0] == '\t')
-        strcpy(text, "\\t");
-    else if (p[0] == '\r')
-        strcpy(text, "\\r");
-    else if (p[0] == '\\' && names)
-        strcpy(text, "\\\\");
-    else if (p[0] < 0x20 || p[0] >= 0x7f)
-        snprintf(text, 8, "\\x%02x", p[0]);
-    else {
-        text[0] = s[0];
-        text[1] = '\0';
-    }
-    *columns = strlen(text);
-    return 1;
-}
-
 /* Writes s escaped (names: a name, else a reason line). */
 static void print_escaped(const char *s, int names)
 {
     while (*s != '\0') {
         char text[8];
         size_t columns;
-        s += escape_unit(s, names, text, &columns);
+        s += cli_escape_unit(s, names, text, &columns);
         fputs(text, stdout);
     }
 }
@@ -294,7 +233,7 @@ static size_t escaped_columns(const char *s)
     while (*s != '\0') {
         char text[8];
         size_t columns;
-        s += escape_unit(s, 1, text, &columns);
+        s += cli_escape_unit(s, 1, text, &columns);
         total += columns;
     }
     return total;
@@ -309,7 +248,7 @@ static void print_column(const char *s, size_t width)
         room = width > 3 ? width - 3 : 0;
     while (*s != '\0') {
         char text[8];
-        size_t columns, n = escape_unit(s, 1, text, &columns);
+        size_t columns, n = cli_escape_unit(s, 1, text, &columns);
         if (used + columns > room)
             break;
         fputs(text, stdout);
@@ -375,7 +314,7 @@ static void json_string(const char *s)
     putchar('"');
     for (; *s != '\0'; s++) {
         unsigned char ch = (unsigned char)*s;
-        size_t n = ch >= 0x80 ? utf8_sequence((const unsigned char *)s) : 0;
+        size_t n = ch >= 0x80 ? cli_utf8_sequence((const unsigned char *)s) : 0;
         if (n > 0) {
             fwrite(s, 1, n, stdout);
             s += n - 1;

@@ -23,11 +23,9 @@
 int cli_usage_error(const char *format, ...)
 {
     va_list args;
-    fputs("rayo: ", stderr);
     va_start(args, format);
-    vfprintf(stderr, format, args);
+    cli_vsayf(format, args);
     va_end(args);
-    fputc('\n', stderr);
     return CLI_EXIT_USAGE;
 }
 
@@ -45,14 +43,14 @@ int cli_report(const rayo_error *err)
     case RAYO_ERR_INVALID:
     case RAYO_ERR_FORMAT:
     case RAYO_ERR_LIMIT:
-        fprintf(stderr, "rayo: %s\n", err->message);
+        cli_say(err->message);
         return CLI_EXIT_USAGE;
     case RAYO_ERR_NOMEM:
     case RAYO_ERR_IO:
     case RAYO_ERR_CANCELLED:
         break;
     }
-    fprintf(stderr, "rayo: %s\n", err->message);
+    cli_say(err->message);
     return CLI_EXIT_FAILURE;
 }
 

@@ -15,7 +15,7 @@ int cli_unreadable(const rayo_error *err)
 {
     if (err->status == RAYO_ERR_NOMEM)
         return cli_report(err);
-    fprintf(stderr, "rayo: %s\n", err->message);
+    cli_say(err->message);
     return CLI_EXIT_USAGE;
 }
 
