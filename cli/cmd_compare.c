@@ -1,7 +1,8 @@
 /*
- * cmd_compare.c - `rayo compare REFERENCE IMAGE`: reads both images,
- * compares them (compare.h) and prints the report, as text or JSON, and
- * optionally writes the difference picture.
+ * cmd_compare.c - `rayo compare REFERENCE IMAGE`: reads both images (the
+ * image with its samples out of range clamped and counted, the reference
+ * strictly), compares them (compare.h: masks or values) and prints the
+ * report, as text or JSON, and optionally writes the difference picture.
  *
  * Exit status: 0 identical or consistent, 1 inconsistent, 2 unreadable
  * input or bad options (and 1 for an output failure of --diff).  The
@@ -184,7 +185,8 @@ static int write_diff(const char *path, const rayo_image *reference,
     if (rayo_output_open(&out, path, &err) != RAYO_OK)
         return cli_report(&err);
     cli_guard_output(out);
-    if (rayo_compare_write_diff(reference, image, options, out, &err) == RAYO_OK)
+    if (rayo_compare_write_diff(reference, image, options, out, &err) ==
+        RAYO_OK)
         cli_output_commit(out, &err);
     else
         cli_output_abort(out);
@@ -208,7 +210,8 @@ static int compare_images(const compare_request *req,
     report.image_surplus = image_surplus;
     rayo_compare_note_clamped(&report, clamped);
     if (req->diff != NULL &&
-        (status = write_diff(req->diff, reference, image, &req->options)) != CLI_EXIT_OK)
+        (status = write_diff(req->diff, reference, image, &req->options)) !=
+            CLI_EXIT_OK)
         return status;
     if ((status = print_report(&report, req->json)) != CLI_EXIT_OK)
         return status;

@@ -314,7 +314,8 @@ static void json_string(const char *s)
     putchar('"');
     for (; *s != '\0'; s++) {
         unsigned char ch = (unsigned char)*s;
-        size_t n = ch >= 0x80 ? cli_utf8_sequence((const unsigned char *)s) : 0;
+        size_t n =
+            ch >= 0x80 ? cli_utf8_sequence((const unsigned char *)s) : 0;
         if (n > 0) {
             fwrite(s, 1, n, stdout);
             s += n - 1;

@@ -109,11 +109,13 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
         cmp_put(s, "none");
         break;
     case RAYO_DIAGNOSIS_FLIPPED_VERTICALLY:
-        cmp_put(s, "the image is upside down (flipped vertically): rows written "
+        cmp_put(s, "the image is upside down (flipped vertically): rows "
+                   "written "
                "from the bottom up, or y not negated in the ray direction");
         break;
     case RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY:
-        cmp_put(s, "the image is mirrored left to right (flipped horizontally): "
+        cmp_put(s, "the image is mirrored left to right (flipped "
+                   "horizontally): "
                "columns written from the right, or x negated");
         break;
     case RAYO_DIAGNOSIS_ROTATED_180:
@@ -129,12 +131,14 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
                "written as columns");
         break;
     case RAYO_DIAGNOSIS_SHIFTED:
-        cmp_put(s, "the picture is shifted by (%+d, %+d) pixels (right, down): "
+        cmp_put(s, "the picture is shifted by (%+d, %+d) pixels (right, "
+                   "down): "
                "check the pixel grid, x = i - w/2 and y = j - h/2",
             r->shift_x, r->shift_y);
         break;
     case RAYO_DIAGNOSIS_SCALED:
-        cmp_put(s, "the shape is scaled by %.3f about the centre of the image: "
+        cmp_put(s, "the shape is scaled by %.3f about the centre of the "
+                   "image: "
                "a wrong field of view or focal distance (z = w / (2 "
                "tan(fov/2)), fov in radians)",
             r->scale_found);
@@ -208,7 +212,8 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
                 "(%+.2f, %+.2f) px (right, down), scale %.4f\n",
             r->offset_x, r->offset_y, r->scale);
     else
-        cmp_put(&s, "black shape of the image vs the reference: - (one of them "
+        cmp_put(&s, "black shape of the image vs the reference: - (one of "
+                    "them "
                 "has no black pixel)\n");
     cmp_put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
@@ -237,7 +242,8 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
         r->reference_width, r->reference_height,
         (unsigned long long)r->reference_black, r->image_width,
         r->image_height, (unsigned long long)r->image_black);
-    cmp_put(&s, ", \"pixels\": %llu, \"mismatches\": %llu, \"reference_only\": "
+    cmp_put(&s, ", \"pixels\": %llu, \"mismatches\": %llu, "
+                "\"reference_only\": "
             "%llu, \"image_only\": %llu, \"mismatch_percent\": %.6f, "
             "\"iou\": %.6f",
         (unsigned long long)r->pixels, (unsigned long long)r->mismatches,
@@ -247,10 +253,12 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
         cmp_put(&s, ", \"max_distance\": null");
     else
         cmp_put(&s, ", \"max_distance\": %.6f", r->max_distance);
-    cmp_put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": %llu", r->tolerance,
+    cmp_put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": "
+                "%llu", r->tolerance,
         (unsigned long long)r->beyond_tolerance);
     if (r->shapes_measured)
-        cmp_put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, \"scale\": %.6f",
+        cmp_put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, \"scale\": "
+                    "%.6f",
             r->offset_x, r->offset_y, r->scale);
     else
         cmp_put(&s, ", \"offset\": null, \"scale\": null");

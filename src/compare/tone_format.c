@@ -47,7 +47,8 @@ static void put_scale(cmp_sink *s, const rayo_compare_report *r)
         larger > 1 ? "longer" : "shorter");
     if (looks_like_course_focal(r))
         cmp_put(s, "; at 640 pixels and 90 degrees the formula gives z = 320 "
-               "and the reference was most likely drawn with z = 321.5, as the "
+               "and the reference was most likely drawn with z = 321.5, as "
+               "the "
                "course's "
                "references for EJ1 and EJ2 were: that is why outlines and "
                "shadow edges differ");
@@ -132,7 +133,8 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
         cmp_put_out_of_range(s, r);
         break;
     case RAYO_DIAGNOSIS_MISTAKE:
-        cmp_put(s, "%s", rayo_course_mistake_text((rayo_course_exercise)t->course,
+        cmp_put(s, "%s",
+                rayo_course_mistake_text((rayo_course_exercise)t->course,
                                               t->mistake));
         break;
     case RAYO_DIAGNOSIS_CHANNELS_SWAPPED:
@@ -150,7 +152,8 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
                 r->shift_x < 0 ? "left" : "right",
                 r->shift_y != 0 ? " and " : "");
         if (r->shift_y != 0)
-            cmp_put(s, "%d row%s %s", r->shift_y < 0 ? -r->shift_y : r->shift_y,
+            cmp_put(s, "%d row%s "
+                       "%s", r->shift_y < 0 ? -r->shift_y : r->shift_y,
                 r->shift_y == 1 || r->shift_y == -1 ? "" : "s",
                 r->shift_y < 0 ? "up" : "down");
         cmp_put(s, ": check the pixel grid, x = i - ANCHO/2 and rows from y = "
@@ -180,11 +183,13 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
-    cmp_put(s, "reference: %ux%u, %s\n", r->reference_width, r->reference_height,
+    cmp_put(s, "reference: %ux%u, "
+               "%s\n", r->reference_width, r->reference_height,
         kind_of(t->reference_channels));
     cmp_put(s, "image:     %ux%u, %s\n", r->image_width, r->image_height,
         kind_of(t->image_channels));
-    cmp_put(s, "compared:  %s values; a pixel differs when off by more than %u "
+    cmp_put(s, "compared:  %s values; a pixel differs when off by more than "
+               "%u "
            "level%s (of 255)\n",
         t->channels == 1 ? "gray" : "RGB", t->levels,
         t->levels == 1 ? "" : "s");
@@ -232,7 +237,8 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
-    cmp_put(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, \"height\": "
+    cmp_put(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, "
+               "\"height\": "
            "%u, \"channels\": %u}, \"image\": {\"width\": %u, \"height\": "
            "%u, \"channels\": %u}, \"pixels\": %llu, \"levels\": %u, "
            "\"tolerance\": %.6g, \"channels\": [",
@@ -241,7 +247,8 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         (unsigned long long)r->pixels, t->levels, r->tolerance);
     for (c = 0; c < t->channels; c++) {
         const rayo_compare_channel *ch = &t->channel[c];
-        cmp_put(s, "%s{\"name\": \"%s\", \"beyond\": %llu, \"max_difference\": "
+        cmp_put(s, "%s{\"name\": \"%s\", \"beyond\": %llu, "
+                   "\"max_difference\": "
                "%u, \"rmse\": %.6f, \"psnr\": ",
             c ? ", " : "", channel_name(t, c),
             (unsigned long long)ch->beyond, ch->max_difference, ch->rmse);
@@ -266,10 +273,12 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         (unsigned long long)r->reference_surplus,
         (unsigned long long)r->image_surplus);
     cmp_put_clamped_json(s, r);
-    cmp_put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, \"course\": ",
+    cmp_put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, "
+               "\"course\": ",
         t->scale_fit, (unsigned long long)t->differing_scaled);
     if (t->course >= 0)
-        cmp_put(s, "\"%s\"", rayo_course_name((rayo_course_exercise)t->course));
+        cmp_put(s, "\"%s\"",
+                rayo_course_name((rayo_course_exercise)t->course));
     else
         cmp_put(s, "null");
     cmp_put(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
@@ -278,7 +287,8 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         rayo_compare_diagnosis_name(r->diagnosis),
         r->diagnosis_exact ? "true" : "false");
     if (r->diagnosis == RAYO_DIAGNOSIS_MISTAKE)
-        cmp_put(s, ", \"mistake\": \"%s\"", rayo_course_mistake_name(t->mistake));
+        cmp_put(s, ", \"mistake\": "
+                   "\"%s\"", rayo_course_mistake_name(t->mistake));
     if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
         cmp_put(s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
             r->shift_y);
@@ -291,7 +301,8 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         cmp_put(s, ", \"offset\": [");
         for (c = 0; c < t->channels; c++)
             cmp_put(s, "%s%d", c ? ", " : "", t->offset[c]);
-        cmp_put(s, "], \"on_shapes\": %s", t->offset_on_shapes ? "true" : "false");
+        cmp_put(s, "], \"on_shapes\": "
+                   "%s", t->offset_on_shapes ? "true" : "false");
     }
     cmp_put(s, ", \"text\": \"");
     tone_put_diagnosis(r, s);

@@ -193,7 +193,8 @@ static void test_diagnoses(void)
             at(&f, x, y)[0] = 95;
         }
     r = compare(&e, &f, 1);
-    is_int(r.diagnosis, RAYO_DIAGNOSIS_OFFSET, "a disc 5 levels darker: offset");
+    is_int(r.diagnosis, RAYO_DIAGNOSIS_OFFSET,
+           "a disc 5 levels darker: offset");
     is_int(r.tone.offset[0], -5, "  of -5");
     ok(r.tone.offset_on_shapes, "  on the objects, not the black background");
     /* Moved a row down: a shift, said as (0, +1). */
