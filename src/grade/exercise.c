@@ -4,46 +4,24 @@
  * to make the reference that image is compared with.
  *
  * Adding an exercise is adding an entry here, its scene in src/course
- * and its functions' cases in a functions_ejN.c.  The
- * registry is constant data; nothing here runs a submission.
+ * and its functions' cases in a functions_ejN.c.  The registry is
+ * constant data; nothing here runs a submission.
  */
 #include <stddef.h>
 #include <string.h>
 
-#include "rayo/camera.h"
-#include "rayo/render.h"
-#include "rayo/scene.h"
 #include "rayo/seed.h"
 
 #include "grade_impl.h"
 
-/* Ejercicio obligatorio 1: the seed sphere, 640x480, fov 90, hit = black. */
+/* The exercises' references: rayo's exact render of each course scene
+   (course.h): EJ1 the seed sphere, black where a ray hits; EJ2 and EJ3
+   their lit scenes. */
 static rayo_status reference_ej1(rayo_image *image, rayo_error *err)
 {
-    rayo_camera camera;
-    rayo_scene *scene = NULL;
-    rayo_render_options options;
-    rayo_status status = rayo_camera_init(
-        &camera, RAYO_SEED_WIDTH, RAYO_SEED_HEIGHT, RAYO_SEED_FOV,
-        rayo_vec3_make(0, 0, 0), err);
-    if (status == RAYO_OK)
-        status = rayo_scene_create(&scene, err);
-    if (status == RAYO_OK)
-        status = rayo_scene_add_sphere(
-            scene,
-            rayo_vec3_make(RAYO_SEED_CENTER_X, RAYO_SEED_CENTER_Y,
-                           RAYO_SEED_CENTER_Z),
-            RAYO_SEED_RADIUS, err);
-    if (status == RAYO_OK) {
-        rayo_render_options_init(&options);
-        options.threads = 1;
-        status = rayo_render_image(&camera, scene, &options, image, err);
-    }
-    rayo_scene_free(scene);
-    return status;
+    return rayo_course_render(RAYO_COURSE_EJ1, NULL, image, err);
 }
 
-/* Ejercicios 2 and 3: rayo's exact render of the course's scene. */
 static rayo_status reference_ej2(rayo_image *image, rayo_error *err)
 {
     return rayo_course_render(RAYO_COURSE_EJ2, NULL, image, err);
