@@ -33,12 +33,13 @@ static void put_surplus(cmp_sink *s, const char *which, uint64_t pixels,
 {
     if (pixels == 0)
         return;
-    cmp_put(s, "note: the %s's file holds %llu pixel%s beyond the raster "
-               "its header promises",
-            which, (unsigned long long)pixels, pixels == 1 ? "" : "s");
+    cmp_put(s, "note: the %s's file holds %llu pixel%s beyond the raster its "
+               "header promises",
+        which, (unsigned long long)pixels, pixels == 1 ? "" : "s");
     if (width > 0 && pixels % width == 0)
-        cmp_put(s, " (%llu more row%s)", (unsigned long long)(pixels / width),
-                pixels / width == 1 ? "" : "s");
+        cmp_put(s, " (%llu more row%s)",
+            (unsigned long long)(pixels / width),
+            pixels / width == 1 ? "" : "s");
     cmp_put(s, "; they were not compared\n");
 }
 
@@ -48,35 +49,33 @@ void cmp_put_clamped_json(cmp_sink *s, const rayo_compare_report *r)
         return;
     cmp_put(s, ", \"image_clamped\": {\"high\": %llu, \"low\": %llu, "
                "\"largest\": %ld, \"smallest\": %ld}",
-            (unsigned long long)r->image_clamped_high,
-            (unsigned long long)r->image_clamped_low, r->image_largest,
-            r->image_smallest);
+        (unsigned long long)r->image_clamped_high,
+        (unsigned long long)r->image_clamped_low, r->image_largest,
+        r->image_smallest);
 }
 
 void cmp_put_out_of_range(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->image_clamped_high > 0) {
-        cmp_put(s, "%llu sample%s above the maximum (the first on line "
-                   "%llu, the largest %ld): ",
-                (unsigned long long)r->image_clamped_high,
-                r->image_clamped_high == 1 ? "" : "s",
-                (unsigned long long)r->image_first_high_line,
-                r->image_largest);
+        cmp_put(s, "%llu sample%s above the maximum (the first on line %llu, "
+                   "the largest %ld): ",
+            (unsigned long long)r->image_clamped_high,
+            r->image_clamped_high == 1 ? "" : "s",
+            (unsigned long long)r->image_first_high_line, r->image_largest);
         if (r->image_largest == 256)
             cmp_put(s, "0..1 scaled by 256 instead of 255, or ");
-        cmp_put(s, "values not clamped: the statements say values above "
-                   "255 become 255 (each channel above 1 becomes 1)");
+        cmp_put(s, "values not clamped: the statements say values above 255 "
+                   "become 255 (each channel above 1 becomes 1)");
     }
     if (r->image_clamped_low > 0)
         cmp_put(s, "%s%llu negative sample%s (the first on line %llu, the "
                    "smallest %ld): a negative intensity, the diffuse term "
-                   "added where L.N < 0; the statements add it only when "
-                   "L.N > 0",
-                r->image_clamped_high > 0 ? "; " : "",
-                (unsigned long long)r->image_clamped_low,
-                r->image_clamped_low == 1 ? "" : "s",
-                (unsigned long long)r->image_first_low_line,
-                r->image_smallest);
+                   "added where L.N < 0; the statements add it only when L.N "
+                   "> 0",
+            r->image_clamped_high > 0 ? "; " : "",
+            (unsigned long long)r->image_clamped_low,
+            r->image_clamped_low == 1 ? "" : "s",
+            (unsigned long long)r->image_first_low_line, r->image_smallest);
 }
 
 void cmp_put_surplus(char *buffer, size_t size, size_t *length,
@@ -90,8 +89,8 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
     put_surplus(&s, "image", r->image_surplus, r->image_width);
     if (r->image_clamped_high + r->image_clamped_low > 0 &&
         r->diagnosis != RAYO_DIAGNOSIS_OUT_OF_RANGE) {
-        cmp_put(&s, "note: the image was compared with its samples clamped "
-                    "to 0..maxval: ");
+        cmp_put(&s, "note: the image was compared with its samples clamped to "
+                    "0..maxval: ");
         cmp_put_out_of_range(&s, r);
         cmp_put(&s, "\n");
     }
@@ -110,42 +109,39 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
         break;
     case RAYO_DIAGNOSIS_FLIPPED_VERTICALLY:
         cmp_put(s, "the image is upside down (flipped vertically): rows "
-                   "written "
-               "from the bottom up, or y not negated in the ray direction");
+                   "written from the bottom up, or y not negated in the ray "
+                   "direction");
         break;
     case RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY:
         cmp_put(s, "the image is mirrored left to right (flipped "
-                   "horizontally): "
-               "columns written from the right, or x negated");
+                   "horizontally): columns written from the right, or x "
+                   "negated");
         break;
     case RAYO_DIAGNOSIS_ROTATED_180:
         cmp_put(s, "the image is upside down and mirrored (flipped both ways, "
-               "a half turn)");
+                   "a half turn)");
         break;
     case RAYO_DIAGNOSIS_INVERTED:
         cmp_put(s, "the colours are inverted (0 and 1 swapped): in PBM 1 is "
-               "black, and a ray that hits the sphere is black");
+                   "black, and a ray that hits the sphere is black");
         break;
     case RAYO_DIAGNOSIS_TRANSPOSED:
         cmp_put(s, "the image is transposed (width and height swapped): rows "
-               "written as columns");
+                   "written as columns");
         break;
     case RAYO_DIAGNOSIS_SHIFTED:
         cmp_put(s, "the picture is shifted by (%+d, %+d) pixels (right, "
-                   "down): "
-               "check the pixel grid, x = i - w/2 and y = j - h/2",
+                   "down): check the pixel grid, x = i - w/2 and y = j - h/2",
             r->shift_x, r->shift_y);
         break;
     case RAYO_DIAGNOSIS_SCALED:
         cmp_put(s, "the shape is scaled by %.3f about the centre of the "
-                   "image: "
-               "a wrong field of view or focal distance (z = w / (2 "
-               "tan(fov/2)), fov in radians)",
-            r->scale_found);
+                   "image: a wrong field of view or focal distance (z = w / "
+                   "(2 tan(fov/2)), fov in radians)", r->scale_found);
         break;
     case RAYO_DIAGNOSIS_DIFFERENT_SIZE:
         cmp_put(s, "the image is %ux%u but the reference is %ux%u: check the "
-               "width and height (ANCHO, ALTO)",
+                   "width and height (ANCHO, ALTO)",
             r->image_width, r->image_height, r->reference_width,
             r->reference_height);
         break;
@@ -154,12 +150,12 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
         break;
     case RAYO_DIAGNOSIS_NOT_A_SPHERE:
         cmp_put(s, "the black region is not an ellipse-shaped blob: this does "
-               "not look like a picture of a sphere");
+                   "not look like a picture of a sphere");
         break;
     case RAYO_DIAGNOSIS_OTHER_SPHERE:
         cmp_put(s, "a sphere, but not the reference's: its shape is offset by "
-               "(%+.1f, %+.1f) pixels and %.3f times the size; check the "
-               "sphere's centre and radius",
+                   "(%+.1f, %+.1f) pixels and %.3f times the size; check the "
+                   "sphere's centre and radius",
             r->offset_x, r->offset_y, r->scale);
         break;
     case RAYO_DIAGNOSIS_OUT_OF_RANGE:
@@ -167,7 +163,7 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
         break;
     default:
         cmp_put(s, "no single mistake (flip, inversion, transposition, shift, "
-               "scale) explains the differences");
+                   "scale) explains the differences");
         break;
     }
 }
@@ -176,10 +172,10 @@ static void put_distance_text(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->max_distance < 0)
         cmp_put(s, "farthest mismatch from the reference's outline: - (the "
-               "reference is all one colour)\n");
+                   "reference is all one colour)\n");
     else
         cmp_put(s, "farthest mismatch from the reference's outline: %.2f px "
-               "(tolerance %g px; %llu beyond it)\n",
+                   "(tolerance %g px; %llu beyond it)\n",
             r->max_distance, r->tolerance,
             (unsigned long long)r->beyond_tolerance);
 }
@@ -196,12 +192,13 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
         cmp_put_surplus(buffer, size, &t.length, r);
         return t.length;
     }
-    cmp_put(&s, "reference: %ux%u, %llu black pixels\n", r->reference_width,
-        r->reference_height, (unsigned long long)r->reference_black);
-    cmp_put(&s, "image:     %ux%u, %llu black pixels\n", r->image_width,
-        r->image_height, (unsigned long long)r->image_black);
+    cmp_put(&s, "reference: %ux%u, %llu black pixels\n",
+        r->reference_width, r->reference_height,
+        (unsigned long long)r->reference_black);
+    cmp_put(&s, "image:     %ux%u, %llu black pixels\n",
+        r->image_width, r->image_height, (unsigned long long)r->image_black);
     cmp_put(&s, "mismatched pixels: %llu of %llu (%.3f%%): %llu black only in "
-            "the reference, %llu black only in the image\n",
+                "the reference, %llu black only in the image\n",
         (unsigned long long)r->mismatches, (unsigned long long)r->pixels,
         r->mismatch_percent, (unsigned long long)r->reference_only,
         (unsigned long long)r->image_only);
@@ -209,12 +206,11 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
     put_distance_text(&s, r);
     if (r->shapes_measured)
         cmp_put(&s, "black shape of the image vs the reference: offset "
-                "(%+.2f, %+.2f) px (right, down), scale %.4f\n",
+                    "(%+.2f, %+.2f) px (right, down), scale %.4f\n",
             r->offset_x, r->offset_y, r->scale);
     else
         cmp_put(&s, "black shape of the image vs the reference: - (one of "
-                    "them "
-                "has no black pixel)\n");
+                    "them has no black pixel)\n");
     cmp_put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
         cmp_put(&s, "diagnosis: ");
@@ -236,16 +232,15 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
         tone_format_json(r, &t);
         return t.length;
     }
-    cmp_put(&s, "{\"reference\": {\"width\": %u, "
-            "\"height\": %u, \"black\": %llu}, \"image\": {\"width\": "
-            "%u, \"height\": %u, \"black\": %llu}",
+    cmp_put(&s, "{\"reference\": {\"width\": %u, \"height\": %u, \"black\": "
+                "%llu}, \"image\": {\"width\": %u, \"height\": %u, \"black\": "
+                "%llu}",
         r->reference_width, r->reference_height,
         (unsigned long long)r->reference_black, r->image_width,
         r->image_height, (unsigned long long)r->image_black);
     cmp_put(&s, ", \"pixels\": %llu, \"mismatches\": %llu, "
-                "\"reference_only\": "
-            "%llu, \"image_only\": %llu, \"mismatch_percent\": %.6f, "
-            "\"iou\": %.6f",
+                "\"reference_only\": %llu, \"image_only\": %llu, "
+                "\"mismatch_percent\": %.6f, \"iou\": %.6f",
         (unsigned long long)r->pixels, (unsigned long long)r->mismatches,
         (unsigned long long)r->reference_only,
         (unsigned long long)r->image_only, r->mismatch_percent, r->iou);
@@ -253,12 +248,11 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
         cmp_put(&s, ", \"max_distance\": null");
     else
         cmp_put(&s, ", \"max_distance\": %.6f", r->max_distance);
-    cmp_put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": "
-                "%llu", r->tolerance,
-        (unsigned long long)r->beyond_tolerance);
+    cmp_put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": %llu",
+        r->tolerance, (unsigned long long)r->beyond_tolerance);
     if (r->shapes_measured)
-        cmp_put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, \"scale\": "
-                    "%.6f",
+        cmp_put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, "
+                    "\"scale\": %.6f",
             r->offset_x, r->offset_y, r->scale);
     else
         cmp_put(&s, ", \"offset\": null, \"scale\": null");
@@ -268,13 +262,13 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
             (unsigned long long)r->image_surplus);
     cmp_put_clamped_json(&s, r);
     cmp_put(&s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
-            "\"exact\": %s",
+                "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),
         rayo_compare_diagnosis_name(r->diagnosis),
         r->diagnosis_exact ? "true" : "false");
     if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
-        cmp_put(&s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
-            r->shift_y);
+        cmp_put(&s, ", \"shift\": {\"x\": %d, \"y\": %d}",
+            r->shift_x, r->shift_y);
     if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
         cmp_put(&s, ", \"scale\": %.6f", r->scale_found);
     cmp_put(&s, ", \"text\": \"");

@@ -39,19 +39,17 @@ static void put_scale(cmp_sink *s, const rayo_compare_report *r)
     if (t->scale_fit == 1)
         return;
     cmp_put(s, "scale: the reference is this picture %s %.4f times about the "
-           "centre (%llu pixels differ then, not %llu): its focal distance "
-           "is about %.2f%% %s",
+               "centre (%llu pixels differ then, not %llu): its focal "
+               "distance is about %.2f%% %s",
         larger > 1 ? "enlarged" : "shrunk", larger,
         (unsigned long long)t->differing_scaled,
         (unsigned long long)t->differing, fabs(larger - 1) * 100,
         larger > 1 ? "longer" : "shorter");
     if (looks_like_course_focal(r))
         cmp_put(s, "; at 640 pixels and 90 degrees the formula gives z = 320 "
-               "and the reference was most likely drawn with z = 321.5, as "
-               "the "
-               "course's "
-               "references for EJ1 and EJ2 were: that is why outlines and "
-               "shadow edges differ");
+                   "and the reference was most likely drawn with z = 321.5, "
+                   "as the course's references for EJ1 and EJ2 were: that is "
+                   "why outlines and shadow edges differ");
     cmp_put(s, "\n");
 }
 
@@ -86,8 +84,8 @@ static void put_channels(cmp_sink *s, const rayo_compare_tone *t)
 {
     static const char *const rgb[3] = {"red", "green", "blue"};
     cmp_put(s, "the colour channels are in another order: the image's red, "
-           "green and blue show the reference's %s, %s and %s; print R G B "
-           "in that order (color_imprimir)",
+               "green and blue show the reference's %s, %s and %s; print R G "
+               "B in that order (color_imprimir)",
         rgb[t->order[0]], rgb[t->order[1]], rgb[t->order[2]]);
 }
 
@@ -98,16 +96,16 @@ static void put_offset(cmp_sink *s, const rayo_compare_tone *t)
         t->offset_on_shapes ? "of the objects (not the background) " : "");
     for (c = 0; c < t->channels; c++)
         cmp_put(s, "%s%+d", c ? ", " : "", t->offset[c]);
-    cmp_put(s, " level%s", t->channels == 1 && (t->offset[0] == 1 ||
-                                            t->offset[0] == -1)
-                           ? ""
-                           : "s");
+    cmp_put(s, " level%s",
+        t->channels == 1 && (t->offset[0] == 1 || t->offset[0] == -1)
+            ? ""
+            : "s");
     if (t->offset_on_shapes && t->offset[0] < 0)
         cmp_put(s, " (darker): is the ambient term missing (IA in I = IA + II "
-               "(L.N), Ia ka in C = Ia ka + ...)?");
+                   "(L.N), Ia ka in C = Ia ka + ...)?");
     else if (t->offset_on_shapes)
         cmp_put(s, " (brighter): is the ambient term too large or added "
-               "twice?");
+                   "twice?");
     else
         cmp_put(s, ": a constant added to or missing from every value");
 }
@@ -134,8 +132,8 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
         break;
     case RAYO_DIAGNOSIS_MISTAKE:
         cmp_put(s, "%s",
-                rayo_course_mistake_text((rayo_course_exercise)t->course,
-                                              t->mistake));
+            rayo_course_mistake_text((rayo_course_exercise)t->course,
+                                     t->mistake));
         break;
     case RAYO_DIAGNOSIS_CHANNELS_SWAPPED:
         put_channels(s, t);
@@ -146,34 +144,33 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
     case RAYO_DIAGNOSIS_SHIFTED:
         cmp_put(s, "the picture is moved ");
         if (r->shift_x != 0)
-            cmp_put(s, "%d pixel%s %s%s", r->shift_x < 0 ? -r->shift_x
-                                                   : r->shift_x,
+            cmp_put(s, "%d pixel%s %s%s",
+                r->shift_x < 0 ? -r->shift_x : r->shift_x,
                 r->shift_x == 1 || r->shift_x == -1 ? "" : "s",
                 r->shift_x < 0 ? "left" : "right",
                 r->shift_y != 0 ? " and " : "");
         if (r->shift_y != 0)
-            cmp_put(s, "%d row%s "
-                       "%s", r->shift_y < 0 ? -r->shift_y : r->shift_y,
+            cmp_put(s, "%d row%s %s",
+                r->shift_y < 0 ? -r->shift_y : r->shift_y,
                 r->shift_y == 1 || r->shift_y == -1 ? "" : "s",
                 r->shift_y < 0 ? "up" : "down");
         cmp_put(s, ": check the pixel grid, x = i - ANCHO/2 and rows from y = "
-               "ALTO/2 at the top");
+                   "ALTO/2 at the top");
         break;
     case RAYO_DIAGNOSIS_SCALED:
         cmp_put(s, "the picture is scaled by %.3f about the centre: a wrong "
-               "field of view or focal distance (z = ANCHO / (2 tan(FOV/2)), "
-               "FOV in radians)",
-            r->scale_found);
+                   "field of view or focal distance (z = ANCHO / (2 "
+                   "tan(FOV/2)), FOV in radians)", r->scale_found);
         break;
     case RAYO_DIAGNOSIS_DIFFERENT_SIZE:
         cmp_put(s, "the image is %ux%u but the reference is %ux%u: check the "
-               "width and height (ANCHO, ALTO)",
+                   "width and height (ANCHO, ALTO)",
             r->image_width, r->image_height, r->reference_width,
             r->reference_height);
         break;
     default:
         cmp_put(s, "no single mistake explains the differences; the first "
-               "unexplained pixel is column %d, row %d",
+                   "unexplained pixel is column %d, row %d",
             (int)t->first_x, (int)t->first_y);
         break;
     }
@@ -183,20 +180,19 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
-    cmp_put(s, "reference: %ux%u, "
-               "%s\n", r->reference_width, r->reference_height,
+    cmp_put(s, "reference: %ux%u, %s\n",
+        r->reference_width, r->reference_height,
         kind_of(t->reference_channels));
-    cmp_put(s, "image:     %ux%u, %s\n", r->image_width, r->image_height,
-        kind_of(t->image_channels));
+    cmp_put(s, "image:     %ux%u, %s\n",
+        r->image_width, r->image_height, kind_of(t->image_channels));
     cmp_put(s, "compared:  %s values; a pixel differs when off by more than "
-               "%u "
-           "level%s (of 255)\n",
+               "%u level%s (of 255)\n",
         t->channels == 1 ? "gray" : "RGB", t->levels,
         t->levels == 1 ? "" : "s");
     for (c = 0; c < t->channels; c++) {
         const rayo_compare_channel *ch = &t->channel[c];
         cmp_put(s, "%-6s %llu pixels off (%.3f%%), largest difference %u, "
-               "RMSE %.3f, ",
+                   "RMSE %.3f, ",
             channel_name(t, c), (unsigned long long)ch->beyond,
             r->pixels ? 100.0 * (double)ch->beyond / (double)r->pixels : 0,
             ch->max_difference, ch->rmse);
@@ -206,8 +202,9 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
             cmp_put(s, "PSNR %.2f dB\n", ch->psnr);
     }
     cmp_put(s, "differing pixels: %llu of %llu (%.3f%%): %llu at outlines and "
-           "shadow edges (largest difference %u), %llu in shading where the "
-           "reference takes their value within %g px, %llu unexplained\n",
+               "shadow edges (largest difference %u), %llu in shading where "
+               "the reference takes their value within %g px, %llu "
+               "unexplained\n",
         (unsigned long long)t->differing, (unsigned long long)r->pixels,
         r->mismatch_percent, (unsigned long long)t->at_edges,
         t->max_edge_difference, (unsigned long long)t->in_shading,
@@ -215,8 +212,9 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
     put_scale(s, r);
     if (r->verdict == RAYO_VERDICT_CONSISTENT && t->at_edges > 0)
         cmp_put(s, "note: the differences at outlines and shadow edges are "
-               "the same picture drawn a pixel or two apart there (another "
-               "focal distance, float instead of double), not a mistake\n");
+                   "the same picture drawn a pixel or two apart there "
+                   "(another focal distance, float instead of double), not a "
+                   "mistake\n");
     cmp_put(s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
         cmp_put(s, "diagnosis: ");
@@ -238,27 +236,25 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
     cmp_put(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, "
-               "\"height\": "
-           "%u, \"channels\": %u}, \"image\": {\"width\": %u, \"height\": "
-           "%u, \"channels\": %u}, \"pixels\": %llu, \"levels\": %u, "
-           "\"tolerance\": %.6g, \"channels\": [",
+               "\"height\": %u, \"channels\": %u}, \"image\": {\"width\": %u, "
+               "\"height\": %u, \"channels\": %u}, \"pixels\": %llu, "
+               "\"levels\": %u, \"tolerance\": %.6g, \"channels\": [",
         r->reference_width, r->reference_height, t->reference_channels,
         r->image_width, r->image_height, t->image_channels,
         (unsigned long long)r->pixels, t->levels, r->tolerance);
     for (c = 0; c < t->channels; c++) {
         const rayo_compare_channel *ch = &t->channel[c];
         cmp_put(s, "%s{\"name\": \"%s\", \"beyond\": %llu, "
-                   "\"max_difference\": "
-               "%u, \"rmse\": %.6f, \"psnr\": ",
-            c ? ", " : "", channel_name(t, c),
-            (unsigned long long)ch->beyond, ch->max_difference, ch->rmse);
+                   "\"max_difference\": %u, \"rmse\": %.6f, \"psnr\": ",
+            c ? ", " : "", channel_name(t, c), (unsigned long long)ch->beyond,
+            ch->max_difference, ch->rmse);
         put_number(s, ch->psnr);
         cmp_put(s, "}");
     }
     cmp_put(s, "], \"differing\": %llu, \"mismatches\": %llu, "
-           "\"mismatch_percent\": %.6f, \"at_edges\": %llu, "
-           "\"max_edge_difference\": %u, \"in_shading\": %llu, "
-           "\"unexplained\": %llu, \"beyond_tolerance\": %llu",
+               "\"mismatch_percent\": %.6f, \"at_edges\": %llu, "
+               "\"max_edge_difference\": %u, \"in_shading\": %llu, "
+               "\"unexplained\": %llu, \"beyond_tolerance\": %llu",
         (unsigned long long)t->differing, (unsigned long long)r->mismatches,
         r->mismatch_percent, (unsigned long long)t->at_edges,
         t->max_edge_difference, (unsigned long long)t->in_shading,
@@ -278,31 +274,31 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         t->scale_fit, (unsigned long long)t->differing_scaled);
     if (t->course >= 0)
         cmp_put(s, "\"%s\"",
-                rayo_course_name((rayo_course_exercise)t->course));
+            rayo_course_name((rayo_course_exercise)t->course));
     else
         cmp_put(s, "null");
     cmp_put(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
-           "\"exact\": %s",
+               "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),
         rayo_compare_diagnosis_name(r->diagnosis),
         r->diagnosis_exact ? "true" : "false");
     if (r->diagnosis == RAYO_DIAGNOSIS_MISTAKE)
-        cmp_put(s, ", \"mistake\": "
-                   "\"%s\"", rayo_course_mistake_name(t->mistake));
+        cmp_put(s, ", \"mistake\": \"%s\"",
+            rayo_course_mistake_name(t->mistake));
     if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
-        cmp_put(s, ", \"shift\": {\"x\": %d, \"y\": %d}", r->shift_x,
-            r->shift_y);
+        cmp_put(s, ", \"shift\": {\"x\": %d, \"y\": %d}",
+            r->shift_x, r->shift_y);
     if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
         cmp_put(s, ", \"scale\": %.6f", r->scale_found);
     if (r->diagnosis == RAYO_DIAGNOSIS_CHANNELS_SWAPPED)
-        cmp_put(s, ", \"order\": [%u, %u, %u]", t->order[0], t->order[1],
-            t->order[2]);
+        cmp_put(s, ", \"order\": [%u, %u, %u]",
+            t->order[0], t->order[1], t->order[2]);
     if (r->diagnosis == RAYO_DIAGNOSIS_OFFSET) {
         cmp_put(s, ", \"offset\": [");
         for (c = 0; c < t->channels; c++)
             cmp_put(s, "%s%d", c ? ", " : "", t->offset[c]);
-        cmp_put(s, "], \"on_shapes\": "
-                   "%s", t->offset_on_shapes ? "true" : "false");
+        cmp_put(s, "], \"on_shapes\": %s",
+            t->offset_on_shapes ? "true" : "false");
     }
     cmp_put(s, ", \"text\": \"");
     tone_put_diagnosis(r, s);
