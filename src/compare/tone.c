@@ -166,20 +166,23 @@ static void fill(const tone_counts *k, unsigned channels,
 }
 
 /* How much better the image lays on the reference scaled a little: the
-   course's references were drawn with a focal distance 0.47% long. */
+   course's references were drawn with a focal distance 0.47% long.  k:
+   the unscaled comparison's counts. */
 static void fit_scale(const tone_image *ref, const tone_image *image,
-                      rayo_compare_report *r)
+                      const tone_counts *k, rayo_compare_report *r)
 {
     uint64_t left;
-    double s, gain;
+    double s, squares, none = k->sum_squares[0] + k->sum_squares[1] +
+                              k->sum_squares[2];
     r->tone.scale_fit = 1;
     r->tone.differing_scaled = r->tone.differing;
     if (r->tone.differing == 0 || ref->width != image->width ||
         ref->height != image->height)
         return;
     s = tone_best_scale(ref, image, r->tone.levels, 0.98, 1.02, &left,
-                        &gain);
-    if (fabs(s - 1) >= 0.001 && gain >= 1.5 && left < r->tone.differing) {
+                        &squares);
+    if (fabs(s - 1) >= 0.001 && 1.5 * squares <= none &&
+        left < r->tone.differing) {
         r->tone.scale_fit = s;
         r->tone.differing_scaled = left;
     }
@@ -221,7 +224,7 @@ rayo_status tone_compare(const rayo_image *reference, const rayo_image *image,
     tone_measure(&ref, &img, &identity, r->tolerance, options->levels, 1,
                  &k);
     fill(&k, channels, r);
-    fit_scale(&ref, &img, r);
+    fit_scale(&ref, &img, &k, r);
     s = tone_diagnose(&ref, &img, options, r, err);
     tone_image_free(&ref);
     tone_image_free(&img);

@@ -99,15 +99,16 @@ static rayo_status course_tone(rayo_course_exercise e, rayo_course_mistake m,
 }
 
 /* The course exercise the reference shows: the one whose render it is
-   consistent with (only for 640x480, gray for EJ2 and colour for EJ3). */
+   consistent with (only for 640x480, gray for EJ2 and colour for EJ3).
+   keep (may be NULL) receives that render when one is found. */
 static rayo_status detect_course(const tone_image *ref,
                                  const rayo_compare_report *r, int *course,
-                                 rayo_error *err)
+                                 tone_image *keep, rayo_error *err)
 {
-    rayo_course_exercise e = ref->channels == 1 && r->tone.reference_channels
-                                                        == 1
-                                 ? RAYO_COURSE_EJ2
-                                 : RAYO_COURSE_EJ3;
+    rayo_course_exercise e =
+        ref->channels == 1 && r->tone.reference_channels == 1
+            ? RAYO_COURSE_EJ2
+            : RAYO_COURSE_EJ3;
     tone_image t;
     tone_counts k;
     tone_xform id = tone_identity();
@@ -126,7 +127,10 @@ static rayo_status detect_course(const tone_image *ref,
     tone_measure(&t, ref, &id, r->tolerance, r->tone.levels, 0, &k);
     if (!k.stopped && k.unexplained == 0)
         *course = (int)e;
-    tone_image_free(&t);
+    if (keep != NULL && *course >= 0)
+        *keep = t; /* the right render, for hidden_mistake */
+    else
+        tone_image_free(&t);
     return RAYO_OK;
 }
 
@@ -288,22 +292,28 @@ static void name_choice(const choice *ch, rayo_compare_report *r)
     r->tone.offset_on_shapes = ch->t.kind == TONE_OFFSET_ON_SHAPES;
 }
 
-/* Differing pixels between image and the course's render with mistake
-   m (RAYO_MISTAKE_NONE: the right render). */
+/* Pixels that differ at all between image and render. */
+static uint64_t differing_at_all(const tone_image *render,
+                                 const tone_image *image)
+{
+    tone_counts k;
+    tone_xform id = tone_identity();
+    tone_measure(render, image, &id, 0, 0, -1, &k);
+    return k.differing;
+}
+
+/* The same against the course's render with mistake m. */
 static rayo_status differing_from(const tone_image *image, int course,
                                   rayo_course_mistake m,
                                   const rayo_compare_report *r,
                                   uint64_t *count, rayo_error *err)
 {
     tone_image t;
-    tone_counts k;
-    tone_xform id = tone_identity();
     rayo_status s = course_tone((rayo_course_exercise)course, m,
                                 image->channels, 0, r, &t, err);
     if (s != RAYO_OK)
         return s;
-    tone_measure(&t, image, &id, 0, 0, -1, &k);
-    *count = k.differing;
+    *count = differing_at_all(&t, image);
     tone_image_free(&t);
     return RAYO_OK;
 }
@@ -311,14 +321,19 @@ static rayo_status differing_from(const tone_image *image, int course,
 /* A consistent image can still be a mistake the reference cannot see
    (values wrapped past 255 only at the limbs, say): when the render of a
    mistake agrees with the image twenty times better than the right
-   render does, that mistake is named. */
+   render does, that mistake is named.  right_render: that render when
+   detect_course made it already, else NULL. */
 static rayo_status hidden_mistake(const tone_image *image, int course,
+                                  const tone_image *right_render,
                                   rayo_compare_report *r, rayo_error *err)
 {
     uint64_t right, best = UINT64_MAX, d;
     int m, found = -1;
-    rayo_status s = differing_from(image, course, RAYO_MISTAKE_NONE, r,
-                                   &right, err);
+    rayo_status s = RAYO_OK;
+    if (right_render != NULL)
+        right = differing_at_all(right_render, image);
+    else
+        s = differing_from(image, course, RAYO_MISTAKE_NONE, r, &right, err);
     if (s != RAYO_OK || right < CLOSE_REDUCTION)
         return s;
     for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT; m++) {
@@ -341,6 +356,29 @@ static rayo_status hidden_mistake(const tone_image *image, int course,
     r->tone.course = course;
     r->tone.mistake = (rayo_course_mistake)found;
     return RAYO_OK;
+}
+
+/* A consistent image against the course's scene: the mistakes the
+   reference cannot see (hidden_mistake), with the scene detected from
+   the reference unless options name it. */
+static rayo_status look_for_hidden(const tone_image *ref,
+                                   const tone_image *image,
+                                   const rayo_compare_options *options,
+                                   rayo_compare_report *r, rayo_error *err)
+{
+    tone_image right;
+    int course = options->course, detected = 0;
+    rayo_status s = RAYO_OK;
+    memset(&right, 0, sizeof right);
+    if (course == RAYO_COMPARE_COURSE_AUTO) {
+        s = detect_course(ref, r, &course, &right, err);
+        detected = course >= 0;
+    }
+    if (s == RAYO_OK && course >= 0 && course < RAYO_COURSE_EXERCISES &&
+        course != RAYO_COURSE_EJ1 && ref->width == 640 && ref->height == 480)
+        s = hidden_mistake(image, course, detected ? &right : NULL, r, err);
+    tone_image_free(&right);
+    return s;
 }
 
 /* Every difference explained: consistent, unless a whole-pixel shift
@@ -385,7 +423,7 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
                                       TONE_FLIP_BOTH, TONE_INVERT};
     tone_xform t = tone_identity();
     uint64_t fewest;
-    double gain;
+    double squares;
     int course = options->course;
     size_t i;
     rayo_status s = RAYO_OK;
@@ -399,13 +437,13 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
     t = tone_identity();
     t.kind = TONE_SCALE;
     t.scale = tone_best_scale(ref, image, r->tone.levels, 0.25, 4.0,
-                              &fewest, &gain);
+                              &fewest, &squares);
     if (fabs(t.scale - 1) >= 0.004)
         try_xform(ch, ref, image, r, &t);
     if (exact(ch))
         return RAYO_OK;
     if (course == RAYO_COMPARE_COURSE_AUTO)
-        s = detect_course(ref, r, &course, err);
+        s = detect_course(ref, r, &course, NULL, err);
     if (s != RAYO_OK)
         return s;
     /* EJ3's colour renders are not compared with a gray pair. */
@@ -451,18 +489,10 @@ rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
         return RAYO_OK;
     }
     if (r->tone.unexplained == 0) {
-        int course = options->course;
         judge_close(ref, image, r);
         if (r->verdict != RAYO_VERDICT_CONSISTENT)
             return RAYO_OK;
-        s = RAYO_OK;
-        if (course == RAYO_COMPARE_COURSE_AUTO)
-            s = detect_course(ref, r, &course, err);
-        if (s == RAYO_OK && course >= 0 && course < RAYO_COURSE_EXERCISES &&
-            course != RAYO_COURSE_EJ1 && ref->width == 640 &&
-            ref->height == 480)
-            s = hidden_mistake(image, course, r, err);
-        return s;
+        return look_for_hidden(ref, image, options, r, err);
     }
     r->verdict = RAYO_VERDICT_INCONSISTENT;
     if (all_black(image)) {

@@ -155,10 +155,10 @@ rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
 /* The scale s (image = reference scaled by s about the optical centre)
    between lo and hi that leaves the smallest sum of squared differences
    (searched on a sampled grid, then finer); *left the differing pixels
-   at s, *gain how many times smaller the sum is than at scale 1. */
+   at s and *squares that sum, over every pixel. */
 double tone_best_scale(const tone_image *ref, const tone_image *image,
                        unsigned levels, double lo, double hi,
-                       uint64_t *left, double *gain);
+                       uint64_t *left, double *squares);
 
 /* The tone comparison (called by rayo_compare_images). */
 rayo_status tone_compare(const rayo_image *reference, const rayo_image *image,

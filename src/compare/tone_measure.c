@@ -468,10 +468,10 @@ static double squares_of(const tone_counts *k)
 
 double tone_best_scale(const tone_image *ref, const tone_image *image,
                        unsigned levels, double lo, double hi,
-                       uint64_t *left, double *gain)
+                       uint64_t *left, double *squares)
 {
     double pixels = (double)ref->width * ref->height, best = 1, ratio;
-    double fewest = HUGE_VAL, none;
+    double fewest = HUGE_VAL;
     uint32_t step = (uint32_t)ceil(sqrt(pixels / 65536.0)), i;
     tone_xform t = tone_identity();
     tone_counts k;
@@ -498,13 +498,10 @@ double tone_best_scale(const tone_image *ref, const tone_image *image,
         }
     }
     t.step = 1;
-    t.scale = 1;
-    tone_measure(ref, image, &t, 0, levels, -1, &k);
-    none = squares_of(&k);
     t.scale = best;
     tone_measure(ref, image, &t, 0, levels, -1, &k);
     *left = k.differing;
-    *gain = squares_of(&k) > 0 ? none / squares_of(&k) : HUGE_VAL;
+    *squares = squares_of(&k);
     return best;
 }
 
