@@ -113,7 +113,7 @@ static void print_help(void)
         "(rows from the\ntop); its ray has direction (x, -y, w/(2 "
         "tan(fov/2))), normalised.\n\n"
         "exit status: 0 success, 1 the output could not be written, 2 bad "
-        "options or a\nscene file that cannot be read (missing, "
+        "options or an\ninput that cannot be read (SCENE missing, "
         "unreadable, a directory, malformed).\n");
 }
 
