@@ -239,6 +239,11 @@ static int parse_request(int argc, char **argv, render_request *req)
         return cli_usage_error("render: unexpected argument '%s'; see 'rayo "
                                "--help'",
                                argv[optind]);
+    if (req->scene_path != NULL && strcmp(req->output, "-") != 0 &&
+        cli_same_file(req->output, req->scene_path))
+        return cli_usage_error("--output: '%s' is the scene file; refusing "
+                               "to overwrite an input",
+                               req->output);
     if (req->scene_path != NULL && req->sphere_count > 0)
         return cli_usage_error("--sphere: cannot be combined with the scene "
                                "file '%s'; put the sphere in the file",

@@ -79,6 +79,12 @@ expect "render, -o in a missing folder" 1 "$nodir/x.ppm" \
 expect "render (no scene), -o in a missing folder" 1 "$nodir/x.pbm" \
     render -W 8 -H 6 -o "$nodir/x.pbm"
 ok "$([ ! -e "$out/x.ppm" ]; echo $?)" "render: no output after a refused scene"
+cp "$in/good.scene" "$in/keep.scene"
+ln -s keep.scene "$in/link.scene"
+expect "render, -o the scene itself (through a link)" 2 "--output: '$in/link.scene' is the scene file" \
+    render "$in/keep.scene" --format ppm -o "$in/link.scene"
+cmp -s "$in/good.scene" "$in/keep.scene"
+ok $? "render: the scene file is untouched"
 
 # --- view FILE ----------------------------------------------------------------
 expect "view, missing FILE" 2 "$in/missing.pbm" view "$in/missing.pbm"
