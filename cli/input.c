@@ -25,7 +25,7 @@ int cli_check_input(const char *path, cli_input_kind kind)
     int fd;
     if (strcmp(path, "-") == 0)
         return CLI_EXIT_OK;
-    fd = open(path, O_RDONLY);
+    fd = open(path, O_RDONLY | O_NONBLOCK); /* a FIFO: no waiting */
     if (fd < 0)
         return cli_usage_error("%s: %s", path, strerror(errno));
     if (fstat(fd, &st) != 0) {
