@@ -133,6 +133,18 @@ fuzz:
 	    OPT="-O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
 	    LDFLAGS="-fsanitize=address,undefined"
 
+# Examples of the library's API (examples/*.c), each built as a program
+# the way a user would: the public headers, librayo.a and the course's
+# flags (C99, -Wall -Werror -pedantic).  `make check` builds them and
+# tests/cli/examples.t runs them.
+EXAMPLE_BIN := $(patsubst examples/%.c,$(BUILD)/examples/%,$(sort $(wildcard examples/*.c)))
+check check-valgrind: $(EXAMPLE_BIN)
+
+$(BUILD)/examples/%: examples/%.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) -std=c99 -Wall -Werror -pedantic $(OPT) -Iinclude $(PNG_CFLAGS) \
+	    $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 # Benchmarks (bench/bench.c says how to add a row): a table on stdout
 # and $(BUILD)/bench.json; docs/performance.md quotes them.
 BENCH_BIN := $(BUILD)/bench/rayo-bench

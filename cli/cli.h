@@ -17,8 +17,10 @@
 
 enum {
     CLI_EXIT_OK = 0,
-    CLI_EXIT_FAILURE = 1, /* I/O failures; compare: inconsistent */
-    CLI_EXIT_USAGE = 2    /* bad options or bad input files */
+    CLI_EXIT_FAILURE = 1, /* output failures; compare: inconsistent;
+                             grade: failed */
+    CLI_EXIT_USAGE = 2    /* bad options, or an input that cannot be read
+                             (missing, unreadable, a directory, malformed) */
 };
 
 /* Subcommands: each takes its own argv (argv[0] is the subcommand name). */
@@ -34,11 +36,24 @@ unsigned cli_terminal_columns(void);
 int cli_print_preview(const rayo_image *image,
                       const rayo_preview_options *options, FILE *stream);
 
-/* compare, view: an input that cannot be read is bad input (exit 2;
+/* Every command: an input that cannot be read is bad input (exit 2;
  * memory excepted); text output flushed and checked (a closed pipe ends
  * quietly, other failures exit 1). */
 int cli_unreadable(const rayo_error *err);
 int cli_flush_text(FILE *stream, const char *name);
+
+/* input.c: CLI_EXIT_OK when path ('-' passes) can be opened for reading
+ * and is of the kind asked for; else one line naming it and the reason,
+ * and CLI_EXIT_USAGE.  cli_same_file: 1 when a and b name the same file
+ * (the same name, or the same device and inode, links followed), so that
+ * an output never overwrites an input. */
+typedef enum cli_input_kind {
+    CLI_INPUT_FILE,    /* a folder is refused */
+    CLI_INPUT_ANY,     /* a file or a folder */
+    CLI_INPUT_FOLDER   /* a file is refused */
+} cli_input_kind;
+int cli_check_input(const char *path, cli_input_kind kind);
+int cli_same_file(const char *a, const char *b);
 
 /* escape.c: text from outside on one line.  The character at s as shown
    (control bytes and invalid UTF-8 as \n, \t, \r, \xHH; a backslash
@@ -105,6 +120,13 @@ int cli_parse_numbers(const char *option, const char *text, size_t count,
    for exercise ("ej1", ...) into path; 0 when it is not installed
    (course_data.c says where it looks). */
 int cli_course_reference(const char *exercise, char *path, size_t room);
+
+/* An image operand: course:ej1, course:ej2 or course:ej3 names the
+   course's image (resolved into path, *resolved pointing at it) unless a
+   file has that very name; anything else is *resolved as it is.  An
+   unknown or missing course image is one line and CLI_EXIT_USAGE. */
+int cli_image_operand(const char *operand, char *path, size_t room,
+                      const char **resolved);
 
 /* 1 when standard output is a terminal (so binary output is refused). */
 int cli_stdout_is_terminal(void);

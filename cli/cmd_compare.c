@@ -5,7 +5,10 @@
  * report, as text or JSON, and optionally writes the difference picture.
  *
  * Exit status: 0 identical or consistent, 1 inconsistent, 2 unreadable
- * input or bad options (and 1 for an output failure of --diff).  The
+ * input or bad options (and 1 for an output failure of --diff).  A --diff
+ * that names an input (the same name, or the same file through a link)
+ * is refused before anything is read.  course:ej1, course:ej2 and
+ * course:ej3 name the course's reference images (course_data.c).  The
  * verdict logic is all in the library; this file only reads, calls and
  * prints.
  */
@@ -21,6 +24,7 @@
 
 typedef struct compare_request {
     const char *reference, *image, *diff;
+    char course_paths[2][4096]; /* course:NAME operands, resolved */
     rayo_compare_options options;
     int json;
 } compare_request;
@@ -31,7 +35,9 @@ static void print_help(void)
         "usage: rayo compare REFERENCE IMAGE [--tolerance PX] [--levels N]\n"
         "                    [--exercise NAME] [--diff OUT.png] [--json]\n\n"
         "Tells whether IMAGE shows what REFERENCE shows and, if not, what "
-        "is likely\nwrong.  Two bilevel images (PBM, or only black and "
+        "is likely\nwrong.  course:ej1, course:ej2 and course:ej3 name the "
+        "course's reference\nimages, installed with rayo (a file of that "
+        "very name wins).  Two bilevel images (PBM, or only black and "
         "white pixels) are compared as\nblack/white masks; when either is "
         "gray or colour, values are compared (see\nbelow).  An image of "
         "another size is laid on the reference centred.\n\n"
@@ -76,7 +82,8 @@ static void print_help(void)
         "one whose\n"
         "                      scene the reference shows\n"
         "      --diff OUT.png  write the difference picture (reference's "
-        "size):\n"
+        "size; not\n"
+        "                      an input):\n"
         "                        black, white  both agree\n"
         "                        red           black only in the reference "
         "(missing)\n"
@@ -89,8 +96,10 @@ static void print_help(void)
         "                      brighter the larger\n"
         "      --json          the report as one JSON object\n"
         "  -h, --help          this help\n\n"
-        "exit status: 0 identical or consistent, 1 inconsistent (or "
-        "--diff could not\nbe written), 2 unreadable input or bad options.\n");
+        "exit status: 0 identical or consistent, 1 inconsistent or --diff "
+        "could not be\nwritten, 2 bad options or an input that cannot be "
+        "read (missing, unreadable,\na directory, malformed or too "
+        "large).\n");
 }
 
 static int parse_request(int argc, char **argv, compare_request *req)
@@ -156,6 +165,21 @@ static int parse_request(int argc, char **argv, compare_request *req)
     if (strcmp(req->reference, "-") == 0 && strcmp(req->image, "-") == 0)
         return cli_usage_error("compare: only one of REFERENCE and IMAGE "
                                "can be '-' (standard input)");
+    if ((c = cli_image_operand(req->reference, req->course_paths[0],
+                               sizeof req->course_paths[0],
+                               &req->reference)) != CLI_EXIT_OK ||
+        (c = cli_image_operand(req->image, req->course_paths[1],
+                               sizeof req->course_paths[1], &req->image)) !=
+            CLI_EXIT_OK)
+        return c;
+    if (req->diff != NULL && (cli_same_file(req->diff, req->reference) ||
+                              cli_same_file(req->diff, req->image)))
+        return cli_usage_error("--diff: '%s' is the %s; refusing to "
+                               "overwrite an input, give another file",
+                               req->diff,
+                               cli_same_file(req->diff, req->reference)
+                                   ? "reference"
+                                   : "image");
     return CLI_EXIT_OK;
 }
 

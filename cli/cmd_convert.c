@@ -6,9 +6,10 @@
  * (reader.h, image_convert.h, writer.h); this file picks the format,
  * converts the layout when the target cannot hold it (colour or gray to
  * PBM is thresholded at half the maximum, colour to PGM is luminance,
- * bilevel or gray to PPM is repeated), and reports.  The output file is
- * written only after the input was read whole, and appears whole or not
- * at all.
+ * bilevel or gray to PPM is repeated), and reports.  Netpbm keeps the
+ * input's encoding (plain stays plain, raw stays raw; a PNG becomes raw)
+ * unless --plain or --raw says otherwise.  The output file is written
+ * only after the input was read whole, and appears whole or not at all.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -22,8 +23,9 @@ typedef struct convert_request {
     const char *input;
     const char *output;
     const char *format; /* NULL: from the output's name */
-    int plain;
+    int plain, raw;     /* --plain, --raw; neither: the input's encoding */
     int verbose;
+    char course_path[4096]; /* IN as course:NAME, resolved */
 } convert_request;
 
 static void print_help(void)
@@ -33,7 +35,8 @@ static void print_help(void)
         "Reads IN (PBM, PGM, PPM plain or raw, or PNG; the format is "
         "recognised from\nthe content) and writes it to OUT in the format "
         "of OUT's extension (.pbm,\n.pgm, .ppm, .png) or of --format.  "
-        "'-' is standard input or output.\n\n"
+        "'-' is standard input or output; IN may be course:ej1, course:ej2 "
+        "or course:ej3,\nthe course's reference images.\n\n"
         "When the target cannot hold the image as it is, it is converted:\n"
         "  to PBM  black where the pixel is darker than half the maximum\n"
         "          (colour: 2(299r+587g+114b) < 1000 maxval)\n"
@@ -49,15 +52,18 @@ static void print_help(void)
         "                     Netpbm format that holds the image as it is "
         "will do\n"
         "                     (PBM bilevel, PGM gray, PPM colour)\n"
-        "      --plain        plain Netpbm (P1-P3, ASCII) instead of raw "
-        "(P4-P6)\n"
+        "      --plain        plain Netpbm (P1-P3, ASCII)\n"
+        "      --raw          raw Netpbm (P4-P6); without either, a Netpbm "
+        "input's\n"
+        "                     encoding is kept, and a PNG becomes raw\n"
         "  -v, --verbose      on stderr: what was read (format, size, "
         "maxval, bytes\n"
         "                     after the image) and what was written\n"
         "  -h, --help         this help\n\n"
-        "exit status: 0 success, 1 input/output failure, 2 bad options or "
-        "an\nunreadable, malformed or too large input (one line on stderr "
-        "names the file\nand where).  OUT is never left half-written.\n");
+        "exit status: 0 success, 1 OUT could not be written, 2 bad options "
+        "or an input\nthat cannot be read (missing, unreadable, a "
+        "directory, malformed or too\nlarge; one line on stderr names the "
+        "file and why).  OUT is never left\nhalf-written.\n");
 }
 
 static int parse_request(int argc, char **argv, convert_request *req)
@@ -65,6 +71,7 @@ static int parse_request(int argc, char **argv, convert_request *req)
     static const struct option options[] = {
         {"format", required_argument, NULL, 'F'},
         {"plain", no_argument, NULL, 'p'},
+        {"raw", no_argument, NULL, 'r'},
         {"verbose", no_argument, NULL, 'v'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
@@ -79,6 +86,9 @@ static int parse_request(int argc, char **argv, convert_request *req)
         case 'p':
             req->plain = 1;
             break;
+        case 'r':
+            req->raw = 1;
+            break;
         case 'v':
             req->verbose = 1;
             break;
@@ -89,11 +99,15 @@ static int parse_request(int argc, char **argv, convert_request *req)
             return cli_bad_option(c, argv, optind);
         }
     }
+    if (req->plain && req->raw)
+        return cli_usage_error("--plain and --raw: give one of them");
     if (argc - optind != 2)
         return cli_wrong_operands("convert", argc - optind, "IN and OUT");
     req->input = argv[optind];
     req->output = argv[optind + 1];
-    return CLI_EXIT_OK;
+    c = cli_image_operand(req->input, req->course_path,
+                          sizeof req->course_path, &req->input);
+    return c;
 }
 
 /* info is NULL unless OUT is '-' without --format. */
@@ -111,14 +125,27 @@ static int choose_format(const convert_request *req,
     } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
         return cli_usage_error("convert: %s", err.message);
     }
-    if (req->plain && *format == RAYO_FORMAT_PNG)
-        return cli_usage_error("--plain: applies only to PBM, PGM and PPM, "
-                               "not png");
+    if ((req->plain || req->raw) && *format == RAYO_FORMAT_PNG)
+        return cli_usage_error("%s: applies only to PBM, PGM and PPM, "
+                               "not png",
+                               req->plain ? "--plain" : "--raw");
+    return CLI_EXIT_OK;
+}
+
+/* Plain or raw: as asked, else as the input was (a PNG: raw); and no
+   binary on a terminal. */
+static int choose_encoding(const convert_request *req,
+                           const rayo_read_report *report,
+                           rayo_write_options *options)
+{
+    options->plain = req->plain ||
+                     (!req->raw && report->format != RAYO_FORMAT_PNG &&
+                      report->plain);
     if (strcmp(req->output, "-") == 0 && cli_stdout_is_terminal() &&
-        !req->plain)
+        (options->format == RAYO_FORMAT_PNG || !options->plain))
         return cli_usage_error("refusing to write binary %s to a terminal; "
                                "give OUT, a pipe, or --plain",
-                               rayo_format_name(*format));
+                               rayo_format_name(options->format));
     return CLI_EXIT_OK;
 }
 
@@ -219,18 +246,19 @@ static int convert(const convert_request *req)
     int decided = req->format != NULL || strcmp(req->output, "-") != 0;
     memset(&converted, 0, sizeof converted);
     rayo_error_clear(&err);
-    options.plain = req->plain;
     if (decided) {
         exit_status = choose_format(req, NULL, &options.format);
         if (exit_status != CLI_EXIT_OK)
             return exit_status;
     }
     if (rayo_image_read_file(req->input, &image, &report, &err) != RAYO_OK)
-        return cli_report(&err);
+        return cli_unreadable(&err);
     if (req->verbose)
         report_read(req, &image, &report);
     exit_status = decided ? CLI_EXIT_OK
                           : choose_format(req, &image.info, &options.format);
+    if (exit_status == CLI_EXIT_OK)
+        exit_status = choose_encoding(req, &report, &options);
     if (exit_status == CLI_EXIT_OK &&
         (fit_layout(&image, options.format, &converted, &fit, &err) !=
              RAYO_OK ||

@@ -75,8 +75,9 @@ static void print_help(void)
         printf("  %-8s %s\n", exercises[i].name, exercises[i].title);
     printf("\nThe limits stop honest mistakes (loops, runaway output); "
            "they are\nnot a sandbox: grade untrusted code in a container.\n\n"
-           "exit status: 0 everything passed, 1 something failed, 2 bad "
-           "options.\n");
+           "exit status: 0 everything passed, 1 something failed or an "
+           "output could not be\nwritten, 2 bad options or an input that "
+           "cannot be read (missing, unreadable,\na directory, malformed).\n");
 }
 
 static int parse_seconds(const char *option, const char *text, double *value)
@@ -520,6 +521,20 @@ static int grade_each(const char *dir, grade_request *req)
     return passed == count ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
 }
 
+/* Submissions and --reference that cannot be read are bad input (exit
+   2, as in every command), told apart here from the grading's own I/O. */
+static int check_inputs(int argc, char **argv, int first,
+                        const grade_request *req)
+{
+    int i, status = CLI_EXIT_OK;
+    for (i = first; i < argc && status == CLI_EXIT_OK; i++)
+        status = cli_check_input(argv[i], req->each ? CLI_INPUT_FOLDER
+                                                    : CLI_INPUT_ANY);
+    if (status == CLI_EXIT_OK && req->options.reference != NULL)
+        status = cli_check_input(req->options.reference, CLI_INPUT_FILE);
+    return status;
+}
+
 int cli_grade(int argc, char **argv)
 {
     grade_request req;
@@ -529,6 +544,8 @@ int cli_grade(int argc, char **argv)
     status = parse_request(argc, argv, &req);
     if (status != CLI_EXIT_OK)
         return status < 0 ? CLI_EXIT_OK : status;
+    if ((status = check_inputs(argc, argv, optind, &req)) != CLI_EXIT_OK)
+        return status;
     req.options.cancelled = stop_requested;
     cli_interrupt_catch();
     status = req.each ? grade_each(argv[optind], &req)

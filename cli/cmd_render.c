@@ -4,7 +4,9 @@
  * all.
  *
  * With no options it is the assignment: the seed's sphere, 640x480, a
- * 90 degree field of view, plain PBM on standard output.
+ * 90 degree field of view, plain PBM on standard output.  A scene file
+ * with nothing in it, or without a camera, still renders, with one line
+ * of warning saying so (an empty picture is rarely what was meant).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -110,8 +112,9 @@ static void print_help(void)
         "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
         "(rows from the\ntop); its ray has direction (x, -y, w/(2 "
         "tan(fov/2))), normalised.\n\n"
-        "exit status: 0 success, 1 input/output failure, 2 bad options or "
-        "scene file.\n");
+        "exit status: 0 success, 1 the output could not be written, 2 bad "
+        "options or an\ninput that cannot be read (SCENE missing, "
+        "unreadable, a directory, malformed).\n");
 }
 
 static int parse_request(int argc, char **argv, render_request *req)
@@ -236,6 +239,11 @@ static int parse_request(int argc, char **argv, render_request *req)
         return cli_usage_error("render: unexpected argument '%s'; see 'rayo "
                                "--help'",
                                argv[optind]);
+    if (req->scene_path != NULL && strcmp(req->output, "-") != 0 &&
+        cli_same_file(req->output, req->scene_path))
+        return cli_usage_error("--output: '%s' is the scene file; refusing "
+                               "to overwrite an input",
+                               req->output);
     if (req->scene_path != NULL && req->sphere_count > 0)
         return cli_usage_error("--sphere: cannot be combined with the scene "
                                "file '%s'; put the sphere in the file",
@@ -345,6 +353,31 @@ static int build_camera(const render_request *req, rayo_camera *camera,
     return rayo_camera_spec_build(&spec, camera, err) == RAYO_OK;
 }
 
+/* One line when the scene file draws nothing or picks no camera. */
+static void warn_about_scene(const render_request *req)
+{
+    const char *name = strcmp(req->scene_path, "-") == 0 ? "standard input"
+                                                         : req->scene_path;
+    int empty = rayo_scene_object_count(req->file.scene) == 0;
+    int no_camera = !req->file.camera_given && !req->width_given &&
+                    !req->height_given && !req->fov_given &&
+                    !req->origin_given;
+    if (empty && no_camera)
+        cli_sayf("warning: %s has no objects and no camera; the image is "
+                 "the background, %lux%lu",
+                 name, (unsigned long)req->file.camera.width,
+                 (unsigned long)req->file.camera.height);
+    else if (empty)
+        cli_sayf("warning: %s has no objects; the image is the background",
+                 name);
+    else if (no_camera)
+        cli_sayf("warning: %s has no camera; using the default one: "
+                 "%lux%lu, fov %g, at 0,0,0 looking down +z",
+                 name, (unsigned long)req->file.camera.width,
+                 (unsigned long)req->file.camera.height,
+                 req->file.camera.fov_degrees);
+}
+
 /* Shading mode, samples and depth: the options', else the scene's. */
 static void render_settings(const render_request *req,
                             rayo_render_options *options)
@@ -435,7 +468,7 @@ int cli_render(int argc, char **argv)
     exit_status = parse_request(argc, argv, req);
     if (exit_status == CLI_EXIT_OK && req->scene_path != NULL &&
         rayo_scene_file_load(&req->file, req->scene_path, &err) != RAYO_OK)
-        exit_status = cli_report(&err);
+        exit_status = cli_unreadable(&err);
     if (exit_status == CLI_EXIT_OK)
         exit_status = choose_format(req, &write_options.format);
     if (exit_status != CLI_EXIT_OK) {
@@ -444,6 +477,8 @@ int cli_render(int argc, char **argv)
         return exit_status < 0 ? CLI_EXIT_OK : exit_status;
     }
     write_options.plain = !req->raw;
+    if (req->scene_path != NULL)
+        warn_about_scene(req);
 
     if (!build_camera(req, &camera, &err) || !build_scene(req, &scene, &err)) {
         rayo_scene_file_free(&req->file);

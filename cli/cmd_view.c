@@ -47,8 +47,11 @@ static void print_help(void)
            "                   always (into files and pipes too, as for "
            "'less -R') or never\n"
            "  -h, --help       this help\n\n"
-           "exit status: 0 success, 1 output failure, 2 unreadable input or "
-           "bad options.\n");
+           "FILE may be course:ej1, course:ej2 or course:ej3, the course's "
+           "reference images\n(a file of that very name wins).\n\n"
+           "exit status: 0 success, 1 the output could not be written, 2 bad "
+           "options or an\ninput that cannot be read (missing, unreadable, "
+           "a directory, malformed or\ntoo large).\n");
 }
 
 /* The columns of the terminal: $COLUMNS when it is a sensible number. */
@@ -166,12 +169,16 @@ int cli_view(int argc, char **argv)
     rayo_image image;
     rayo_error err;
     const char *file = NULL;
+    char course_path[4096];
     int status;
     rayo_preview_options_init(&options);
     options.columns = cli_terminal_columns();
     status = parse_options(argc, argv, &options, &file);
     if (status != CLI_EXIT_OK)
         return status < 0 ? CLI_EXIT_OK : status;
+    status = cli_image_operand(file, course_path, sizeof course_path, &file);
+    if (status != CLI_EXIT_OK)
+        return status;
     rayo_error_clear(&err);
     memset(&image, 0, sizeof image);
     if (rayo_image_read_file(file, &image, NULL, &err) != RAYO_OK)

@@ -8,12 +8,18 @@
  * (DIR/../data/course for build/rayo in a work tree, DIR/../share/rayo/
  * course for PREFIX/bin/rayo).  Finding files is the command's job; the
  * library only ever gets a path.
+ *
+ * Image operands (compare, view, convert) name them course:ej1,
+ * course:ej2, course:ej3.  A file whose name really is "course:ej1" in
+ * the current directory wins (./course:ej1 always means the file), so no
+ * name that worked before changes meaning.
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli.h"
@@ -59,4 +65,30 @@ int cli_course_reference(const char *exercise, char *path, size_t room)
             return 1;
     }
     return 0;
+}
+
+int cli_image_operand(const char *operand, char *path, size_t room,
+                      const char **resolved)
+{
+    static const char prefix[] = "course:";
+    const char *name = operand + sizeof prefix - 1;
+    struct stat st;
+    *resolved = operand;
+    if (strncmp(operand, prefix, sizeof prefix - 1) != 0 ||
+        lstat(operand, &st) == 0)
+        return CLI_EXIT_OK;
+    if (strcmp(name, "ej1") != 0 && strcmp(name, "ej2") != 0 &&
+        strcmp(name, "ej3") != 0)
+        return cli_usage_error("%s: no such course image; expected "
+                               "course:ej1, course:ej2 or course:ej3",
+                               operand);
+    if (!cli_course_reference(name, path, room))
+        return cli_usage_error("%s: the course's image "
+                               "(referencia-catedra-%s.png) is not "
+                               "installed; looked in $RAYO_DATA_DIR/course "
+                               "and beside the command (../data/course, "
+                               "../share/rayo/course)",
+                               operand, name);
+    *resolved = path;
+    return CLI_EXIT_OK;
 }

@@ -2,28 +2,56 @@
 # deps.sh - makes sure a Debian machine has what rayo needs, so the quick
 # start (`make run`, `make check`) works on a fresh one.
 #
-#   scripts/deps.sh build   a C compiler, pkg-config and libpng's headers
+#   scripts/deps.sh build   a C compiler, make, pkg-config and libpng's
+#                           headers
 #   scripts/deps.sh check   also the Netpbm tools the tests cross-check with,
-#                           and jq and python3, which read their JSON
+#                           prove (perl), and jq and python3, which read
+#                           their JSON
 #
 # It installs with apt-get only when something is missing, and only as
 # root; otherwise it names the command to run and fails.  It never
-# downloads anything but Debian packages.
+# downloads anything but Debian packages.  While another apt or dpkg holds
+# the lock (unattended upgrades on a fresh machine), it waits for it, up
+# to $RAYO_APT_LOCK_TIMEOUT seconds (default 600), instead of giving up.
+# It prints one line per set of packages; apt's own output goes to a log
+# file ($RAYO_DEPS_LOG, else a new file in $TMPDIR or /tmp), whose last
+# lines and name are printed when apt fails.
 set -eu
 profile=${1:-build}
-need=""
-has_pkg() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q 'ok installed'; }
-command -v cc >/dev/null 2>&1 || need="$need gcc libc6-dev"
-command -v make >/dev/null 2>&1 || need="$need make"
-command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
-pkg-config --exists libpng 2>/dev/null || need="$need libpng-dev"
+case $profile in
+build | check) ;;
+*)
+    echo "deps.sh: '$profile': expected build or check" >&2
+    exit 2
+    ;;
+esac
+
+# The sets, each "label: packages", one a line.
+sets=""
+add_set() { # add_set LABEL PACKAGES
+    [ -n "$2" ] && sets="$sets$1:$2
+"
+    return 0
+}
+tools=""
+command -v cc >/dev/null 2>&1 || tools="$tools gcc libc6-dev"
+command -v make >/dev/null 2>&1 || tools="$tools make"
+command -v pkg-config >/dev/null 2>&1 || tools="$tools pkg-config"
+add_set "build tools" "$tools"
+png=""
+pkg-config --exists libpng 2>/dev/null || png=" libpng-dev"
+add_set "libpng's headers" "$png"
 if [ "$profile" = check ]; then
-    command -v pngtopnm >/dev/null 2>&1 || need="$need netpbm"
-    command -v prove >/dev/null 2>&1 || need="$need perl"
-    command -v jq >/dev/null 2>&1 || need="$need jq"
-    command -v python3 >/dev/null 2>&1 || need="$need python3"
+    tests=""
+    command -v pngtopnm >/dev/null 2>&1 || tests="$tests netpbm"
+    command -v prove >/dev/null 2>&1 || tests="$tests perl"
+    command -v jq >/dev/null 2>&1 || tests="$tests jq"
+    command -v python3 >/dev/null 2>&1 || tests="$tests python3"
+    add_set "test tools" "$tests"
 fi
-[ -z "$need" ] && exit 0
+[ -z "$sets" ] && exit 0
+need=$(printf '%s' "$sets" | sed 's/^[^:]*://' | tr '\n' ' ' | sed 's/  */ /g; s/ $//')
+
 if ! command -v apt-get >/dev/null 2>&1; then
     echo "rayo needs:$need (install them with your system's package manager)" >&2
     exit 1
@@ -32,7 +60,34 @@ if [ "$(id -u)" != 0 ]; then
     echo "rayo needs:$need; run: sudo apt-get install -y$need" >&2
     exit 1
 fi
-echo "installing:$need" >&2
+
+if [ -n "${RAYO_DEPS_LOG:-}" ]; then
+    log=$RAYO_DEPS_LOG
+    : >"$log"
+else
+    log=$(mktemp "${TMPDIR:-/tmp}/rayo-deps-log.XXXXXX")
+fi
+timeout=${RAYO_APT_LOCK_TIMEOUT:-600}
 export DEBIAN_FRONTEND=noninteractive
-apt-get update -qq >&2
-apt-get install -y -qq $need >&2
+
+# apt ARGS...: apt-get, waiting for the lock, its output into the log; on
+# failure, the log's last lines and its name.
+apt() {
+    echo "+ apt-get $*" >>"$log"
+    if apt-get -o DPkg::Lock::Timeout="$timeout" "$@" >>"$log" 2>&1; then
+        return 0
+    else
+        status=$?
+    fi
+    echo "rayo: apt-get $1 failed (exit status $status); the end of $log:" >&2
+    tail -n 15 "$log" | sed 's/^/    /' >&2
+    exit 1
+}
+
+echo "rayo: updating the package lists (apt's output: $log)" >&2
+apt update
+printf '%s' "$sets" | while IFS=: read -r label packages; do
+    echo "rayo: installing $label:$packages" >&2
+    # shellcheck disable=SC2086 # one word a package
+    apt install -y --no-install-recommends $packages
+done

@@ -189,7 +189,7 @@ expect_usage_error "--plain with PNG" "--plain: applies only" \
 expect_usage_error "unknown option" "unknown option" \
     convert --frobnicate "$TMP/text.pbm" "$TMP/x.pbm"
 run_capture convert "$TMP/missing.pbm" "$TMP/x.pbm"
-is "$status" 1 "missing input: exit 1"
+is "$status" 2 "missing input: exit 2"
 grep -q "missing.pbm: No such file or directory" "$TMP/err"
 ok $? "missing input: file and reason"
 run_capture convert "$TMP/text.pbm" "$TMP/no/such/dir/x.pbm"

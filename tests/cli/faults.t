@@ -196,7 +196,7 @@ is "$(cat "$TMP/d/keep.pgm")" "precious" "input ends early: the earlier output i
 is "$(leftovers "$TMP/d")" 0 "input ends early: no temporary file left"
 
 run_capture convert "$TMP/no-such.pgm" "$TMP/d/keep.pgm"
-is "$status" 1 "a missing input: exit 1"
+is "$status" 2 "a missing input: exit 2 (an input that cannot be read)"
 is "$(cat "$TMP/err")" "rayo: $TMP/no-such.pgm: No such file or directory" "a missing input: file and reason"
 is "$(cat "$TMP/d/keep.pgm")" "precious" "a missing input: the earlier output is intact"
 

@@ -51,7 +51,7 @@ expect_usage_error "folder without sources" 'no \.c file in this folder' \
     grade "$TMP/empty"
 
 run_capture grade "$TMP/nothing-here.c"
-is "$status" 1 "missing source: exit 1 (an input/output failure)"
+is "$status" 2 "missing source: exit 2 (an input that cannot be read)"
 grep -q "nothing-here.c: No such file or directory" "$TMP/err"
 ok $? "missing source: the file and the system's reason"
 
@@ -216,7 +216,7 @@ is "$status" 0 "--reference the course's PNG: passes"
 says '^image +pass +(identical|consistent)' "--reference: compared with the course's image"
 
 run_capture grade $NV --reference "$TMP/no-such.png" "$STUDENTS/correct/main.c"
-is "$status" 1 "a missing reference: exit 1"
+is "$status" 2 "a missing reference: exit 2"
 is "$(wc -c <"$TMP/out" | tr -d ' ')" 0 "a missing reference: nothing graded"
 
 # ---- a class ----

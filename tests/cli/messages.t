@@ -5,8 +5,8 @@
 # bytes with "..." (cli/escape.c), in every command.
 . "$(dirname "$0")/lib.sh"
 
-# one_line NAME STATUS ARGS...: that exit status (2 bad input, 1 a file
-# that cannot be opened), stderr one line with no control byte but its
+# one_line NAME STATUS ARGS...: that exit status (2: bad input, a file
+# that cannot be opened included), stderr one line with no control byte but its
 # newline; the line in $line.  (Test names never hold $line: the shell's
 # echo would turn its \n back into a newline.)
 one_line() {
@@ -27,10 +27,10 @@ one_line "compare, a name with a newline and ESC" 2 compare "$forged" "$TMP/smal
 case $line in *'bad\nrayo: the file is fine, exit 0\x1b[2J.pgm'*) r=0 ;; *) r=1 ;; esac
 ok "$r" "  the name shown escaped"
 one_line "view, the same name" 2 view "$forged"
-one_line "convert, the same name" 1 convert "$forged" "$TMP/out.png"
-one_line "grade, the same name as --reference" 1 grade --no-valgrind \
+one_line "convert, the same name" 2 convert "$forged" "$TMP/out.png"
+one_line "grade, the same name as --reference" 2 grade --no-valgrind \
     --reference "$forged" "$RAYO_SOURCE/tests/grade/correct/main.c"
-one_line "render, the same name as a scene" 1 render "$forged"
+one_line "render, the same name as a scene" 2 render "$forged"
 
 c1=$(printf 'c1\302\233x.pgm')
 one_line "a C1 control (U+009B, CSI) in a name" 2 compare "$c1" "$TMP/small.pbm"

@@ -90,9 +90,9 @@ expect_usage_error "too many lights" "^rayo: $S:4097:1: more than 4096 lights" r
 expect_usage_error "file too large (sparse, never read)" "^rayo: $S: the file is larger than 268435456 bytes" render "$S" -o "$OUT"
 rm -f "$S"
 
-# A file that cannot be read is an input/output failure: exit 1.
+# A file that cannot be read is bad input, as in every command: exit 2.
 run_capture render "$TMP/missing.scene" -o "$OUT"
-is "$status" 1 "missing scene file: exit status 1"
+is "$status" 2 "missing scene file: exit status 2"
 grep -q "missing.scene: No such file or directory" "$TMP/err"
 ok $? "missing scene file: the path and the system's reason"
 ok "$([ ! -e "$OUT" ]; echo $?)" "no output file after any refused scene"

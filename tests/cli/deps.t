@@ -1,0 +1,68 @@
+#!/bin/sh
+# deps.t - scripts/deps.sh: nothing to do on a machine that has it all;
+# on one that lacks everything (a PATH of stand-ins), one line per set of
+# packages, apt-get told to wait for the dpkg lock, apt's output in the
+# log and not on the terminal; when apt fails, the log's last lines and
+# its name, and a failure.  apt-get itself is a stand-in: nothing is
+# installed.
+. "$(dirname "$0")/lib.sh"
+
+deps=$RAYO_SOURCE/scripts/deps.sh
+sh -n "$deps"
+ok $? "deps.sh parses"
+out=$(sh "$deps" check 2>&1)
+is "$?:$out" "0:" "everything installed: silent, exit 0"
+
+# A bare machine: only the utilities deps.sh itself uses, a root id, and an
+# apt-get that records its arguments and talks a lot.
+bin=$TMP/bin
+mkdir "$bin"
+for tool in sh sed tr tail mktemp cat printf; do
+    p=$(command -v "$tool") && ln -s "$p" "$bin/$tool"
+done
+printf '#!/bin/sh\necho 0\n' >"$bin/id"
+cat >"$bin/apt-get" <<'STUB'
+#!/bin/sh
+echo "$*" >>"$APT_CALLS"
+i=0
+while [ $i -lt 50 ]; do echo "Get:$i http://deb.debian.org noise"; i=$((i + 1)); done
+[ "${APT_FAIL:-}" = "$3" ] && { echo "E: Could not get lock /var/lib/dpkg/lock-frontend" >&2; exit 100; }
+exit 0
+STUB
+chmod +x "$bin/id" "$bin/apt-get"
+export APT_CALLS=$TMP/calls
+status=0
+PATH=$bin RAYO_DEPS_LOG=$TMP/deps.log sh "$deps" check >"$TMP/out" 2>"$TMP/err" || status=$?
+is "$status" 0 "bare machine: exit 0"
+is "$(cat "$TMP/err")" "rayo: updating the package lists (apt's output: $TMP/deps.log)
+rayo: installing build tools: gcc libc6-dev make pkg-config
+rayo: installing libpng's headers: libpng-dev
+rayo: installing test tools: netpbm perl jq python3" "one line per package set"
+is "$(wc -c <"$TMP/out" | tr -d ' ')" 0 "nothing on stdout"
+is "$(grep -c noise "$TMP/deps.log")" 200 "apt's output is in the log"
+is "$(cut -d' ' -f1-3 "$APT_CALLS" | sort -u)" "-o DPkg::Lock::Timeout=600 install
+-o DPkg::Lock::Timeout=600 update" "every apt-get waits for the lock (600 s)"
+grep -q "install -y --no-install-recommends netpbm perl jq python3" "$APT_CALLS"
+ok $? "a set's packages in one apt-get install"
+: >"$APT_CALLS"
+status=0
+PATH=$bin RAYO_DEPS_LOG=$TMP/deps.log sh "$deps" build >"$TMP/out" 2>"$TMP/err" || status=$?
+is "$(grep -c install "$APT_CALLS")" 2 "build: two sets (no test tools)"
+
+# apt fails: the end of the log, its name, exit 1, and no further sets.
+: >"$APT_CALLS"
+status=0
+APT_FAIL=install PATH=$bin RAYO_DEPS_LOG=$TMP/deps.log sh "$deps" check >"$TMP/out" 2>"$TMP/err" || status=$?
+is "$status" 1 "apt-get install fails: exit 1"
+grep -q "^rayo: apt-get install failed (exit status 100); the end of $TMP/deps.log:$" "$TMP/err"
+ok $? "  says which apt-get failed and where its log is"
+grep -q "^    E: Could not get lock" "$TMP/err"
+ok $? "  shows the log's last lines"
+is "$(grep -c noise "$TMP/err")" 14 "  only the last lines (15 in all)"
+is "$(grep -c install "$APT_CALLS")" 1 "  and stops there"
+# Not root: the one command to run.
+printf '#!/bin/sh\necho 1000\n' >"$bin/id"
+status=0
+PATH=$bin sh "$deps" build >"$TMP/out" 2>"$TMP/err" || status=$?
+is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config libpng-dev; run: sudo apt-get install -y gcc libc6-dev make pkg-config libpng-dev" "not root: names the command"
+done_testing
