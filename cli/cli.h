@@ -81,6 +81,13 @@ void cli_vsayf(const char *format, va_list args)
     ;
 
 /* Prints "rayo: MESSAGE" on stderr; returns CLI_EXIT_USAGE. */
+/* JSON strings (json_text.c): s with control bytes as JSON escapes and
+ * bytes that are not UTF-8 as U+FFFD; cli_json_text_line first escapes
+ * s as the text report does (one line, \n, \x1b, ...) and cuts it at
+ * max bytes with "...". */
+void cli_json_string(FILE *stream, const char *s);
+void cli_json_text_line(FILE *stream, const char *s, size_t max);
+
 int cli_usage_error(const char *format, ...)
 #if defined(__GNUC__) || defined(__clang__)
     __attribute__((format(printf, 1, 2)))

@@ -14,12 +14,19 @@
 #include <string.h>
 
 #include "cli.h"
+#include "grade_class.h"
+#include "grade_export.h"
 #include "interrupt.h"
+#include "output_guard.h"
 
 typedef struct grade_request {
     rayo_grade_options options;
     char course_reference[4096]; /* --reference course, resolved */
     int json, each;
+    unsigned jobs;               /* -j: submissions graded at once */
+    const char *csv;             /* --csv FILE or "-" */
+    const char *gradescope;      /* --gradescope FILE */
+    cli_grade_points points;     /* --points */
 } grade_request;
 
 /* The grading's cancel callback: after SIGINT/SIGTERM the grading stops,
@@ -61,6 +68,21 @@ static void print_help(void)
         "      --each             DIRECTORY holds one folder per student: "
         "grade each,\n"
         "                         print a table\n"
+        "  -j, --jobs N           with --each, grade N submissions at once "
+        "(default:\n"
+        "                         the number of CPUs); the table is the "
+        "same\n"
+        "      --csv FILE         also write one CSV row per submission "
+        "('-': to\n"
+        "                         standard output, instead of the report)\n"
+        "      --gradescope FILE  also write Gradescope's results.json for "
+        "the\n"
+        "                         submission (not with --each)\n"
+        "      --points LIST      points per criterion for --csv and "
+        "--gradescope\n"
+        "                         (default compile=10,functions=20,run=10,"
+        "output=10,\n"
+        "                         image=40,valgrind=10)\n"
         "      --timeout SEC      wall-clock limit per run (default 10)\n"
         "      --cpu SEC          CPU time limit per run (default 10)\n"
         "      --memory MIB       address space limit (default 1024)\n"
@@ -105,7 +127,7 @@ static int parse_mib(const char *option, const char *text, uint64_t *bytes)
 enum {
     OPT_EXERCISE = 256, OPT_REFERENCE, OPT_DIFF, OPT_JSON, OPT_EACH,
     OPT_TIMEOUT, OPT_CPU, OPT_MEMORY, OPT_OUTPUT_LIMIT, OPT_PROCESSES,
-    OPT_NO_VALGRIND, OPT_CC
+    OPT_NO_VALGRIND, OPT_CC, OPT_CSV, OPT_GRADESCOPE, OPT_POINTS
 };
 
 static int parse_option(int c, grade_request *req)
@@ -125,6 +147,16 @@ static int parse_option(int c, grade_request *req)
     case OPT_EACH: req->each = 1; return CLI_EXIT_OK;
     case OPT_NO_VALGRIND: o->valgrind = 0; return CLI_EXIT_OK;
     case OPT_CC: o->cc = optarg; return CLI_EXIT_OK;
+    case OPT_CSV: req->csv = optarg; return CLI_EXIT_OK;
+    case OPT_GRADESCOPE: req->gradescope = optarg; return CLI_EXIT_OK;
+    case OPT_POINTS: return cli_grade_points_parse(optarg, &req->points);
+    case 'j': {
+        unsigned long jobs;
+        if (!cli_parse_uint("--jobs", optarg, 1, 256, &jobs))
+            return CLI_EXIT_USAGE;
+        req->jobs = (unsigned)jobs;
+        return CLI_EXIT_OK;
+    }
     case OPT_TIMEOUT:
         return parse_seconds("--timeout", optarg, &o->timeout)
                    ? CLI_EXIT_OK : CLI_EXIT_USAGE;
@@ -160,12 +192,16 @@ static int parse_request(int argc, char **argv, grade_request *req)
         {"processes", required_argument, NULL, OPT_PROCESSES},
         {"no-valgrind", no_argument, NULL, OPT_NO_VALGRIND},
         {"cc", required_argument, NULL, OPT_CC},
+        {"jobs", required_argument, NULL, 'j'},
+        {"csv", required_argument, NULL, OPT_CSV},
+        {"gradescope", required_argument, NULL, OPT_GRADESCOPE},
+        {"points", required_argument, NULL, OPT_POINTS},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
     int c;
     opterr = 0;
     optind = 0;
-    while ((c = getopt_long(argc, argv, ":h", options, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":hj:", options, NULL)) != -1) {
         int status;
         if (c == 'h') {
             print_help();
@@ -187,6 +223,17 @@ static int parse_request(int argc, char **argv, grade_request *req)
     if (req->each && req->options.diff != NULL)
         return cli_usage_error("--diff: applies to one submission, not to "
                                "--each");
+    if (req->each && req->gradescope != NULL)
+        return cli_usage_error("--gradescope: Gradescope grades one "
+                               "submission per run, not --each; use --csv "
+                               "for a class");
+    if (req->csv != NULL && strcmp(req->csv, "-") == 0 && req->json)
+        return cli_usage_error("--csv -: standard output already carries "
+                               "the JSON; give --csv a FILE");
+    if (req->gradescope != NULL && strcmp(req->gradescope, "-") == 0 &&
+        (req->json || (req->csv != NULL && strcmp(req->csv, "-") == 0)))
+        return cli_usage_error("--gradescope -: standard output already "
+                               "carries the report; give a FILE");
     if (req->options.reference != NULL &&
         strcmp(req->options.reference, "course") == 0) {
         const char *name = req->options.exercise->name;
@@ -307,33 +354,9 @@ static void print_text(const rayo_grade_report *r)
 
 /* ---- JSON ---- */
 
-/* s as a JSON string: control bytes escaped, and a byte that is not
-   valid UTF-8 (a folder name in another encoding) as U+FFFD, so that
-   the document stays valid JSON. */
 static void json_string(const char *s)
 {
-    putchar('"');
-    for (; *s != '\0'; s++) {
-        unsigned char ch = (unsigned char)*s;
-        size_t n =
-            ch >= 0x80 ? cli_utf8_sequence((const unsigned char *)s) : 0;
-        if (n > 0) {
-            fwrite(s, 1, n, stdout);
-            s += n - 1;
-        } else if (ch >= 0x80)
-            printf("\\ufffd");
-        else if (ch == '"' || ch == '\\')
-            printf("\\%c", ch);
-        else if (ch == '\n')
-            printf("\\n");
-        else if (ch == '\t')
-            printf("\\t");
-        else if (ch < 0x20 || ch == 0x7f)
-            printf("\\u%04x", ch);
-        else
-            putchar(ch);
-    }
-    putchar('"');
+    cli_json_string(stdout, s);
 }
 
 static void print_json(const char *student, const rayo_grade_options *o,
@@ -374,56 +397,130 @@ static void print_json(const char *student, const rayo_grade_options *o,
     printf("]}");
 }
 
+/* ---- files for other tools (--csv, --gradescope) ---- */
+
+/* Whether path is standard output. */
+static int is_stdout(const char *path)
+{
+    return path != NULL && strcmp(path, "-") == 0;
+}
+
+/* text (size bytes) into path, whole or not at all; an exit status. */
+static int write_whole(const char *path, const char *text, size_t size)
+{
+    rayo_output *out;
+    rayo_error err;
+    rayo_error_clear(&err);
+    fflush(stdout);
+    if (rayo_output_open(&out, path, &err) != RAYO_OK)
+        return cli_report(&err);
+    cli_guard_output(out);
+    if (rayo_output_write(out, text, size, &err) != RAYO_OK) {
+        cli_output_abort(out);
+        return cli_report(&err);
+    }
+    if (cli_output_commit(out, &err) != RAYO_OK)
+        return cli_report(&err);
+    return CLI_EXIT_OK;
+}
+
+/* A memory stream's text, written to path; an exit status. */
+static int finish_export(FILE *stream, char **text, size_t *size,
+                         const char *path)
+{
+    int status;
+    if (fclose(stream) != 0 || *text == NULL) {
+        free(*text);
+        cli_sayf("%s: out of memory", path);
+        return CLI_EXIT_FAILURE;
+    }
+    status = write_whole(path, *text, *size);
+    free(*text);
+    return status;
+}
+
+/* The --csv and --gradescope files of one submission (report NULL: it
+   could not be graded, err says why); an exit status. */
+static int export_one(const grade_request *req, const char *student,
+                      const rayo_grade_report *report, const rayo_error *err)
+{
+    const char *message = report == NULL ? err->message : NULL;
+    int status = CLI_EXIT_OK;
+    char *text = NULL;
+    size_t size = 0;
+    FILE *stream;
+    if (req->csv != NULL) {
+        stream = open_memstream(&text, &size);
+        if (stream == NULL)
+            return cli_report(err);
+        cli_grade_csv_header(stream);
+        cli_grade_csv_row(stream, student, report, message, &req->points);
+        status = finish_export(stream, &text, &size, req->csv);
+    }
+    if (req->gradescope != NULL && status == CLI_EXIT_OK) {
+        text = NULL;
+        size = 0;
+        stream = open_memstream(&text, &size);
+        if (stream == NULL)
+            return CLI_EXIT_FAILURE;
+        cli_grade_gradescope(stream, report, message, NULL, &req->points);
+        status = finish_export(stream, &text, &size, req->gradescope);
+    }
+    return status;
+}
+
 /* ---- one submission ---- */
 
-static int grade_one(const char *path, const char *student,
-                     grade_request *req, rayo_grade_report *report,
-                     rayo_error *err)
+static const char *base_name(const char *path)
 {
-    char **sources = NULL;
-    size_t count = 0;
-    rayo_status status = rayo_grade_sources(path, &sources, &count, err);
-    if (status == RAYO_OK) {
-        req->options.sources = (const char *const *)sources;
-        req->options.source_count = count;
-        status = rayo_grade(&req->options, report, err);
-    }
-    if (status == RAYO_OK && req->json)
-        print_json(student, &req->options, report);
-    req->options.sources = NULL;
-    req->options.source_count = 0;
-    rayo_grade_paths_free(sources, count);
-    return status == RAYO_OK;
+    const char *slash = strrchr(path, '/');
+    return slash != NULL && slash[1] != '\0' ? slash + 1 : path;
 }
 
 static int grade_single(int argc, char **argv, int first, grade_request *req)
 {
     rayo_grade_report report;
     rayo_error err;
-    int exit_status;
+    char **sources = NULL;
+    size_t count = 0;
+    int exit_status, export_status;
+    int quiet = is_stdout(req->csv) || is_stdout(req->gradescope);
+    rayo_status status = RAYO_OK;
     rayo_error_clear(&err);
+    memset(&report, 0, sizeof report);
     if (first + 1 == argc) {
-        if (!grade_one(argv[first], NULL, req, &report, &err))
-            return err.status == RAYO_ERR_CANCELLED ? CLI_EXIT_FAILURE
-                                                    : cli_report(&err);
+        status = rayo_grade_sources(argv[first], &sources, &count, &err);
+        req->options.sources = (const char *const *)sources;
+        req->options.source_count = count;
     } else {
         req->options.sources = (const char *const *)(argv + first);
         req->options.source_count = (size_t)(argc - first);
-        if (rayo_grade(&req->options, &report, &err) != RAYO_OK)
-            return err.status == RAYO_ERR_CANCELLED ? CLI_EXIT_FAILURE
-                                                    : cli_report(&err);
-        if (req->json)
-            print_json(NULL, &req->options, &report);
+    }
+    if (status == RAYO_OK)
+        status = rayo_grade(&req->options, &report, &err);
+    if (status != RAYO_OK) {
+        rayo_grade_paths_free(sources, count);
+        if (err.status == RAYO_ERR_CANCELLED)
+            return CLI_EXIT_FAILURE;
+        /* The platform still gets a result that says why. */
+        export_one(req, base_name(argv[first]), NULL, &err);
+        return cli_report(&err);
     }
     if (req->json)
+        print_json(NULL, &req->options, &report);
+    if (req->json)
         printf("\n");
-    else
+    else if (!quiet)
         print_text(&report);
     exit_status = rayo_grade_overall(&report) == RAYO_GRADE_PASS
                       ? CLI_EXIT_OK
                       : CLI_EXIT_FAILURE;
+    export_status = export_one(req, base_name(argv[first]), &report, &err);
     rayo_grade_report_free(&report);
-    return exit_status;
+    rayo_grade_paths_free(sources, count);
+    req->options.sources = NULL;
+    req->options.source_count = 0;
+    return export_status != CLI_EXIT_OK ? export_status : exit_status;
 }
 
 /* ---- a class ---- */
@@ -450,12 +547,6 @@ static void print_table_row(const char *student, size_t width,
                                                              : "FAIL");
 }
 
-static const char *base_name(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    return slash != NULL ? slash + 1 : path;
-}
-
 /* The student column: as wide as the widest name (escaped), at least
    "student", at most STUDENT_COLUMNS (wider names are cut). */
 static size_t student_width(char **folders, size_t count)
@@ -469,56 +560,109 @@ static size_t student_width(char **folders, size_t count)
     return width < STUDENT_COLUMNS ? width : STUDENT_COLUMNS;
 }
 
+/* What the class's table, JSON and CSV have so far. */
+typedef struct class_printer {
+    const grade_request *req;
+    size_t width, passed, printed;
+    int cancelled, quiet;
+    FILE *csv;                   /* the CSV rows, in memory */
+} class_printer;
+
+/* One submission's row, in the folders' order (grade_class.h). */
+static int print_graded(const cli_graded *g, void *context)
+{
+    class_printer *p = context;
+    const grade_request *req = p->req;
+    const char *student = base_name(g->folder);
+    if (g->status != RAYO_OK && g->err.status == RAYO_ERR_CANCELLED) {
+        p->cancelled = 1;
+        return 1;
+    }
+    if (req->json && p->printed > 0)
+        printf(",\n ");
+    p->printed++;
+    if (g->status != RAYO_OK) {
+        /* One bad folder does not stop the class. */
+        if (req->json) {
+            printf("{\"student\": ");
+            json_string(student);
+            printf(", \"result\": \"error\", \"error\": ");
+            json_string(g->err.message);
+            printf("}");
+        } else if (!p->quiet) {
+            print_column(student, p->width);
+            printf(" error: ");
+            print_escaped(g->err.message, 0);
+            putchar('\n');
+        }
+        if (p->csv != NULL)
+            cli_grade_csv_row(p->csv, student, NULL, g->err.message,
+                              &req->points);
+    } else {
+        if (req->json)
+            print_json(student, g->options, &g->report);
+        else if (!p->quiet)
+            print_table_row(student, p->width, &g->report);
+        if (rayo_grade_overall(&g->report) == RAYO_GRADE_PASS)
+            p->passed++;
+        if (p->csv != NULL)
+            cli_grade_csv_row(p->csv, student, &g->report, NULL,
+                              &req->points);
+    }
+    fflush(stdout);
+    return cli_interrupted() != 0;
+}
+
 static int grade_each(const char *dir, grade_request *req)
 {
     char **folders = NULL;
-    size_t count = 0, i, passed = 0, width;
+    size_t count = 0;
+    char *csv_text = NULL;
+    size_t csv_size = 0;
+    class_printer p;
     rayo_error err;
+    int status;
     rayo_error_clear(&err);
     if (rayo_grade_submissions(dir, &folders, &count, &err) != RAYO_OK)
         return cli_report(&err);
-    width = student_width(folders, count);
-    if (req->json)
-        printf("[");
-    else
-        print_table_header(width);
-    for (i = 0; i < count && cli_interrupted() == 0; i++) {
-        rayo_grade_report report;
-        const char *student = base_name(folders[i]);
-        if (req->json && i > 0)
-            printf(",\n ");
-        rayo_error_clear(&err);
-        if (!grade_one(folders[i], student, req, &report, &err)) {
-            if (err.status == RAYO_ERR_CANCELLED)
-                break;
-            /* One bad folder does not stop the class. */
-            if (req->json) {
-                printf("{\"student\": ");
-                json_string(student);
-                printf(", \"result\": \"error\", \"error\": ");
-                json_string(err.message);
-                printf("}");
-            } else {
-                print_column(student, width);
-                printf(" error: ");
-                print_escaped(err.message, 0);
-                putchar('\n');
-            }
-            continue;
+    memset(&p, 0, sizeof p);
+    p.req = req;
+    p.width = student_width(folders, count);
+    p.quiet = is_stdout(req->csv);
+    if (req->csv != NULL) {
+        p.csv = open_memstream(&csv_text, &csv_size);
+        if (p.csv == NULL) {
+            rayo_grade_paths_free(folders, count);
+            cli_sayf("%s: out of memory", req->csv);
+            return CLI_EXIT_FAILURE;
         }
-        if (!req->json)
-            print_table_row(student, width, &report);
-        if (rayo_grade_overall(&report) == RAYO_GRADE_PASS)
-            passed++;
-        rayo_grade_report_free(&report);
-        fflush(stdout);
+        cli_grade_csv_header(p.csv);
     }
     if (req->json)
+        printf("[");
+    else if (!p.quiet)
+        print_table_header(p.width);
+    cli_grade_class(folders, count,
+                    req->jobs > 0 ? req->jobs : cli_grade_default_jobs(),
+                    &req->options, 1, print_graded, &p);
+    if (req->json)
         printf("]\n");
-    else
-        printf("\n%zu of %zu submissions passed\n", passed, count);
+    else if (!p.quiet)
+        printf("\n%zu of %zu submissions passed\n", p.passed, count);
+    status = p.passed == count ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
+    if (p.csv != NULL) {
+        if (p.cancelled || cli_interrupted() != 0) {
+            fclose(p.csv);
+            free(csv_text);
+        } else {
+            int written = finish_export(p.csv, &csv_text, &csv_size,
+                                        req->csv);
+            if (written != CLI_EXIT_OK)
+                status = written;
+        }
+    }
     rayo_grade_paths_free(folders, count);
-    return passed == count ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
+    return status;
 }
 
 /* Submissions and --reference that cannot be read are bad input (exit
@@ -541,11 +685,17 @@ int cli_grade(int argc, char **argv)
     int status;
     memset(&req, 0, sizeof req);
     rayo_grade_options_init(&req.options);
+    cli_grade_points_default(&req.points);
     status = parse_request(argc, argv, &req);
     if (status != CLI_EXIT_OK)
         return status < 0 ? CLI_EXIT_OK : status;
     if ((status = check_inputs(argc, argv, optind, &req)) != CLI_EXIT_OK)
         return status;
+    /* --no-valgrind: the criterion is not graded, so not counted,
+       unless --points gives it points all the same. */
+    if (!req.options.valgrind &&
+        !(req.points.given & (1u << RAYO_GRADE_VALGRIND)))
+        req.points.points[RAYO_GRADE_VALGRIND] = 0;
     req.options.cancelled = stop_requested;
     cli_interrupt_catch();
     status = req.each ? grade_each(argv[optind], &req)
