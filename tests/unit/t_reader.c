@@ -253,10 +253,10 @@ static void expect_layout(const png_case *pc, rayo_image_info *info)
     }
 }
 
-static void check_png_case(const png_case *pc)
+static void check_png_case(const png_case *pc, uint32_t width,
+                           uint32_t height)
 {
-    const uint32_t width = 13, height = 11;
-    char name[96];
+    char name[128];
     buffer png;
     rayo_image image;
     rayo_image_info want;
@@ -265,9 +265,10 @@ static void check_png_case(const png_case *pc)
     rayo_status status;
     uint32_t x, y;
     unsigned c, mismatches = 0;
-    snprintf(name, sizeof name, "PNG type %d depth %d%s%s", pc->colour_type,
-             pc->depth, pc->interlace ? " interlaced" : "",
-             pc->trns ? " tRNS" : "");
+    snprintf(name, sizeof name, "PNG type %d depth %d%s%s %lux%lu",
+             pc->colour_type, pc->depth, pc->interlace ? " interlaced" : "",
+             pc->trns ? " tRNS" : "", (unsigned long)width,
+             (unsigned long)height);
     if (!write_png(pc, width, height, &png)) {
         ok(0, "%s: libpng wrote it", name);
         return;
@@ -316,12 +317,17 @@ static void test_png_every_type(void)
         {PNG_COLOR_TYPE_GRAY, 8, 0, 1},       {PNG_COLOR_TYPE_GRAY, 2, 0, 1},
         {PNG_COLOR_TYPE_GRAY, 16, 0, 1},
     };
-    size_t i;
+    /* Adam7's passes are placed one by one: sizes where some are empty
+       or end part-way (1x1 has only the first). */
+    static const uint32_t small[][2] = {{1, 1}, {2, 1}, {3, 5}, {9, 9}};
+    size_t i, k;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         png_case pc = cases[i];
-        check_png_case(&pc);
+        check_png_case(&pc, 13, 11);
         pc.interlace = PNG_INTERLACE_ADAM7;
-        check_png_case(&pc);
+        check_png_case(&pc, 13, 11);
+        for (k = 0; k < sizeof small / sizeof small[0]; k++)
+            check_png_case(&pc, small[k][0], small[k][1]);
     }
 }
 
