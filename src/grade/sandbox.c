@@ -127,13 +127,23 @@ static void add_system(words *w)
     add2(w, "--dev", "/dev");
 }
 
-static void add_env(words *w, const char *home)
+/* The environment inside: PATH, HOME and TMPDIR, LANG=C; the compiler
+   keeps the caller's locale (its messages in the caller's language). */
+static void add_env(words *w, const char *home, int tool)
 {
+    static const char *const locale[] = {"LANG", "LC_ALL", "LC_MESSAGES",
+                                         "LC_CTYPE"};
+    size_t i;
     add(w, "--clearenv");
     add3(w, "--setenv", "PATH", "/usr/local/bin:/usr/bin:/bin");
     add3(w, "--setenv", "HOME", home);
     add3(w, "--setenv", "TMPDIR", home);
     add3(w, "--setenv", "LANG", "C");
+    for (i = 0; tool && i < sizeof locale / sizeof locale[0]; i++) {
+        const char *value = getenv(locale[i]);
+        if (value != NULL && strlen(value) < 100)
+            add3(w, "--setenv", locale[i], value);
+    }
 }
 
 /* The directory part of path, allocated ("." for none). */
@@ -188,7 +198,7 @@ char **grade_sandbox_argv(const grade_context *ctx, const grade_run *run,
         add3(&w, "--bind", ctx->dir, ctx->dir);
         add(&w, "--remount-ro");
         add(&w, "/");
-        add_env(&w, ctx->dir);
+        add_env(&w, ctx->dir, 1);
         add2(&w, "--chdir", ctx->cwd);
     } else {
         snprintf(number, sizeof number, "%llu",
@@ -199,7 +209,7 @@ char **grade_sandbox_argv(const grade_context *ctx, const grade_run *run,
             add3(&w, "--ro-bind", run->program, run->program);
         add(&w, "--remount-ro");
         add(&w, "/");
-        add_env(&w, ctx->work);
+        add_env(&w, ctx->work, 0);
         add2(&w, "--chdir", ctx->work);
     }
     snprintf(number, sizeof number, "%d", json_fd);
