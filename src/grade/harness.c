@@ -232,7 +232,8 @@ rayo_status harness_build(grade_context *ctx, const char *source,
         words[3] = "-c";
         words[4] = "-o";
         words[5] = objects[i];
-        words[6] = ctx->compiled[i];
+        words[6] = ctx->compiled != NULL ? ctx->compiled[i]
+                                         : ctx->sources[i];
         free(*errors);
         status = harness_cc(ctx, words, 7, ok, errors, err);
     }

@@ -134,7 +134,7 @@ static void child(const char *program, char *const argv[],
                   char *const env[], const char *dir, const child_fds *fds,
                   const grade_limits *limits, long max_fd)
 {
-    int fd, moved[7], count = 0, i;
+    int fd, moved[6], i;
     long k;
     /* A session of its own: its own process group (killed as one), and
        no controlling terminal to push input into (TIOCSTI). */
@@ -169,7 +169,6 @@ static void child(const char *program, char *const argv[],
         _exit(126);
     if (moved[5] >= 0 && place(moved[5], FD_FILE) != 0)
         _exit(126);
-    (void)count;
     for (k = 3; k < max_fd; k++) {
         if ((moved[2] >= 0 && k == fds->log_number) ||
             (moved[3] >= 0 && k == FD_JSON) ||
@@ -380,7 +379,8 @@ static rayo_status collect_here(const grade_context *ctx, uint64_t limit,
                                 grade_captured *got, rayo_error *err)
 {
     static const char *const extensions[] = {".pbm", ".pgm", ".ppm", ".pnm"};
-    int dir = open(ctx->work, O_RDONLY | O_DIRECTORY | O_NOFOLLOW);
+    int dir = open(ctx->work != NULL ? ctx->work : ctx->dir,
+                   O_RDONLY | O_DIRECTORY | O_NOFOLLOW);
     DIR *d = dir >= 0 ? fdopendir(dir) : NULL;
     struct dirent *entry;
     char *found = NULL;
@@ -426,7 +426,9 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
                         rayo_error *err)
 {
     int student = run->role == GRADE_ROLE_STUDENT;
-    const char *dir = student ? ctx->work : ".";
+    /* A context without a work folder (a test's) runs in dir. */
+    const char *work = ctx->work != NULL ? ctx->work : ctx->dir;
+    const char *dir = student ? work : ".";
     char **env = NULL, **words = NULL, **full = NULL;
     char *program = NULL;
     FILE *out = capture(), *errf = capture();
@@ -475,13 +477,13 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
         }
         words = grade_sandbox_argv(ctx, run, FD_JSON);
         program = ctx->bwrap != NULL ? strdup(ctx->bwrap) : NULL;
-        env = minimal_env(ctx->work);
+        env = minimal_env(work);
         full = words;
         dir = "/";
     } else {
         program = run->search ? resolve(run->argv[0]) : strdup(run->argv[0]);
         if (student)
-            env = minimal_env(ctx->work);
+            env = minimal_env(work);
         full = (char **)run->argv;
     }
     if (program == NULL || full == NULL || (student && env == NULL) ||
