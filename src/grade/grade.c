@@ -98,8 +98,9 @@ static rayo_status absolute_sources(grade_context *ctx, rayo_error *err)
         if (real == NULL)
             return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", typed,
                                   strerror(errno));
-        ctx->absolute[i] = strcmp(real, "/") == 0 ? grade_concat("/", base)
-                                                  : grade_path_join(real, base);
+        ctx->absolute[i] = strcmp(real, "/") == 0
+                               ? grade_concat("/", base)
+                               : grade_path_join(real, base);
         free(real);
         if (ctx->absolute[i] == NULL)
             return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");

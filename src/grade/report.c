@@ -5,8 +5,8 @@
  * Reasons are whole sentences for a student; the command decides how to
  * lay them out (text or JSON) and escapes their control bytes.  Every
  * line is bounded here (a quoted line to 300 bytes, any line to 1000),
- * so a program that prints megabyte-long lines gets them cut.  Nothing here knows what a criterion
- * checks.
+ * so a program that prints megabyte-long lines gets them cut.  Nothing
+ * here knows what a criterion checks.
  */
 #include <stdarg.h>
 #include <stdio.h>

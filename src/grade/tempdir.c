@@ -121,8 +121,9 @@ static void empty_dir(int top, int fd, int depth)
             if (child < 0) {
                 /* A folder without search or read permission. */
                 if (fchmodat(dirfd(d), name, S_IRWXU, 0) == 0)
-                    child = openat(dirfd(d), name, O_RDONLY | O_DIRECTORY |
-                                                       O_NOFOLLOW | O_NONBLOCK);
+                    child = openat(dirfd(d), name,
+                                   O_RDONLY | O_DIRECTORY | O_NOFOLLOW |
+                                       O_NONBLOCK);
                 if (child < 0)
                     continue;
             }

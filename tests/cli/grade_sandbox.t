@@ -156,7 +156,12 @@ int main(void) { sleep(1); printf("P1\n1 1\n0\n"); return 0; }
 EOF
 TMPDIR="$TMP/tmp" "$RAYO" grade $NV --timeout 3 "$TMP/slow.c" >"$TMP/out" 2>&1 &
 grader=$!
-sleep 0.5
+# Stopped once the program runs (the compiler's time is its own).
+tries=0
+while ! pgrep -f -- "--ro-bind $TMP/tmp/rayo-grade[^ ]*/programa" >/dev/null && [ $tries -lt 300 ]; do
+    sleep 0.1
+    tries=$((tries + 1))
+done
 kill -STOP "$grader"
 sleep 4
 kill -CONT "$grader"
