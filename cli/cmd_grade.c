@@ -5,7 +5,9 @@
  *
  * All the checking is library code (grade.h); this file parses options,
  * lays the report out and picks the exit status: 0 when everything
- * passed, 1 when a criterion failed, 2 for usage errors.
+ * passed, 1 when a criterion failed, 2 for usage errors and for
+ * --sandbox=require where no sandbox can be made.  The report's first
+ * line says how the submission was isolated; --check says only that.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -22,7 +24,7 @@
 typedef struct grade_request {
     rayo_grade_options options;
     char course_reference[4096]; /* --reference course, resolved */
-    int json, each;
+    int json, each, check;
     unsigned jobs;               /* -j: submissions graded at once */
     const char *csv;             /* --csv FILE or "-" */
     const char *gradescope;      /* --gradescope FILE */
@@ -91,15 +93,28 @@ static void print_help(void)
         "      --processes N      process limit (default 64)\n"
         "      --no-valgrind      skip the valgrind run\n"
         "      --cc COMMAND       the compiler (default $CC, else cc)\n"
+        "      --sandbox MODE     auto (default): run everything in a "
+        "bubblewrap sandbox\n"
+        "                         when one can be made, else say it is "
+        "not isolated;\n"
+        "                         require: refuse to grade without it; "
+        "off: no sandbox\n"
+        "      --disk MIB         the sandbox's disk for the program "
+        "(default 256)\n"
+        "      --check            say whether the sandbox works here, "
+        "grade nothing\n"
+        "                         (exit 0 when it does, 2 when not)\n"
         "  -h, --help             this help\n\n"
         "exercises:\n");
     for (i = 0; i < count; i++)
         printf("  %-8s %s\n", exercises[i].name, exercises[i].title);
-    printf("\nThe limits stop honest mistakes (loops, runaway output); "
-           "they are\nnot a sandbox: grade untrusted code in a container.\n\n"
+    printf("\nThe report's first line says how the submission was isolated "
+           "(docs/grading.md\nsays what the sandbox stops and what it does "
+           "not).\n\n"
            "exit status: 0 everything passed, 1 something failed or an "
            "output could not be\nwritten, 2 bad options or an input that "
-           "cannot be read (missing, unreadable,\na directory, malformed).\n");
+           "cannot be read (missing, unreadable,\na directory, malformed), "
+           "or --sandbox=require without a sandbox.\n");
 }
 
 static int parse_seconds(const char *option, const char *text, double *value)
@@ -127,7 +142,8 @@ static int parse_mib(const char *option, const char *text, uint64_t *bytes)
 enum {
     OPT_EXERCISE = 256, OPT_REFERENCE, OPT_DIFF, OPT_JSON, OPT_EACH,
     OPT_TIMEOUT, OPT_CPU, OPT_MEMORY, OPT_OUTPUT_LIMIT, OPT_PROCESSES,
-    OPT_NO_VALGRIND, OPT_CC, OPT_CSV, OPT_GRADESCOPE, OPT_POINTS
+    OPT_NO_VALGRIND, OPT_CC, OPT_CSV, OPT_GRADESCOPE, OPT_POINTS,
+    OPT_SANDBOX, OPT_DISK, OPT_CHECK
 };
 
 static int parse_option(int c, grade_request *req)
@@ -169,6 +185,22 @@ static int parse_option(int c, grade_request *req)
     case OPT_OUTPUT_LIMIT:
         return parse_mib("--output-limit", optarg, &o->output_limit)
                    ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+    case OPT_SANDBOX:
+        if (strcmp(optarg, "auto") == 0)
+            o->sandbox = RAYO_GRADE_SANDBOX_AUTO;
+        else if (strcmp(optarg, "require") == 0)
+            o->sandbox = RAYO_GRADE_SANDBOX_REQUIRE;
+        else if (strcmp(optarg, "off") == 0)
+            o->sandbox = RAYO_GRADE_SANDBOX_OFF;
+        else
+            return cli_usage_error("--sandbox: '%s' is not a mode; "
+                                   "expected auto, require or off",
+                                   optarg);
+        return CLI_EXIT_OK;
+    case OPT_DISK:
+        return parse_mib("--disk", optarg, &o->disk) ? CLI_EXIT_OK
+                                                     : CLI_EXIT_USAGE;
+    case OPT_CHECK: req->check = 1; return CLI_EXIT_OK;
     case OPT_PROCESSES:
         return cli_parse_uint("--processes", optarg, 1, 100000,
                               &o->processes)
@@ -196,6 +228,9 @@ static int parse_request(int argc, char **argv, grade_request *req)
         {"csv", required_argument, NULL, OPT_CSV},
         {"gradescope", required_argument, NULL, OPT_GRADESCOPE},
         {"points", required_argument, NULL, OPT_POINTS},
+        {"sandbox", required_argument, NULL, OPT_SANDBOX},
+        {"disk", required_argument, NULL, OPT_DISK},
+        {"check", no_argument, NULL, OPT_CHECK},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
     int c;
@@ -212,6 +247,12 @@ static int parse_request(int argc, char **argv, grade_request *req)
         status = parse_option(c, req);
         if (status != CLI_EXIT_OK)
             return status;
+    }
+    if (req->check) {
+        if (optind < argc)
+            return cli_usage_error("--check: grades nothing; no submission "
+                                   "is expected");
+        return CLI_EXIT_OK;
     }
     if (optind >= argc)
         return cli_usage_error("grade: no submission given; expected "
@@ -311,10 +352,24 @@ static void print_column(const char *s, size_t width)
         putchar(' ');
 }
 
+/* The report's first line: how the submission was isolated ("sandbox:
+   bubblewrap (...)", or a warning that it was not); nothing for
+   --sandbox=off. */
+static void print_isolation(const char *isolation)
+{
+    if (strcmp(isolation, "off") == 0 || isolation[0] == '\0')
+        return;
+    if (strncmp(isolation, "sandbox: ", 9) == 0)
+        printf("%s\n", isolation);
+    else
+        printf("warning: %s\n", isolation);
+}
+
 static void print_text(const rayo_grade_report *r)
 {
     size_t c, i, failed = 0, skipped = 0, warnings = 0;
     char failed_names[128] = "";
+    print_isolation(r->isolation);
     for (c = 0; c < RAYO_GRADE_CRITERIA; c++) {
         const rayo_grade_item *item = &r->items[c];
         const char *result = item->result == RAYO_GRADE_FAIL
@@ -376,7 +431,11 @@ static void print_json(const char *student, const rayo_grade_options *o,
         printf(i > 0 ? ", " : "");
         json_string(o->sources[i]);
     }
-    printf("], \"result\": \"%s\", \"verdict\": ",
+    printf("], \"sandbox\": {\"isolated\": %s, \"detail\": ",
+           r->isolated ? "true" : "false");
+    json_string(strncmp(r->isolation, "sandbox: ", 9) == 0 ? r->isolation + 9
+                                                           : r->isolation);
+    printf("}, \"result\": \"%s\", \"verdict\": ",
            rayo_grade_result_name(rayo_grade_overall(r)));
     if (r->verdict != NULL)
         json_string(r->verdict);
@@ -463,7 +522,16 @@ static int export_one(const grade_request *req, const char *student,
         stream = open_memstream(&text, &size);
         if (stream == NULL)
             return CLI_EXIT_FAILURE;
-        cli_grade_gradescope(stream, report, message, NULL, &req->points);
+        char note[300] = "";
+        if (report != NULL && report->isolation[0] != '\0' &&
+            strcmp(report->isolation, "off") != 0)
+            snprintf(note, sizeof note, "%s%s",
+                     strncmp(report->isolation, "sandbox: ", 9) == 0
+                         ? ""
+                         : "warning: ",
+                     report->isolation);
+        cli_grade_gradescope(stream, report, message,
+                             note[0] != '\0' ? note : NULL, &req->points);
         status = finish_export(stream, &text, &size, req->gradescope);
     }
     return status;
@@ -621,6 +689,7 @@ static int grade_each(const char *dir, grade_request *req)
     size_t csv_size = 0;
     class_printer p;
     rayo_error err;
+    char isolation[256];
     int status;
     rayo_error_clear(&err);
     if (rayo_grade_submissions(dir, &folders, &count, &err) != RAYO_OK)
@@ -638,10 +707,17 @@ static int grade_each(const char *dir, grade_request *req)
         }
         cli_grade_csv_header(p.csv);
     }
+    /* Whether a sandbox can be made is found once, here, before the
+       gradings start on their threads. */
+    rayo_grade_sandbox_check(&req->options, isolation, sizeof isolation);
+    if (req->options.sandbox == RAYO_GRADE_SANDBOX_OFF)
+        snprintf(isolation, sizeof isolation, "off");
     if (req->json)
         printf("[");
-    else if (!p.quiet)
+    else if (!p.quiet) {
+        print_isolation(isolation);
         print_table_header(p.width);
+    }
     cli_grade_class(folders, count,
                     req->jobs > 0 ? req->jobs : cli_grade_default_jobs(),
                     &req->options, 1, print_graded, &p);
@@ -696,6 +772,18 @@ int cli_grade(int argc, char **argv)
     if (!req.options.valgrind &&
         !(req.points.given & (1u << RAYO_GRADE_VALGRIND)))
         req.points.points[RAYO_GRADE_VALGRIND] = 0;
+    if (req.check || req.options.sandbox == RAYO_GRADE_SANDBOX_REQUIRE) {
+        char text[256];
+        int isolated = rayo_grade_sandbox_check(&req.options, text,
+                                                sizeof text);
+        if (req.check) {
+            printf("%s\n", text);
+            return isolated ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+        }
+        if (!isolated)
+            return cli_usage_error("grade: --sandbox=require: %s; refusing "
+                                   "to grade", text);
+    }
     req.options.cancelled = stop_requested;
     cli_interrupt_catch();
     status = req.each ? grade_each(argv[optind], &req)

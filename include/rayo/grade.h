@@ -11,15 +11,15 @@
  * exercise of the course is an entry in a registry (rayo_grade_exercise)
  * with its name, image size and reference, so later exercises plug in.
  *
- * What it is not: a security sandbox.  The program runs as the calling
- * user, in a fresh temporary directory, with a minimal environment and
- * resource limits (setrlimit in the child before exec: CPU time, address
- * space, file size, process count; a wall-clock timeout that kills the
- * whole process group).  That stops the accidents of honest code
- * (infinite loops, runaway output, fork loops, huge allocations); it
- * does not stop code written to do harm, which can read and write
- * anything the user can.  Grade untrusted code inside a container or a
- * throwaway account (docs/grading.md).
+ * Isolation: by default the compiler, the functions' harness, the
+ * program and valgrind all run inside a bubblewrap sandbox (new user,
+ * PID, network, IPC and UTS namespaces; a read-only system; the
+ * program's folder a size-limited tmpfs; no capabilities), under resource
+ * limits (setrlimit before exec: CPU time, address space, file size,
+ * process count) and a wall-clock timeout measured by the grader.  When
+ * no sandbox can be made the report says so (rayo_grade_report.isolated,
+ * .isolation) and the limits alone remain: they stop honest mistakes,
+ * not code written to do harm (docs/grading.md).
  */
 #ifndef RAYO_GRADE_H
 #define RAYO_GRADE_H
@@ -63,7 +63,18 @@ typedef struct rayo_grade_item {
 typedef struct rayo_grade_report {
     rayo_grade_item items[RAYO_GRADE_CRITERIA];
     char *verdict;      /* compare's verdict ("identical", ...) or NULL */
+    int isolated;       /* 1 when the submission ran in the sandbox */
+    /* "bubblewrap (user, pid, ...)", "not isolated: WHY" or "off" */
+    char isolation[256];
 } rayo_grade_report;
+
+/* How the submission is isolated (rayo_grade_options.sandbox). */
+typedef enum rayo_grade_sandbox_mode {
+    RAYO_GRADE_SANDBOX_AUTO = 0, /* the sandbox when it can be made, else
+                                    run unisolated and say so */
+    RAYO_GRADE_SANDBOX_REQUIRE,  /* the sandbox, or refuse to grade */
+    RAYO_GRADE_SANDBOX_OFF       /* no sandbox, no warning */
+} rayo_grade_sandbox_mode;
 
 /* What an exercise asks for.  The registry is constant data. */
 typedef struct rayo_grade_exercise {
@@ -96,6 +107,8 @@ typedef struct rayo_grade_options {
     uint64_t output_limit;       /* file size, bytes (64 MiB) */
     unsigned long processes;     /* process count (64) */
     int valgrind;                /* run memcheck when installed */
+    rayo_grade_sandbox_mode sandbox; /* default AUTO */
+    uint64_t disk;               /* the sandbox's tmpfs, bytes (256 MiB) */
     /* Polled while a program runs (may be NULL): nonzero stops the
        grading, kills what runs and fails with RAYO_ERR_CANCELLED. */
     int (*cancelled)(void *context);
@@ -114,6 +127,18 @@ void rayo_grade_options_init(rayo_grade_options *options);
  */
 rayo_status rayo_grade(const rayo_grade_options *options,
                        rayo_grade_report *report, rayo_error *err);
+
+/*
+ * Whether a submission graded with these options would be isolated: 1
+ * and text "bubblewrap (user, pid, net, ipc namespaces; ...)", or 0 and
+ * text "not isolated: WHY" ("off" for RAYO_GRADE_SANDBOX_OFF).  The first
+ * call tries the sandbox for real (bwrap on PATH runs /bin/true inside
+ * one); later calls reuse the answer.  Not thread-safe on the first call.
+ * rayo_grade with RAYO_GRADE_SANDBOX_REQUIRE fails with RAYO_ERR_INVALID
+ * when this says 0.
+ */
+int rayo_grade_sandbox_check(const rayo_grade_options *options, char *text,
+                             size_t room);
 
 /* RAYO_GRADE_PASS when no criterion failed, else RAYO_GRADE_FAIL. */
 rayo_grade_result rayo_grade_overall(const rayo_grade_report *report);

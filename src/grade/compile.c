@@ -2,9 +2,11 @@
  * compile.c - the first criterion: the submission compiles with the
  * course's flags, `cc -std=c99 -Wall -Werror -pedantic ... -lm`.
  *
- * The compiler is the user's own (trusted) and runs in the current
- * directory, so its messages name the files as the user typed them; only
- * the program it makes goes into the temporary directory.  -g is added
+ * The compiler is the user's own and runs in the current directory, so
+ * its messages name the files as the user typed them; only the program
+ * it makes goes into the temporary directory.  In the sandbox it sees
+ * the system and the sources' folders only (an #include of /etc/shadow
+ * finds nothing).  -g is added
  * so valgrind can name lines; it changes no warning.  The report shows
  * the command word for word as it ran.  On failure the first messages
  * are quoted; when every error is a warning that -Werror made fatal that
@@ -18,8 +20,6 @@
 #include <string.h>
 
 #include "grade_impl.h"
-
-extern char **environ;
 
 #define COMPILE_SECONDS 120.0
 #define QUOTED_LINES 8
@@ -244,24 +244,21 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_COMPILE];
     size_t count = COURSE_FLAGS + 4 + ctx->source_count, i, n = 0;
     const char **words = malloc(count * sizeof *words);
-    char *out = grade_path_join(ctx->dir, "cc.out");
-    char *errpath = grade_path_join(ctx->dir, "cc.err");
     char **argv = NULL;
-    char *errors = NULL;
-    size_t size;
+    const char *errors;
     grade_limits limits = grade_compiler_limits(ctx->options,
                                                 COMPILE_SECONDS);
-    grade_outcome outcome;
+    grade_run run;
+    grade_captured got;
     rayo_status status = RAYO_ERR_NOMEM;
 
+    memset(&got, 0, sizeof got);
     {
         /* Found before forking: a failed exec looks different under
            debuggers and valgrind. */
         char *found = grade_which(ctx->cc[0]);
         if (found == NULL) {
             free(words);
-            free(out);
-            free(errpath);
             return grade_fail(item, err, "could not run the compiler '%s': "
                                          "not found or not executable (set "
                                          "CC or --cc)",
@@ -270,8 +267,7 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
         free(found);
     }
     ctx->program = grade_path_join(ctx->dir, "programa");
-    if (words == NULL || out == NULL || errpath == NULL ||
-        ctx->program == NULL) {
+    if (words == NULL || ctx->program == NULL) {
         rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
         goto done;
     }
@@ -281,20 +277,23 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
     words[n++] = "-o";
     words[n++] = ctx->program;
     for (i = 0; i < ctx->source_count; i++)
-        words[n++] = ctx->sources[i];
+        words[n++] = ctx->compiled[i];
     words[n++] = "-lm";
     argv = grade_cc_argv(ctx, words, n);
     if (argv == NULL) {
         rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
         goto done;
     }
-    status = grade_process_run(argv, environ, ".", out, errpath, &limits, 1,
-                               &outcome, err);
-    if (status == RAYO_OK)
-        status = grade_read_file(errpath, 1u << 20, &errors, &size, err);
+    memset(&run, 0, sizeof run);
+    run.argv = argv;
+    run.search = 1;
+    run.role = GRADE_ROLE_TOOL;
+    run.out_limit = 1u << 20;
+    status = grade_spawn(ctx, &run, &limits, &got, err);
     if (status != RAYO_OK)
         goto done;
-    if (outcome.ending == GRADE_EXITED && outcome.status == 0) {
+    errors = got.errors != NULL ? got.errors : "";
+    if (got.outcome.ending == GRADE_EXITED && got.outcome.status == 0) {
         item->result = RAYO_GRADE_PASS;
         status = say_command(ctx, item, argv, err);
         if (status == RAYO_OK && errors[0] != '\0')
@@ -303,15 +302,13 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
         if (status == RAYO_OK && errors[0] != '\0')
             status = grade_quote(item, errors, QUOTED_LINES, err);
     } else {
-        status = explain_failure(ctx, errors, &outcome, argv, err);
+        status = explain_failure(ctx, errors, &got.outcome, argv, err);
         free(ctx->program);
         ctx->program = NULL;
     }
 done:
-    free(errors);
+    grade_captured_free(&got);
     free(argv);
     free(words);
-    free(out);
-    free(errpath);
     return status;
 }

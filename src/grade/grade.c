@@ -5,15 +5,19 @@
  * check; one that hung is not run again under valgrind).
  *
  * The reference is loaded before anything runs, so a bad --reference
- * is a usage error, not a failed grade.  The temporary directory is
- * removed on every path out.
+ * is a usage error, not a failed grade; before that, the sandbox is
+ * chosen (sandbox.c) and the report says how the submission is
+ * isolated.  The temporary directory is removed on every path out.
  */
 #define _XOPEN_SOURCE 700
 
 #include <errno.h>
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "rayo/pbm_check.h"
 #include "rayo/reader.h"
@@ -30,6 +34,8 @@ void rayo_grade_options_init(rayo_grade_options *options)
     options->output_limit = (uint64_t)64 << 20;
     options->processes = 64;
     options->valgrind = 1;
+    options->sandbox = RAYO_GRADE_SANDBOX_AUTO;
+    options->disk = (uint64_t)256 << 20;
 }
 
 static void skip(grade_context *ctx, rayo_grade_criterion c,
@@ -63,18 +69,89 @@ static rayo_status split_cc(grade_context *ctx, rayo_error *err)
     return RAYO_OK;
 }
 
+/* The sources' absolute names: the real path of each one's folder and
+   its own name (the sandbox binds that folder there), and the names the
+   compiler is given: as typed when, seen from the current directory,
+   they lead to the same place, else the absolute one. */
 static rayo_status absolute_sources(grade_context *ctx, rayo_error *err)
 {
     size_t i;
     ctx->absolute = calloc(ctx->source_count, sizeof *ctx->absolute);
-    if (ctx->absolute == NULL)
+    ctx->compiled = calloc(ctx->source_count, sizeof *ctx->compiled);
+    ctx->cwd = getcwd(NULL, 0);
+    if (ctx->absolute == NULL || ctx->compiled == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    if (ctx->cwd == NULL)
+        return rayo_error_set(err, RAYO_ERR_IO, "grade: the current "
+                                                "directory: %s",
+                              strerror(errno));
     for (i = 0; i < ctx->source_count; i++) {
-        ctx->absolute[i] = realpath(ctx->sources[i], NULL);
+        const char *typed = ctx->sources[i];
+        const char *slash = strrchr(typed, '/');
+        const char *base = slash != NULL ? slash + 1 : typed;
+        char *dir = slash == NULL ? strdup(".")
+                    : slash == typed ? strdup("/")
+                                     : strndup(typed, (size_t)(slash - typed));
+        char *real = dir != NULL ? realpath(dir, NULL) : NULL;
+        char *lexical;
+        free(dir);
+        if (real == NULL)
+            return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", typed,
+                                  strerror(errno));
+        ctx->absolute[i] = strcmp(real, "/") == 0
+                               ? grade_concat("/", base)
+                               : grade_path_join(real, base);
+        free(real);
         if (ctx->absolute[i] == NULL)
-            return rayo_error_set(err, RAYO_ERR_IO, "%s: %s",
-                                  ctx->sources[i], strerror(errno));
+            return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+        lexical = typed[0] == '/' ? strdup(typed)
+                                  : grade_path_join(ctx->cwd, typed);
+        if (lexical == NULL)
+            return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+        ctx->compiled[i] = strcmp(lexical, ctx->absolute[i]) == 0
+                               ? strdup(typed)
+                               : strdup(ctx->absolute[i]);
+        free(lexical);
+        if (ctx->compiled[i] == NULL)
+            return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
     }
+    return RAYO_OK;
+}
+
+/* Decides how the runs are isolated and says so in the report. */
+static rayo_status choose_sandbox(grade_context *ctx, rayo_error *err)
+{
+    const rayo_grade_options *o = ctx->options;
+    rayo_grade_report *r = ctx->report;
+    r->isolated = rayo_grade_sandbox_check(o, r->isolation,
+                                           sizeof r->isolation);
+    if (o->sandbox == RAYO_GRADE_SANDBOX_OFF) {
+        snprintf(r->isolation, sizeof r->isolation, "off");
+        return RAYO_OK;
+    }
+    if (!r->isolated && o->sandbox == RAYO_GRADE_SANDBOX_REQUIRE)
+        return rayo_error_set(err, RAYO_ERR_INVALID, "grade: --sandbox="
+                                                     "require: %s",
+                              r->isolation);
+    if (r->isolated) {
+        ctx->sandboxed = 1;
+        ctx->bwrap = grade_which("bwrap");
+        if (ctx->bwrap == NULL)
+            return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of "
+                                                       "memory");
+    }
+    return RAYO_OK;
+}
+
+/* The program's folder inside the temporary directory. */
+static rayo_status make_work(grade_context *ctx, rayo_error *err)
+{
+    ctx->work = grade_path_join(ctx->dir, "work");
+    if (ctx->work == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    if (mkdir(ctx->work, 0700) != 0)
+        return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", ctx->work,
+                              strerror(errno));
     return RAYO_OK;
 }
 
@@ -182,13 +259,17 @@ rayo_status rayo_grade(const rayo_grade_options *options,
     ctx.report = report;
     ctx.sources = options->sources;
     ctx.source_count = options->source_count;
-    status = load_reference(options, &reference, err);
+    status = choose_sandbox(&ctx, err);
+    if (status == RAYO_OK)
+        status = load_reference(options, &reference, err);
     if (status == RAYO_OK)
         status = absolute_sources(&ctx, err);
     if (status == RAYO_OK)
         status = split_cc(&ctx, err);
     if (status == RAYO_OK)
         status = grade_tempdir_create(&ctx.dir, err);
+    if (status == RAYO_OK)
+        status = make_work(&ctx, err);
     if (status == RAYO_OK)
         status = run_steps(&ctx, &reference, err);
     if (status == RAYO_OK)
@@ -197,6 +278,12 @@ rayo_status rayo_grade(const rayo_grade_options *options,
     for (i = 0; ctx.absolute != NULL && i < ctx.source_count; i++)
         free(ctx.absolute[i]);
     free(ctx.absolute);
+    for (i = 0; ctx.compiled != NULL && i < ctx.source_count; i++)
+        free(ctx.compiled[i]);
+    free(ctx.compiled);
+    free(ctx.cwd);
+    free(ctx.work);
+    free(ctx.bwrap);
     if (ctx.cc != NULL && ctx.cc_words > 0)
         free(ctx.cc[0]);
     free(ctx.cc);

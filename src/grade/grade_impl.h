@@ -37,17 +37,25 @@ rayo_status grade_quote(rayo_grade_item *item, const char *text,
 
 /* tempdir.c */
 rayo_status grade_tempdir_create(char **path, rayo_error *err);
-/* Removes the directory and everything in it; frees path. */
+/* Removes the directory and everything in it with descriptor-relative
+   calls (no symbolic link followed, no PATH_MAX limit, any depth);
+   frees path. */
 void grade_tempdir_remove(char *path);
 /* dir + "/" + name, allocated; NULL when memory runs out. */
 char *grade_path_join(const char *dir, const char *name);
 /* a + b, allocated; NULL when memory runs out. */
 char *grade_concat(const char *a, const char *b);
-/* Reads a whole file (at most limit bytes) into a NUL-terminated buffer. */
+/* Reads a whole file (at most limit bytes) into a NUL-terminated buffer;
+   opened without following a symbolic link, without blocking, and only
+   when it is a regular file. */
 rayo_status grade_read_file(const char *path, uint64_t limit, char **data,
                             size_t *size, rayo_error *err);
 rayo_status grade_write_file(const char *path, const char *text,
                              rayo_error *err);
+/* Reads descriptor fd (at most limit bytes) into a NUL-terminated
+   buffer; *cut when there was more. */
+rayo_status grade_read_fd(int fd, uint64_t limit, char **data, size_t *size,
+                          int *cut, rayo_error *err);
 
 /* process.c: one run of a program, its limits and what became of it. */
 typedef struct grade_limits {
@@ -70,20 +78,75 @@ typedef enum grade_ending {
 typedef struct grade_outcome {
     grade_ending ending;
     int status;
-    double seconds;   /* wall time */
+    double seconds;   /* wall time, the grader's clock */
 } grade_outcome;
 
+/* Who runs: the compiler (trusted tool) or the student's code. */
+typedef enum grade_role {
+    /* In the current directory with the caller's environment; in the
+       sandbox it sees the system, the sources' folders read-only and
+       the build folder (ctx->dir) writable. */
+    GRADE_ROLE_TOOL,
+    /* In the work folder (ctx->work; in the sandbox a fresh tmpfs of
+       options->disk bytes) with a minimal environment (PATH, HOME and
+       TMPDIR the work folder, LANG=C). */
+    GRADE_ROLE_STUDENT
+} grade_role;
+
+/* What to run and what to bring back. */
+typedef struct grade_run {
+    char *const *argv;    /* argv[0] a path, or a name on PATH (search) */
+    int search;
+    grade_role role;
+    const char *program;  /* STUDENT: the built file it runs (bound
+                             read-only into the sandbox at its path) */
+    uint64_t out_limit;   /* bytes of standard output kept */
+    int log_fd;           /* >= 3: a pipe handed to it as this descriptor
+                             is read while it runs (valgrind's log) */
+    int collect;          /* STUDENT: bring back the one image file
+                             (.pbm .pgm .ppm .pnm) it left in its folder */
+} grade_run;
+
+/* What came back.  Free with grade_captured_free. */
+typedef struct grade_captured {
+    grade_outcome outcome;
+    char *out;            /* standard output (at most out_limit bytes) */
+    size_t out_size;
+    char *errors;         /* standard error (at most 1 MiB) */
+    size_t errors_size;
+    char *log;            /* what came through log_fd (at most 16 MiB) */
+    size_t log_size;
+    int log_overflow;     /* more came than was kept */
+    char *file_name;      /* collect: the image file's name, or NULL */
+    char *file;           /* and its bytes (at most out_limit) */
+    size_t file_size;
+} grade_captured;
+
+struct grade_context;
+
 /*
- * Runs argv[0] (a path, or a name found on PATH when search is set) in
- * dir with standard input from /dev/null and standard output and error
- * into the files stdout_path and stderr_path.  env NULL: a minimal
- * environment (PATH, HOME=dir, TMPDIR=dir, LANG=C); else env.
+ * Runs one program under limits, inside the sandbox when ctx has one.
+ * Standard input is /dev/null; standard output and error go to unlinked
+ * files the grader opened (the program cannot swap them), read back
+ * into got.  The wall clock is the grader's: a run that ends after
+ * limits->wall seconds by that clock counts as timed out, whatever
+ * stopped the grader meanwhile.  Errors are the grader's own (no fork,
+ * a sandbox that could not be set up, cancelled).
  */
-rayo_status grade_process_run(char *const argv[], char *const env[],
-                              const char *dir, const char *stdout_path,
-                              const char *stderr_path,
-                              const grade_limits *limits, int search,
-                              grade_outcome *outcome, rayo_error *err);
+rayo_status grade_spawn(struct grade_context *ctx, const grade_run *run,
+                        const grade_limits *limits, grade_captured *got,
+                        rayo_error *err);
+void grade_captured_free(grade_captured *got);
+
+/* sandbox.c: whether the sandbox works (cached), and its command. */
+int grade_sandbox_available(char *why, size_t room);
+/* The bwrap words in front of run->argv, for ctx; NULL when memory runs
+   out.  Free with grade_words_free. */
+char **grade_sandbox_argv(const struct grade_context *ctx,
+                          const grade_run *run, int json_fd);
+void grade_words_free(char **words);
+/* The text rayo_grade_report.isolation holds for a working sandbox. */
+void grade_sandbox_describe(uint64_t disk, char *text, size_t room);
 
 /* The limits a student's program runs under (run.c). */
 grade_limits grade_run_limits(const rayo_grade_options *options);
@@ -101,9 +164,16 @@ const char *grade_signal_name(int signal_number);
 typedef struct grade_context {
     const rayo_grade_options *options;
     rayo_grade_report *report;
-    char *dir;          /* the temporary directory */
+    char *dir;          /* the temporary directory (the build folder) */
+    char *work;         /* dir/work: the program's folder */
+    int sandboxed;      /* runs go through bubblewrap (sandbox.c) */
+    char *bwrap;        /* its path */
+    char *cwd;          /* the current directory (the compiler's) */
     const char *const *sources; /* the student's files, as given */
     char **absolute;    /* the same, absolute (for #include) */
+    char **compiled;    /* the names the compiler is given: as typed, or
+                           absolute when the sandbox could not see them
+                           as typed */
     size_t source_count;
     char **cc;          /* the compiler command, split on spaces */
     size_t cc_words;

@@ -5,9 +5,10 @@
  * their expected values live in functions_ej1.c, functions_ej2.c and
  * functions_ej3.c; nothing here knows a function of the course.
  *
- * The compiler is trusted and runs in the current directory (as the
- * compile step's does); the harness is the student's code and runs in
- * the temporary directory under the program's limits.
+ * The compiler runs in the current directory (as the compile step's
+ * does); the harness is the student's code and runs in the program's
+ * folder under the program's limits; both in the sandbox when there is
+ * one (process.c).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -16,10 +17,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "harness.h"
-
-extern char **environ;
 
 #define COMPILE_SECONDS 120.0
 #define LOG_LIMIT (1u << 20)
@@ -66,26 +66,31 @@ rayo_status harness_cc(grade_context *ctx, const char *const *words,
                        rayo_error *err)
 {
     char **argv = grade_cc_argv(ctx, words, count);
-    char *out = grade_path_join(ctx->dir, "probe.out");
-    char *errpath = grade_path_join(ctx->dir, "probe.err");
     grade_limits limits = grade_compiler_limits(ctx->options,
                                                 COMPILE_SECONDS);
-    grade_outcome outcome;
-    size_t size;
+    grade_run run;
+    grade_captured got;
     rayo_status status;
     *errors = NULL;
-    if (argv == NULL || out == NULL || errpath == NULL)
+    memset(&got, 0, sizeof got);
+    memset(&run, 0, sizeof run);
+    run.argv = argv;
+    run.search = 1;
+    run.role = GRADE_ROLE_TOOL;
+    run.out_limit = LOG_LIMIT;
+    if (argv == NULL)
         status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
     else
-        status = grade_process_run(argv, environ, ".", out, errpath, &limits,
-                                   1, &outcome, err);
-    if (status == RAYO_OK)
-        status = grade_read_file(errpath, LOG_LIMIT, errors, &size, err);
-    if (status == RAYO_OK)
-        *ok = outcome.ending == GRADE_EXITED && outcome.status == 0;
+        status = grade_spawn(ctx, &run, &limits, &got, err);
+    if (status == RAYO_OK) {
+        *ok = got.outcome.ending == GRADE_EXITED && got.outcome.status == 0;
+        *errors = got.errors != NULL ? got.errors : strdup("");
+        got.errors = NULL;
+        if (*errors == NULL)
+            status = rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    }
+    grade_captured_free(&got);
     free(argv);
-    free(out);
-    free(errpath);
     return status;
 }
 
@@ -128,6 +133,30 @@ rayo_status harness_probe(grade_context *ctx, size_t i, const char *before,
                               err);
 }
 
+/* The name a probe includes source i by: its absolute path, or, when
+   that path holds a character that cannot stand in an #include's quotes
+   (a quote, a newline, a backslash: a folder of a class's archive can
+   hold any of them), a symbolic link to it beside the probe. */
+static const char *include_name(const grade_context *ctx, size_t i,
+                                char *name, size_t room)
+{
+    const char *path = ctx->absolute[i];
+    char *link;
+    if (strpbrk(path, "\"\\\n\r") == NULL)
+        return path;
+    snprintf(name, room, "source%zu.c", i);
+    link = grade_path_join(ctx->dir, name);
+    if (link == NULL)
+        return path;
+    unlink(link);
+    if (symlink(path, link) != 0) {
+        free(link);
+        return path;
+    }
+    free(link);
+    return name;
+}
+
 rayo_status harness_probe_full(grade_context *ctx, size_t i,
                                const char *before, const char *after,
                                int *ok, char *reason, size_t room,
@@ -141,8 +170,9 @@ rayo_status harness_probe_full(grade_context *ctx, size_t i,
     *ok = 0;
     if (path == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    harness_append(&t, "%s#include \"%s\"\n%s", before, ctx->absolute[i],
-                   after);
+    char name[32];
+    harness_append(&t, "%s#include \"%s\"\n%s", before,
+                   include_name(ctx, i, name, sizeof name), after);
     if (t.failed)
         status = rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     else
@@ -228,7 +258,8 @@ rayo_status harness_build(grade_context *ctx, const char *source,
         words[3] = "-c";
         words[4] = "-o";
         words[5] = objects[i];
-        words[6] = ctx->sources[i];
+        words[6] = ctx->compiled != NULL ? ctx->compiled[i]
+                                         : ctx->sources[i];
         free(*errors);
         status = harness_cc(ctx, words, 7, ok, errors, err);
     }
@@ -259,24 +290,32 @@ rayo_status harness_run(grade_context *ctx, char **log,
                         grade_outcome *outcome, rayo_error *err)
 {
     char *argv[2];
-    char *out = grade_path_join(ctx->dir, "harness.out");
-    char *errpath = grade_path_join(ctx->dir, "harness.err");
     grade_limits limits = grade_run_limits(ctx->options);
-    size_t size;
+    grade_run run;
+    grade_captured got;
     rayo_status status = RAYO_OK;
     *log = NULL;
+    memset(&got, 0, sizeof got);
     argv[0] = grade_path_join(ctx->dir, "harness");
     argv[1] = NULL;
-    if (argv[0] == NULL || out == NULL || errpath == NULL)
+    memset(&run, 0, sizeof run);
+    run.argv = argv;
+    run.role = GRADE_ROLE_STUDENT;
+    run.program = argv[0];
+    run.out_limit = LOG_LIMIT;
+    if (argv[0] == NULL)
         status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
     if (status == RAYO_OK)
-        status = grade_process_run(argv, NULL, ctx->dir, out, errpath,
-                                   &limits, 0, outcome, err);
-    if (status == RAYO_OK)
-        status = grade_read_file(out, LOG_LIMIT, log, &size, err);
+        status = grade_spawn(ctx, &run, &limits, &got, err);
+    if (status == RAYO_OK) {
+        *outcome = got.outcome;
+        *log = got.out != NULL ? got.out : strdup("");
+        got.out = NULL;
+        if (*log == NULL)
+            status = rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    }
+    grade_captured_free(&got);
     free(argv[0]);
-    free(out);
-    free(errpath);
     return status;
 }
 

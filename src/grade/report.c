@@ -3,8 +3,10 @@
  * names for criteria and results, the overall result, and freeing.
  *
  * Reasons are whole sentences for a student; the command decides how to
- * lay them out (text or JSON).  Nothing here knows what a criterion
- * checks.
+ * lay them out (text or JSON) and escapes their control bytes.  Every
+ * line is bounded here (a quoted line to 300 bytes, any line to 1000),
+ * so a program that prints megabyte-long lines gets them cut.  Nothing
+ * here knows what a criterion checks.
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -13,10 +15,33 @@
 
 #include "grade_impl.h"
 
+/* The most bytes a reason line keeps; longer ones are cut (at a UTF-8
+   character boundary) and end with "...". */
+#define LINE_BYTES 1000
+/* The most bytes of one quoted line (a compiler message, the program's
+   standard error). */
+#define QUOTE_BYTES 300
+
+/* Where to cut text of length n to at most room bytes without splitting
+   a UTF-8 sequence. */
+static size_t cut_at(const char *text, size_t n, size_t room)
+{
+    if (n <= room)
+        return n;
+    while (room > 0 && ((unsigned char)text[room] & 0xC0) == 0x80)
+        room--;
+    return room;
+}
+
 static rayo_status add_line(rayo_grade_item *item, char *line,
                             rayo_error *err)
 {
     char **grown;
+    size_t n = strlen(line);
+    if (n > LINE_BYTES) {
+        size_t keep = cut_at(line, n, LINE_BYTES - 3);
+        memcpy(line + keep, "...", 4);
+    }
     if (item->line_count >= ((size_t)-1) / sizeof *grown - 1) {
         free(line);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: too many lines");
@@ -89,8 +114,10 @@ rayo_status grade_quote(rayo_grade_item *item, const char *text,
         if (length > 0) {
             total++;
             if (shown < max) {
+                size_t keep = cut_at(p, length, QUOTE_BYTES);
                 rayo_status status =
-                    grade_say(item, err, "  %.*s", (int)length, p);
+                    grade_say(item, err, "  %.*s%s", (int)keep, p,
+                              keep < length ? "..." : "");
                 if (status != RAYO_OK)
                     return status;
                 shown++;

@@ -10,7 +10,6 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
-#include <dirent.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,38 +17,6 @@
 #include "grade_impl.h"
 
 #define QUOTED_LINES 5
-
-static int is_image_name(const char *name)
-{
-    static const char *const extensions[] = {".pbm", ".pgm", ".ppm", ".pnm"};
-    size_t n = strlen(name), i;
-    if (n < 5 || name[0] == '.')
-        return 0;
-    for (i = 0; i < 4; i++)
-        if (strcmp(name + n - 4, extensions[i]) == 0)
-            return 1;
-    return 0;
-}
-
-/* The one image file the program left in dir, or NULL. */
-static char *find_image_file(const char *dir)
-{
-    DIR *d = opendir(dir);
-    struct dirent *entry;
-    char *found = NULL;
-    int count = 0;
-    if (d == NULL)
-        return NULL;
-    while ((entry = readdir(d)) != NULL)
-        if (is_image_name(entry->d_name) && count++ == 0)
-            found = strdup(entry->d_name);
-    closedir(d);
-    if (count != 1) {
-        free(found);
-        return NULL;
-    }
-    return found;
-}
 
 static rayo_status say_ending(grade_context *ctx,
                               const grade_outcome *outcome,
@@ -92,38 +59,29 @@ static rayo_status say_ending(grade_context *ctx,
 }
 
 /* Takes the output from standard output, or from the file it wrote. */
-static rayo_status collect_output(grade_context *ctx, rayo_error *err)
+static rayo_status collect_output(grade_context *ctx, grade_captured *got,
+                                  rayo_error *err)
 {
-    char *path = grade_path_join(ctx->dir, "stdout");
-    char *file = NULL;
-    rayo_status status;
-    if (path == NULL)
-        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    status = grade_read_file(path, ctx->options->output_limit, &ctx->output,
-                             &ctx->output_size, err);
-    free(path);
-    if (status != RAYO_OK || ctx->output_size > 0)
-        return status;
-    file = find_image_file(ctx->dir);
-    if (file == NULL)
+    if (got->out_size > 0 || got->file_name == NULL) {
+        ctx->output = got->out != NULL ? got->out : calloc(1, 1);
+        ctx->output_size = got->out_size;
+        got->out = NULL;
+        if (ctx->output == NULL)
+            return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
         return RAYO_OK;
-    path = grade_path_join(ctx->dir, file);
-    if (path == NULL) {
-        free(file);
-        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
     }
-    free(ctx->output);
-    ctx->output = NULL;
-    status = grade_read_file(path, ctx->options->output_limit, &ctx->output,
-                             &ctx->output_size, err);
-    if (status == RAYO_OK)
-        status = grade_say(&ctx->report->items[RAYO_GRADE_RUN], err,
-                           "warning: wrote nothing on standard output but "
-                           "wrote the file '%s'; that file was checked",
-                           file);
-    free(path);
-    free(file);
-    return status;
+    ctx->output = got->file;
+    ctx->output_size = got->file_size;
+    got->file = NULL;
+    if (ctx->output == NULL) {
+        ctx->output = calloc(1, 1);
+        if (ctx->output == NULL)
+            return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    }
+    return grade_say(&ctx->report->items[RAYO_GRADE_RUN], err,
+                     "warning: wrote nothing on standard output but wrote "
+                     "the file '%s'; that file was checked",
+                     got->file_name);
 }
 
 grade_limits grade_compiler_limits(const rayo_grade_options *o,
@@ -151,38 +109,33 @@ rayo_status grade_step_run(grade_context *ctx, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_RUN];
     char *argv[2];
-    char *out = grade_path_join(ctx->dir, "stdout");
-    char *errpath = grade_path_join(ctx->dir, "stderr");
-    char *errors = NULL;
-    size_t size;
     grade_limits limits = grade_run_limits(ctx->options);
-    grade_outcome outcome;
+    grade_run run;
+    grade_captured got;
     rayo_status status;
     argv[0] = ctx->program;
     argv[1] = NULL;
-    if (out == NULL || errpath == NULL) {
-        free(out);
-        free(errpath);
-        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    }
-    status = grade_process_run(argv, NULL, ctx->dir, out, errpath, &limits,
-                               0, &outcome, err);
-    if (status == RAYO_OK)
-        status = say_ending(ctx, &outcome, err);
-    ctx->stopped = outcome.ending == GRADE_TIMED_OUT ||
-                   (outcome.ending == GRADE_SIGNALED &&
-                    (outcome.status == SIGXCPU || outcome.status == SIGXFSZ ||
-                     outcome.status == SIGKILL));
-    if (status == RAYO_OK)
-        status = grade_read_file(errpath, 1u << 20, &errors, &size, err);
-    if (status == RAYO_OK && size > 0)
+    memset(&run, 0, sizeof run);
+    run.argv = argv;
+    run.role = GRADE_ROLE_STUDENT;
+    run.program = ctx->program;
+    run.out_limit = ctx->options->output_limit;
+    run.collect = 1;
+    status = grade_spawn(ctx, &run, &limits, &got, err);
+    if (status != RAYO_OK)
+        return status;
+    status = say_ending(ctx, &got.outcome, err);
+    ctx->stopped = got.outcome.ending == GRADE_TIMED_OUT ||
+                   (got.outcome.ending == GRADE_SIGNALED &&
+                    (got.outcome.status == SIGXCPU ||
+                     got.outcome.status == SIGXFSZ ||
+                     got.outcome.status == SIGKILL));
+    if (status == RAYO_OK && got.errors_size > 0)
         status = grade_say(item, err, "it printed on standard error:");
-    if (status == RAYO_OK && size > 0)
-        status = grade_quote(item, errors, QUOTED_LINES, err);
+    if (status == RAYO_OK && got.errors_size > 0)
+        status = grade_quote(item, got.errors, QUOTED_LINES, err);
     if (status == RAYO_OK && item->result == RAYO_GRADE_PASS)
-        status = collect_output(ctx, err);
-    free(errors);
-    free(out);
-    free(errpath);
+        status = collect_output(ctx, &got, err);
+    grade_captured_free(&got);
     return status;
 }

@@ -4,14 +4,17 @@
  * the grading ends, and the small file helpers the steps use inside it.
  *
  * Removal does not follow symbolic links (a student's program that
- * links to /home is not a way to delete /home) and makes directories
- * writable before emptying them.  It is not a general file utility.
+ * links to /home is not a way to delete /home), works relative to open
+ * directories (no PATH_MAX limit) and makes directories writable before
+ * emptying them.  Files are opened without following links or blocking
+ * on a FIFO, and read only when regular.  It is not a general file
+ * utility.
  */
 #define _XOPEN_SOURCE 700
 
 #include <errno.h>
 #include <fcntl.h>
-#include <ftw.h>
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -69,81 +72,139 @@ rayo_status grade_tempdir_create(char **path, rayo_error *err)
     return RAYO_OK;
 }
 
-static int remove_entry(const char *path, const struct stat *st, int type,
-                        struct FTW *where)
-{
-    (void)st;
-    (void)where;
-    if (type == FTW_DP || type == FTW_D)
-        rmdir(path);
-    else
-        unlink(path);
-    return 0;
-}
+/*
+ * Removal.  Every call is relative to an open directory (openat,
+ * unlinkat, fdopendir), so no path is ever longer than one name and no
+ * symbolic link is followed: a program that nests folders past PATH_MAX
+ * or links to /home removes only what it made.  A folder deeper than
+ * MAX_DEPTH below the top is moved up to the top first (renameat), so
+ * the descriptors held stay few however deep it goes.
+ */
+#define MAX_DEPTH 16
 
-/* A student may leave directories without write or search permission. */
-static int open_up(const char *path, const struct stat *st, int type,
-                   struct FTW *where)
+static unsigned long moved_count;
+
+/* Empties the directory open as fd (owned; closed here). */
+static void empty_dir(int top, int fd, int depth)
 {
-    (void)where;
-    if (type == FTW_D || type == FTW_DNR)
-        chmod(path, (st->st_mode & 07777) | S_IRWXU);
-    return 0;
+    DIR *d;
+    int progress = 1;
+    fchmod(fd, S_IRWXU);
+    d = fdopendir(fd);
+    if (d == NULL) {
+        close(fd);
+        return;
+    }
+    while (progress) {
+        struct dirent *entry;
+        progress = 0;
+        rewinddir(d);
+        while ((entry = readdir(d)) != NULL) {
+            const char *name = entry->d_name;
+            int child;
+            if (strcmp(name, ".") == 0 || strcmp(name, "..") == 0)
+                continue;
+            if (unlinkat(dirfd(d), name, 0) == 0 ||
+                unlinkat(dirfd(d), name, AT_REMOVEDIR) == 0) {
+                progress = 1;
+                continue;
+            }
+            if (depth >= MAX_DEPTH) {
+                char flat[64];
+                snprintf(flat, sizeof flat, ".rayo-deep-%lu", moved_count++);
+                if (renameat(dirfd(d), name, top, flat) == 0)
+                    progress = 1;
+                continue;
+            }
+            child = openat(dirfd(d), name,
+                           O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_NONBLOCK);
+            if (child < 0) {
+                /* A folder without search or read permission. */
+                if (fchmodat(dirfd(d), name, S_IRWXU, 0) == 0)
+                    child = openat(dirfd(d), name,
+                                   O_RDONLY | O_DIRECTORY | O_NOFOLLOW |
+                                       O_NONBLOCK);
+                if (child < 0)
+                    continue;
+            }
+            empty_dir(top, child, depth + 1);
+            if (unlinkat(dirfd(d), name, AT_REMOVEDIR) == 0)
+                progress = 1;
+        }
+    }
+    closedir(d);
 }
 
 void grade_tempdir_remove(char *path)
 {
+    int top, again;
     if (path == NULL)
         return;
     chmod(path, S_IRWXU);
-    nftw(path, open_up, 16, FTW_PHYS);
-    nftw(path, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+    do {
+        unsigned long before = moved_count;
+        top = open(path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW);
+        if (top < 0)
+            break;
+        {
+            int fd = dup(top);
+            if (fd >= 0)
+                empty_dir(top, fd, 0);
+        }
+        close(top);
+        /* Folders moved up to the top are emptied on the next pass. */
+        again = moved_count != before;
+    } while (again);
+    rmdir(path);
     free(path);
 }
 
-rayo_status grade_read_file(const char *path, uint64_t limit, char **data,
-                            size_t *size, rayo_error *err)
+rayo_status grade_read_fd(int fd, uint64_t limit, char **data, size_t *size,
+                          int *cut, rayo_error *err)
 {
-    FILE *file = fopen(path, "rb");
     char *buffer = NULL;
     size_t length = 0, capacity = 0;
-    if (file == NULL)
-        return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
-                              strerror(errno));
+    *cut = 0;
     for (;;) {
-        size_t got;
+        ssize_t got;
         if (capacity - length < 4096) {
             char *grown;
-            if (capacity > limit || capacity > ((size_t)-1) / 2 - 8192)
+            if (capacity > limit || capacity > ((size_t)-1) / 2 - 8192) {
+                char probe;
+                *cut = read(fd, &probe, 1) == 1;
                 break;
+            }
             capacity = capacity * 2 + 8192;
             grown = realloc(buffer, capacity + 1);
             if (grown == NULL) {
                 free(buffer);
-                fclose(file);
                 return rayo_error_set(err, RAYO_ERR_NOMEM,
-                                      "%s: out of memory", path);
+                                      "grade: out of memory");
             }
             buffer = grown;
         }
-        got = fread(buffer + length, 1, capacity - length, file);
-        length += got;
+        got = read(fd, buffer + length, capacity - length);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got < 0) {
+            rayo_status status = rayo_error_set(err, RAYO_ERR_IO,
+                                                "grade: read: %s",
+                                                strerror(errno));
+            free(buffer);
+            return status;
+        }
         if (got == 0)
             break;
+        length += (size_t)got;
     }
-    if (ferror(file)) {
-        rayo_status status = rayo_error_set(err, RAYO_ERR_IO, "%s: %s",
-                                            path, strerror(errno));
-        free(buffer);
-        fclose(file);
-        return status;
+    if (length > limit) {
+        length = (size_t)limit;
+        *cut = 1;
     }
-    fclose(file);
     if (buffer == NULL) {
         buffer = malloc(1);
         if (buffer == NULL)
-            return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
-                                  path);
+            return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
     }
     buffer[length] = '\0';
     *data = buffer;
@@ -151,20 +212,54 @@ rayo_status grade_read_file(const char *path, uint64_t limit, char **data,
     return RAYO_OK;
 }
 
+rayo_status grade_read_file(const char *path, uint64_t limit, char **data,
+                            size_t *size, rayo_error *err)
+{
+    int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK);
+    struct stat st;
+    int cut;
+    rayo_status status;
+    if (fd < 0)
+        return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
+                              strerror(errno));
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        return rayo_error_set(err, RAYO_ERR_IO, "%s: not a regular file",
+                              path);
+    }
+    status = grade_read_fd(fd, limit, data, size, &cut, err);
+    close(fd);
+    return status;
+}
+
 rayo_status grade_write_file(const char *path, const char *text,
                              rayo_error *err)
 {
-    FILE *file = fopen(path, "w");
-    size_t length = strlen(text);
-    if (file == NULL)
+    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_NONBLOCK,
+                  0600);
+    size_t length = strlen(text), done = 0;
+    struct stat st;
+    if (fd < 0)
         return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
                               strerror(errno));
-    if (fwrite(text, 1, length, file) != length) {
-        fclose(file);
-        return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
-                              strerror(errno));
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        return rayo_error_set(err, RAYO_ERR_IO, "%s: not a regular file",
+                              path);
     }
-    if (fclose(file) != 0)
+    while (done < length) {
+        ssize_t put = write(fd, text + done, length - done);
+        if (put < 0 && errno == EINTR)
+            continue;
+        if (put <= 0) {
+            rayo_status status = rayo_error_set(err, RAYO_ERR_IO, "%s: %s",
+                                                path, strerror(errno));
+            close(fd);
+            return status;
+        }
+        done += (size_t)put;
+    }
+    if (close(fd) != 0)
         return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
                               strerror(errno));
     return RAYO_OK;

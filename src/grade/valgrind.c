@@ -8,8 +8,15 @@
  * The program runs again, under the same limits except address space
  * (valgrind reserves far more than the program uses) and with ten times
  * the time (memcheck is that much slower); memcheck writes its log into
- * the temporary directory and this file reads the log's words, not its
- * exit status.  Skipped when valgrind is not installed.
+ * a pipe the grader reads while it runs (descriptor 3: no file the
+ * program could replace or point at /dev/null) and this file reads the
+ * log's words, not its exit status.  The program shares valgrind's
+ * process and so can write into that pipe too, but a pipe cannot be
+ * rewound or truncated: what valgrind wrote stays, and the log is read
+ * so that added lines can only add findings (every error line counts,
+ * the largest leak and error counts win).  Programs it executes run
+ * under valgrind too (--trace-children=yes).  Skipped when valgrind is
+ * not installed.
  *
  * Where the frame valgrind names is one of the constructors exercise 3's
  * statement gives (esfera_crear, luz_crear, arreglo_agregar), the
@@ -20,6 +27,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,6 +35,7 @@
 #include "grade_impl.h"
 
 #define SLOWDOWN 10.0
+#define LOG_FD 3 /* valgrind's log, a pipe the grader reads */
 #define SHOWN_ERRORS 4
 
 /* A statement's constructor, and what a leak of its blocks means. */
@@ -103,30 +112,58 @@ static void first_frame(const char *p, char *out, size_t room)
     }
 }
 
+/* The largest "KIND: N bytes in M blocks" anywhere in the log: a line
+   the program forged into the log cannot hide a larger real one. */
 static unsigned long long leak_bytes(const char *log, const char *kind,
                                      unsigned long long *blocks)
 {
-    const char *summary = strstr(log, "LEAK SUMMARY");
-    const char *p = summary != NULL ? strstr(summary, kind) : NULL;
-    unsigned long long bytes = 0;
-    char number[64];
-    size_t i, n = 0;
+    const char *p = log;
+    unsigned long long most = 0;
+    size_t length = strlen(kind);
     *blocks = 0;
-    if (p == NULL)
-        return 0;
-    p += strlen(kind);
-    /* "   1,234 bytes in 5 blocks": valgrind groups digits with commas. */
-    while (*p == ' ' || *p == ':')
-        p++;
-    for (i = 0; p[i] != '\0' && p[i] != ' ' && n + 1 < sizeof number; i++)
-        if (p[i] != ',')
-            number[n++] = p[i];
-    number[n] = '\0';
-    bytes = strtoull(number, NULL, 10);
-    p = strstr(p, " in ");
-    if (p != NULL)
-        *blocks = strtoull(p + 4, NULL, 10);
-    return bytes;
+    while ((p = strstr(p, kind)) != NULL) {
+        unsigned long long bytes, count = 0;
+        const char *q;
+        char number[64];
+        size_t i, n = 0;
+        p += length;
+        if (*p != ':')
+            continue;
+        /* "   1,234 bytes in 5 blocks": valgrind groups digits with
+           commas. */
+        while (*p == ' ' || *p == ':')
+            p++;
+        for (i = 0; p[i] != '\0' && p[i] != ' ' && n + 1 < sizeof number;
+             i++)
+            if (p[i] != ',')
+                number[n++] = p[i];
+        number[n] = '\0';
+        bytes = strtoull(number, NULL, 10);
+        q = strstr(p, " in ");
+        if (q != NULL && q - p < 40)
+            count = strtoull(q + 4, NULL, 10);
+        if (bytes > most) {
+            most = bytes;
+            *blocks = count;
+        }
+    }
+    return most;
+}
+
+/* The largest count in an "ERROR SUMMARY: N errors" line; -1 when the
+   log has none. */
+static long long summary_errors(const char *log)
+{
+    const char *p = log;
+    long long most = -1;
+    while ((p = strstr(p, "ERROR SUMMARY: ")) != NULL) {
+        long long n;
+        p += strlen("ERROR SUMMARY: ");
+        n = strtoll(p, NULL, 10);
+        if (n > most)
+            most = n;
+    }
+    return most;
 }
 
 static rayo_status report_errors(rayo_grade_item *item, const char *log,
@@ -232,13 +269,14 @@ static rayo_status report_leaks(rayo_grade_item *item, const char *log,
     return status;
 }
 
-static rayo_status read_log(grade_context *ctx, const char *path,
-                            const grade_outcome *outcome, rayo_error *err)
+static rayo_status read_log(grade_context *ctx, const grade_captured *got,
+                            rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_VALGRIND];
-    char *log = NULL;
-    size_t size;
+    const grade_outcome *outcome = &got->outcome;
+    const char *log = got->log != NULL ? got->log : "";
     unsigned errors;
+    long long counted;
     int leaked;
     rayo_status status;
     if (outcome->ending == GRADE_TIMED_OUT) {
@@ -247,25 +285,33 @@ static rayo_status read_log(grade_context *ctx, const char *path,
                                     "%g seconds",
                          ctx->options->timeout * SLOWDOWN);
     }
-    status = grade_read_file(path, 1u << 24, &log, &size, err);
-    if (status != RAYO_OK)
-        return status;
+    if (got->log_overflow)
+        return grade_fail(item, err, "valgrind's log grew past 16 MiB, far "
+                                     "more than valgrind writes: the "
+                                     "program wrote into it");
+    if (outcome->ending == GRADE_SIGNALED && outcome->status == SIGKILL)
+        return grade_fail(item, err, "the program was killed (SIGKILL) "
+                                     "under valgrind before valgrind could "
+                                     "check it");
     item->result = RAYO_GRADE_PASS;
-    if (strstr(log, "ERROR SUMMARY") == NULL) {
+    counted = summary_errors(log);
+    if (counted < 0) {
         item->result = RAYO_GRADE_SKIPPED;
         status = grade_say(item, err, "valgrind did not run to the end; its "
                                       "log says:");
         if (status == RAYO_OK)
             status = grade_quote(item, log, 4, err);
-        free(log);
         return status;
     }
     status = report_errors(item, log, &errors, err);
     if (status == RAYO_OK)
         status = report_leaks(item, log, &leaked, err);
+    /* Leaks count as errors in valgrind's summary. */
+    if (status == RAYO_OK && errors == 0 && !leaked && counted > 0)
+        status = grade_fail(item, err, "valgrind counted %lld errors",
+                            counted);
     if (status == RAYO_OK && item->result == RAYO_GRADE_PASS)
         status = grade_say(item, err, "no invalid access and no leak");
-    free(log);
     return status;
 }
 
@@ -273,39 +319,37 @@ rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_VALGRIND];
     char *valgrind = grade_which("valgrind");
-    char *log = grade_path_join(ctx->dir, "valgrind.log");
-    char *out = grade_path_join(ctx->dir, "valgrind.out");
-    char *errpath = grade_path_join(ctx->dir, "valgrind.err");
-    char *log_option = log != NULL ? grade_concat("--log-file=", log) : NULL;
-    char *argv[7];
+    char log_option[32];
+    char *argv[8];
     grade_limits limits = grade_run_limits(ctx->options);
-    grade_outcome outcome;
+    grade_run run;
+    grade_captured got;
     rayo_status status = RAYO_OK;
-    if (log == NULL || out == NULL || errpath == NULL || log_option == NULL)
-        status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    else if (valgrind == NULL)
-        status = grade_say(item, err, "valgrind is not installed");
-    if (status != RAYO_OK || valgrind == NULL)
-        goto done;
+    memset(&got, 0, sizeof got);
+    if (valgrind == NULL)
+        return grade_say(item, err, "valgrind is not installed");
+    snprintf(log_option, sizeof log_option, "--log-fd=%d", LOG_FD);
     argv[0] = valgrind;
     argv[1] = "--leak-check=full";
     argv[2] = "--show-leak-kinds=all";
     argv[3] = "--num-callers=12";
-    argv[4] = log_option;
-    argv[5] = ctx->program;
-    argv[6] = NULL;
+    argv[4] = "--trace-children=yes";
+    argv[5] = log_option;
+    argv[6] = ctx->program;
+    argv[7] = NULL;
     limits.wall *= SLOWDOWN;
     limits.cpu *= SLOWDOWN;
     limits.memory = 0;
-    status = grade_process_run(argv, NULL, ctx->dir, out, errpath, &limits, 0,
-                               &outcome, err);
+    memset(&run, 0, sizeof run);
+    run.argv = argv;
+    run.role = GRADE_ROLE_STUDENT;
+    run.program = ctx->program;
+    run.out_limit = 1u << 20;
+    run.log_fd = LOG_FD;
+    status = grade_spawn(ctx, &run, &limits, &got, err);
     if (status == RAYO_OK)
-        status = read_log(ctx, log, &outcome, err);
-done:
+        status = read_log(ctx, &got, err);
+    grade_captured_free(&got);
     free(valgrind);
-    free(log);
-    free(out);
-    free(errpath);
-    free(log_option);
     return status;
 }

@@ -36,7 +36,10 @@ ok $? "-j 3: the same table as -j 1, byte for byte"
 run_capture grade $NV --jobs 2 --each "$TMP/class"
 cmp -s "$TMP/table1" "$TMP/out"
 ok $? "--jobs 2: the same table as -j 1"
-is "$(grep -c '' "$TMP/table1")" 11 "the table: a header, 8 rows, a blank line, the tally"
+is "$(grep -c '' "$TMP/table1")" 12 \
+    "the table: how it was isolated, a header, 8 rows, a blank line, the tally"
+head -n 1 "$TMP/table1" | grep -Eq '^(sandbox: bubblewrap|warning: not isolated)'
+ok $? "the table's first line: the sandbox, or a warning that there is none"
 is "$(tail -n 1 "$TMP/table1")" "2 of 8 submissions passed" "the tally"
 
 # The JSON, but for the run's time (which differs from run to run).
@@ -103,16 +106,18 @@ is "$(jq -r '[.tests[].score] | add' "$TMP/results.json")" 60 \
 is "$(jq -r '[.tests[] | .name + "=" + (.max_score|tostring) + ":" + .status] | join(" ")' "$TMP/results.json")" \
     "compile=10:passed functions=20:passed run=10:passed output=10:passed image=40:failed valgrind=10:passed" \
     "--gradescope: a test per criterion, its points and status"
+jq -r '.output | split("\n")[1]' "$TMP/results.json" | grep -Eq '^(sandbox: bubblewrap|warning: not isolated)'
+ok $? "--gradescope: the output's second line says how the submission was isolated"
 jq -r '.tests[] | select(.name == "image") | .output' "$TMP/results.json" >"$TMP/image.txt"
 grep -q 'tan() takes radians' "$TMP/image.txt"
 ok $? "--gradescope: the image test's output explains the mistake"
-is "$(jq -r '.output' "$TMP/results.json")" "FAIL: 60 of 100 points" \
+is "$(jq -r '.output | split("\n")[0]' "$TMP/results.json")" "FAIL: 60 of 100 points" \
     "--gradescope: the summary"
 run_capture grade $NV "$STUDENTS/correct" --gradescope -
-is "$(jq -r '.score, (.tests | length), .output' "$TMP/out" | tr '\n' ' ')" "90 5 PASS: 90 of 90 points " \
+is "$(jq -r '.score, (.tests | length), (.output | split("\n")[0])' "$TMP/out" | tr '\n' ' ')" "90 5 PASS: 90 of 90 points " \
     "--gradescope - with --no-valgrind: valgrind left out, 90 of 90 points"
 run_capture grade $NV "$STUDENTS/correct" --gradescope - --points valgrind=10
-is "$(jq -r '.score, .output' "$TMP/out" | tr '\n' ' ')" "90 PASS: 90 of 100 points " \
+is "$(jq -r '.score, (.output | split("\n")[0])' "$TMP/out" | tr '\n' ' ')" "90 PASS: 90 of 100 points " \
     "--gradescope - with --no-valgrind and --points valgrind=10: the points are lost"
 run_capture grade $NV "$TMP/class/zz_\"empty" --gradescope "$TMP/empty.json"
 is "$status" 2 "--gradescope, a folder with no C file: exit 2"
@@ -145,5 +150,15 @@ run_capture grade $NV "$STUDENTS/correct" --csv "$TMP/no/such/dir/x.csv"
 is "$status" 1 "--csv into a missing folder: exit 1"
 grep -q 'x.csv' "$TMP/err"
 ok $? "--csv into a missing folder: the message names the file"
+
+# A folder of an archive may be named anything: a quote and a newline in
+# its name do not stop the functions' harness from including its source.
+q=$(printf 'q"uo\nte')
+mkdir "$TMP/$q"
+cp "$STUDENTS/correct/main.c" "$TMP/$q/"
+run_capture grade $NV "$TMP/$q"
+is "$status" 0 "a folder named with a quote and a newline: graded, and it passes"
+grep -q '^functions  pass' "$TMP/out"
+ok $? "a folder named with a quote and a newline: the functions criterion passes"
 
 done_testing

@@ -58,7 +58,7 @@ ok $? "missing source: the file and the system's reason"
 run_capture grade --help
 is "$status" 0 "--help: exit 0"
 says '^  ej1 ' "--help lists the exercises"
-says 'not a.*sandbox' "--help says the limits are not a sandbox"
+says '^      --sandbox MODE +auto' "--help names the sandbox's modes"
 
 # ---- submissions of several files, or a folder ----
 mkdir "$TMP/multi"
