@@ -117,7 +117,7 @@ function siteBytes(dir) {
 }
 
 async function main() {
-  console.log('1..26');
+  console.log('1..32');
   const seed = setup();
   const size = siteBytes(WEB);
   ok(size <= 3 * 1024 * 1024, `build/web/ is ${size} bytes, at most 3 MiB`);
@@ -134,7 +134,7 @@ async function main() {
     server.kill();
     fs.rmSync(tmp, { recursive: true, force: true });
   }
-  if (count !== 26) ok(false, `planned 26 tests, ran ${count}`);
+  if (count !== 32) ok(false, `planned 32 tests, ran ${count}`);
   process.exitCode = failed ? 1 : 0;
 }
 
@@ -221,12 +221,13 @@ async function run(browser, origin, seed) {
   renders.sort((a, b) => a - b);
   note(`seed render: median ${renders[2].toFixed(1)} ms of 5 (${renders.map((v) => v.toFixed(1)).join(', ')}) (target 50 ms)`);
   ok(renders[2] < 500, 'the seed renders in well under a second');
-  const pixels = await page.locator(T('canvas')).evaluate((c) => {
+  const canvasBits = () => page.locator(T('canvas')).evaluate((c) => {
     const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
     let s = `${c.width} ${c.height} `;
     for (let i = 0; i < d.length; i += 4) s += d[i] === 0 && d[i + 1] === 0 && d[i + 2] === 0 ? '1' : (d[i] === 255 ? '0' : '?');
     return s;
   });
+  const pixels = await canvasBits();
   const wantPixels = `${seed.width} ${seed.height} ${seed.bits.join('')}`;
   ok(pixels === wantPixels, 'the rendered seed equals the command\'s PBM pixel for pixel',
      `${pixels.length} vs ${wantPixels.length} characters`);
@@ -237,12 +238,60 @@ async function run(browser, origin, seed) {
   await page.keyboard.press('ArrowLeft');
   ok((await text('ray')) !== before, 'the arrow keys move the pointed pixel');
 
-  if (process.env.RAYO_WEB_SCREENSHOT) {
-    await page.setViewportSize({ width: 900, height: 1100 });
-    await page.evaluate(() => { document.getElementById('zoom').value = '0.5'; document.getElementById('zoom').dispatchEvent(new Event('change')); });
-    await page.screenshot({ path: process.env.RAYO_WEB_SCREENSHOT, clip: { x: 0, y: 0, width: 900, height: 1100 } });
-    note(`screenshot: ${process.env.RAYO_WEB_SCREENSHOT}`);
-  }
+  // Save as PNG: the browser's PNG of the canvas is the command's image.
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save')]);
+  const saved = path.join(tmp, download.suggestedFilename());
+  await download.saveAs(saved);
+  const same = rayo(['compare', 'seed.pbm', saved]);
+  ok(download.suggestedFilename() === 'esfera.png' && /verdict: identical/.test(same.out),
+     'Save as PNG gives the rendered image', same.out + same.err);
+
+  // The scene's values are editable and the picture follows them.
+  await page.fill('[data-test="sphere-0-r"]', '0.5');
+  await page.waitForFunction(() => /diagnosis/.test(document.getElementById('report').textContent));
+  rayo(['--sphere', '0.5,0.75,1.9,0.5', '-o', 'small.pbm']);
+  const small = pbmBits('small.pbm');
+  const smallPixels = await canvasBits();
+  ok(smallPixels === `${small.width} ${small.height} ${small.bits.join('')}`,
+     'a smaller radius redraws the picture: the command\'s --sphere image');
+
+  // Another file as the reference.
+  await page.selectOption(T('reference'), 'file');
+  await page.setInputFiles(T('reference-input'), path.join(tmp, 'small.pbm'));
+  await page.waitForFunction(() => document.getElementById('verdict').textContent === 'verdict: identical');
+  ok(true, 'another file as the reference: identical to the image it made');
+
+  // A phone's width: nothing wider than the screen.
+  const phone = await browser.newContext({ locale: 'es-AR', viewport: { width: 360, height: 740 } });
+  const p1 = await phone.newPage();
+  p1.on('pageerror', (e) => errors.push(String(e)));
+  await p1.goto(origin + '/index.html');
+  await p1.waitForSelector('body[data-ready="1"]');
+  await p1.click(T('render'));
+  await p1.waitForFunction(() => document.getElementById('report').textContent !== '');
+  const wide = await p1.evaluate(() => document.documentElement.scrollWidth);
+  ok(wide <= 360, `readable on a phone's width (360 px: the page is ${wide} px wide)`);
+  await phone.close();
+
+  // Opened from a file: the page fetches nothing, so it works there too.
+  const local = await browser.newContext();
+  const p3 = await local.newPage();
+  p3.on('pageerror', (e) => errors.push(String(e)));
+  await p3.goto('file://' + path.join(WEB, 'index.html'));
+  await p3.waitForSelector('body[data-ready="1"]', { timeout: 10000 });
+  await p3.click(T('render'));
+  await p3.waitForFunction(() => document.getElementById('verdict').textContent !== '');
+  ok((await p3.locator(T('verdict')).textContent()) === 'verdict: consistent',
+     'from file:// the page renders and compares');
+  await local.close();
+
+  // A consistent render of EJ2 against its reference (a tone compare).
+  await page.selectOption(T('scene'), 'ej2');
+  await page.waitForFunction(() => document.getElementById('info').textContent.startsWith('ej2.pgm'));
+  await page.waitForFunction(() => /gray/.test(document.getElementById('report').textContent));
+  const ej2Compare = await page.evaluate(() => window.rayoTimes.compare);
+  note(`640x480 compare, EJ2 rendered vs its reference (consistent): ${ej2Compare.toFixed(1)} ms`);
+  ok((await text('verdict')) === 'verdict: consistent', 'the EJ2 scene rendered is consistent with EJ2');
 
   // A Spanish browser gets Spanish first.
   const es = await browser.newContext({ locale: 'es-AR' });
@@ -253,6 +302,18 @@ async function run(browser, origin, seed) {
   ok((await p2.locator('header p').textContent()).includes('El trazador de rayos del curso'),
      'Spanish text with a Spanish browser');
   await es.close();
+
+  // The README's picture: a mistake found.
+  if (process.env.RAYO_WEB_SCREENSHOT) {
+    await page.setViewportSize({ width: 760, height: 1000 });
+    await page.selectOption(T('reference'), 'ej1');
+    await page.setInputFiles(T('image-input'), path.join(tmp, 'flipped.pbm'));
+    await page.waitForFunction(() => /upside down/.test(document.getElementById('diagnosis').textContent));
+    await page.selectOption('#zoom', '0.5');
+    await page.evaluate(() => { document.activeElement.blur(); window.scrollTo(0, 0); });
+    await page.screenshot({ path: process.env.RAYO_WEB_SCREENSHOT });
+    note(`screenshot: ${process.env.RAYO_WEB_SCREENSHOT}`);
+  }
 
   ok(errors.length === 0, 'no console error', errors.join('\n'));
   ok(offsite.length === 0, 'no request off the machine', offsite.join('\n'));
