@@ -187,16 +187,18 @@ clean:
 # check-web` drives Chromium with Playwright (tests/web/); it skips when
 # either is missing, and `make check` runs it when Chromium is installed.
 WASM_CC ?= clang
+# (wasi-libc's S_ISREG is a statement expression, which -pedantic flags.)
 WASM_CFLAGS = --target=wasm32-wasi -std=c11 -O2 $(WARNINGS) \
-              -Wno-missing-prototypes \
-              -Wno-gnu-statement-expression -Iweb/wasm/include -Iinclude -MMD -MP
+              -Wno-gnu-statement-expression -Iweb/wasm/include -Iinclude \
+              -MMD -MP
 WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/io/output.c \
                  src/grade/%,$(LIB_SRC))
 WASM_SRC := $(WASM_LIB_SRC) $(sort $(wildcard web/wasm/*.c))
 WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o)
 WEB_ASSETS := $(sort $(wildcard web/*.html web/*.js web/*.css))
 WEB_OUT := $(BUILD)/web
-CHROMIUM ?= $(shell command -v chromium chromium-browser 2>/dev/null | head -n 1)
+CHROMIUM ?= $(shell command -v chromium chromium-browser 2>/dev/null | \
+                head -n 1)
 
 .PHONY: web check-web
 

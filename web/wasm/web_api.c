@@ -30,11 +30,11 @@
 #include "../../src/formats/reader_impl.h"
 #include "web.h"
 
-typedef struct web_image {
+struct web_image {
     rayo_image image;
     rayo_read_report read;
     unsigned char *rgba; /* for the canvas, made on demand */
-} web_image;
+};
 
 static char last_error[RAYO_ERROR_MESSAGE_SIZE + 8];
 static int last_was_png;
@@ -234,7 +234,8 @@ WEB_EXPORT("web_rgba") const unsigned char *web_rgba(web_image *im)
         for (x = 0; x < i->width; x++, out += 4) {
             for (c = 0; c < 3; c++) {
                 unsigned long v, m = i->maxval;
-                size_t k = (size_t)x * i->channels + (i->channels == 3 ? c : 0);
+                size_t k = (size_t)x * i->channels +
+                           (i->channels == 3 ? c : 0);
                 if (i->sample == RAYO_SAMPLE_BIT)
                     v = rayo_bit_get(row, x) ? 0 : 1;
                 else if (i->sample == RAYO_SAMPLE_U8)
@@ -335,8 +336,15 @@ WEB_EXPORT("web_compare_diff_size") size_t web_compare_diff_size(void)
     return compare_diff.size;
 }
 
+/* The course's exercise scene_id (0-2), NULL for the seed (-1). */
+static const rayo_course_data *course_data(int scene_id)
+{
+    return scene_id < 0 ? NULL
+                        : rayo_course_data_of((rayo_course_exercise)scene_id);
+}
+
 /*
- * A scene for web_render and web_ray: `scene` is -1 for the seed (the
+ * A scene for web_render: `scene` is -1 for the seed (the
  * command's default: spheres without material, hit shading) or a
  * rayo_course_exercise (its materials, lights and shading); spheres
  * holds count x (cx, cy, cz, r), replacing the scene's own in order.
@@ -345,8 +353,7 @@ static rayo_status build_scene(int scene_id, const double *spheres,
                                size_t count, rayo_scene **scene,
                                rayo_shade_mode *shade, rayo_error *err)
 {
-    const rayo_course_data *data =
-        scene_id < 0 ? NULL : rayo_course_data_of((rayo_course_exercise)scene_id);
+    const rayo_course_data *data = course_data(scene_id);
     rayo_status s;
     size_t i;
     *shade = RAYO_SHADE_HIT;
@@ -390,7 +397,8 @@ static rayo_status build_scene(int scene_id, const double *spheres,
         const rayo_course_lamp *l = &data->lamps[i];
         rayo_light light;
         light.kind = l->point ? RAYO_LIGHT_POINT : RAYO_LIGHT_DIRECTIONAL;
-        light.vector = rayo_vec3_make(l->vector[0], l->vector[1], l->vector[2]);
+        light.vector =
+            rayo_vec3_make(l->vector[0], l->vector[1], l->vector[2]);
         light.color = rayo_vec3_make(l->color[0], l->color[1], l->color[2]);
         s = rayo_scene_add_light(*scene, &light, err);
     }
@@ -404,8 +412,7 @@ static rayo_status build_scene(int scene_id, const double *spheres,
 WEB_EXPORT("web_scene_spheres")
 unsigned web_scene_spheres(int scene_id, unsigned i, double *out)
 {
-    const rayo_course_data *data =
-        scene_id < 0 ? NULL : rayo_course_data_of((rayo_course_exercise)scene_id);
+    const rayo_course_data *data = course_data(scene_id);
     if (data == NULL) {
         out[0] = RAYO_SEED_CENTER_X;
         out[1] = RAYO_SEED_CENTER_Y;
