@@ -117,7 +117,7 @@ function siteBytes(dir) {
 }
 
 async function main() {
-  console.log('1..32');
+  console.log('1..33');
   const seed = setup();
   const size = siteBytes(WEB);
   ok(size <= 3 * 1024 * 1024, `build/web/ is ${size} bytes, at most 3 MiB`);
@@ -134,7 +134,7 @@ async function main() {
     server.kill();
     fs.rmSync(tmp, { recursive: true, force: true });
   }
-  if (count !== 32) ok(false, `planned 32 tests, ran ${count}`);
+  if (count !== 33) ok(false, `planned 33 tests, ran ${count}`);
   process.exitCode = failed ? 1 : 0;
 }
 
@@ -201,6 +201,19 @@ async function run(browser, origin, seed) {
   ok(maskCompare < 1000 && toneCompare < 3000, 'compares take well under seconds');
   const diff = await page.locator(T('diff')).evaluate((img) => img.naturalWidth);
   ok(diff === 640, 'the difference picture is shown', diff);
+
+  // Drag and drop: the same as the file picker.
+  const flippedText = fs.readFileSync(path.join(tmp, 'flipped.pbm'), 'latin1');
+  await page.selectOption(T('reference'), 'ej1');
+  await page.evaluate((text) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([text], 'dropped.pbm'));
+    document.getElementById('drop').dispatchEvent(
+      new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, flippedText);
+  await page.waitForFunction(() => document.getElementById('info').textContent.startsWith('dropped.pbm'));
+  await page.waitForFunction(() => /upside down/.test(document.getElementById('diagnosis').textContent));
+  ok(true, 'a dropped file is opened and checked');
 
   // A malformed file: the command's one-line message, in the page.
   await page.setInputFiles(T('image-input'), path.join(tmp, 'malformed.pgm'));
