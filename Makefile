@@ -188,3 +188,78 @@ clean:
 	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-fuzz esfera.pbm esfera.png
 
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+
+# The page (web/, docs/web.md): the library compiled to WebAssembly with
+# clang's wasm32-wasi target (Debian: clang, lld, wasi-libc,
+# libclang-rt-*-dev-wasm32) into $(BUILD)/web/, a static site.  libpng,
+# threads and files are the browser's business there: the library's
+# sources build unchanged against web/wasm/include (pthread.h, png.h),
+# with src/formats/png_read.c and src/io/output.c replaced by web/wasm/
+# files, and src/grade/ (which runs compilers) left out.  `make
+# check-web` drives Chromium with Playwright (tests/web/); it skips when
+# either is missing, and `make check` runs it when Chromium is installed.
+WASM_CC ?= clang
+# (wasi-libc's S_ISREG is a statement expression, which -pedantic flags.)
+WASM_CFLAGS = --target=wasm32-wasi -std=c11 -O2 $(WARNINGS) \
+              -Wno-gnu-statement-expression -Iweb/wasm/include -Iinclude \
+              -MMD -MP
+WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/io/output.c \
+                 src/grade/%,$(LIB_SRC))
+WASM_SRC := $(WASM_LIB_SRC) $(sort $(wildcard web/wasm/*.c))
+WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o)
+WEB_ASSETS := $(sort $(wildcard web/*.html web/*.js web/*.css))
+WEB_OUT := $(BUILD)/web
+CHROMIUM ?= $(shell command -v chromium chromium-browser 2>/dev/null | \
+                head -n 1)
+
+.PHONY: web check-web
+
+WEB_WASM := $(BUILD)/wasm/rayo.wasm
+COURSE_PNG := $(sort $(wildcard data/course/*.png))
+
+web: $(WEB_OUT)/assets.js $(WEB_ASSETS:web/%=$(WEB_OUT)/%)
+
+$(BUILD)/wasm/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(WASM_CC) $(WASM_CFLAGS) -c $< -o $@
+
+$(WEB_WASM): $(WASM_OBJ)
+	@mkdir -p $(dir $@)
+	$(WASM_CC) --target=wasm32-wasi -O2 -nostartfiles -Wl,--no-entry \
+	    -Wl,--strip-all -Wl,-z,stack-size=1048576 -o $@ $(WASM_OBJ) -lm
+
+$(WEB_OUT)/%: web/%
+	@mkdir -p $(dir $@)
+	cp $< $@
+
+# The module and the course's references as base64 in a script, so the
+# page fetches nothing and also works opened from file://.
+$(WEB_OUT)/assets.js: $(WEB_WASM) $(COURSE_PNG)
+	@mkdir -p $(dir $@)
+	{ echo '// Made by make web: rayo.wasm and data/course/*.png, base64.'; \
+	  echo 'window.RAYO_ASSETS = {'; \
+	  printf '  "wasm": "%s",\n' "$$(base64 -w0 $(WEB_WASM))"; \
+	  for f in $(COURSE_PNG); do \
+	      n=$$(basename $$f .png | sed 's/.*-//'); \
+	      printf '  "%s": "%s",\n' "$$n" "$$(base64 -w0 $$f)"; \
+	  done; echo '};'; } > $@.tmp && mv $@.tmp $@
+
+check-web: all
+	@if [ -z "$(CHROMIUM)" ] || ! command -v node >/dev/null 2>&1 || \
+	    [ ! -d tests/web/node_modules/playwright-core ] || \
+	    ! printf '#include <stdio.h>\n' | $(WASM_CC) --target=wasm32-wasi \
+	        -x c -c - -o /dev/null 2>/dev/null; then \
+	    echo "1..0 # SKIP check-web: needs chromium, node, wasi-libc and" \
+	         "'npm ci --prefix tests/web'"; \
+	else \
+	    $(MAKE) web && \
+	    RAYO=$(abspath $(RAYO)) RAYO_WEB=$(abspath $(WEB_OUT)) \
+	    RAYO_SOURCE=$(CURDIR) CHROMIUM=$(CHROMIUM) \
+	        node tests/web/check.mjs; \
+	fi
+
+ifneq ($(CHROMIUM),)
+check: check-web
+endif
+
+-include $(shell find $(BUILD)/wasm -name '*.d' 2>/dev/null)

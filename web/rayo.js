@@ -1,0 +1,165 @@
+// rayo.js - loads rayo.wasm (the library compiled to WebAssembly, web/wasm/)
+// and wraps the functions it exports (web/wasm/web_api.c) so the page can
+// call them with JavaScript values.  It only moves bytes: every reading,
+// rendering and comparing is the library's.  The module needs the few
+// WASI calls wasi-libc makes; it has no files, so they answer "bad file"
+// (EBADF), and the clock is the browser's.  A classic script, not a
+// module, so that the page also works opened from file://: the module's
+// bytes come from assets.js (made by `make web`), not from a fetch.
+'use strict';
+(function (global) {
+const EBADF = 8;
+
+async function loadRayo(bytes) {
+  let memory = null;
+  const wasi = {
+    clock_time_get(id, precision, out) {
+      const ns = BigInt(Math.round(performance.now() * 1e6));
+      new DataView(memory.buffer).setBigUint64(out, ns, true);
+      return 0;
+    },
+    fd_close: () => EBADF,
+    fd_read: () => EBADF,
+    fd_seek: () => EBADF,
+    fd_write: () => EBADF,
+    sched_yield: () => 0,
+  };
+  const { instance } = await WebAssembly.instantiate(bytes, {
+    wasi_snapshot_preview1: wasi,
+  });
+  memory = instance.exports.memory;
+  return new Rayo(instance.exports);
+}
+
+const decoder = new TextDecoder();
+const encoder = new TextEncoder();
+
+class RayoError extends Error {}
+
+class Rayo {
+  constructor(exports) {
+    this.x = exports;
+  }
+  get heap() {
+    return new Uint8Array(this.x.memory.buffer);
+  }
+  string(ptr) {
+    const heap = this.heap;
+    let end = ptr;
+    while (heap[end] !== 0) end++;
+    return decoder.decode(heap.subarray(ptr, end));
+  }
+  // Copies bytes (a Uint8Array or a string) into the module: a pointer
+  // to free with this.x.web_free.
+  put(bytes) {
+    if (typeof bytes === 'string') bytes = encoder.encode(bytes + '\0');
+    const ptr = this.x.web_alloc(bytes.length);
+    this.heap.set(bytes, ptr);
+    return ptr;
+  }
+  putDoubles(values) {
+    const ptr = this.x.web_alloc(values.length * 8);
+    new Float64Array(this.x.memory.buffer, ptr, values.length).set(values);
+    return ptr;
+  }
+  fail() {
+    throw new RayoError(this.string(this.x.web_error()));
+  }
+  // A PBM, PGM or PPM file's bytes as an image; null when they are a PNG
+  // (the browser decodes those: fromPNG).  clamp: read as `rayo compare`
+  // reads the image it checks.
+  read(bytes, name, clamp) {
+    const data = this.put(bytes), nm = this.put(name);
+    const image = this.x.web_read(data, bytes.length, nm, clamp ? 1 : 0);
+    this.x.web_free(data);
+    this.x.web_free(nm);
+    if (image) return new RayoImage(this, image);
+    if (this.x.web_error_is_png()) return null;
+    return this.fail();
+  }
+  // A PNG file (its bytes) decoded by the browser to RGBA (ImageData).
+  fromPNG(bytes, imageData) {
+    const png = this.put(bytes), rgba = this.put(imageData.data);
+    const image = this.x.web_from_png(png, bytes.length, rgba,
+                                      imageData.width, imageData.height);
+    this.x.web_free(png);
+    this.x.web_free(rgba);
+    return image ? new RayoImage(this, image) : this.fail();
+  }
+  // `rayo compare reference image`: its text, verdict, diagnosis and the
+  // difference picture (PNG bytes).
+  compare(reference, image) {
+    const text = this.x.web_compare(reference.ptr, image.ptr);
+    if (!text) this.fail();
+    const diff = this.x.web_compare_diff();
+    const size = this.x.web_compare_diff_size();
+    return {
+      text: this.string(text),
+      verdict: this.string(this.x.web_compare_verdict()),
+      diagnosis: this.string(this.x.web_compare_diagnosis()),
+      diff: diff ? this.heap.slice(diff, diff + size) : null,
+    };
+  }
+  // The spheres of a scene (-1 the seed, 0..2 the course's), [cx, cy, cz, r].
+  spheres(scene) {
+    const out = this.x.web_alloc(32), list = [];
+    const n = this.x.web_scene_spheres(scene, 0, out);
+    for (let i = 0; i < n; i++) {
+      this.x.web_scene_spheres(scene, i, out);
+      list.push(Array.from(new Float64Array(this.x.memory.buffer, out, 4)));
+    }
+    this.x.web_free(out);
+    return list;
+  }
+  // camera: [width, height, fov, ox, oy, oz]; spheres as spheres() gives.
+  render(scene, camera, spheres) {
+    const cam = this.putDoubles(camera), sp = this.putDoubles(spheres.flat());
+    const image = this.x.web_render(scene, cam, sp, spheres.length);
+    this.x.web_free(cam);
+    this.x.web_free(sp);
+    return image ? new RayoImage(this, image) : this.fail();
+  }
+  // The ray through pixel (px, py): d, beta, delta, hit, t, focal.
+  ray(camera, spheres, px, py) {
+    const cam = this.putDoubles(camera), sp = this.putDoubles(spheres.flat());
+    const out = this.x.web_alloc(64);
+    const status = this.x.web_ray(cam, sp, spheres.length, px, py, out);
+    const v = Array.from(new Float64Array(this.x.memory.buffer, out, 8));
+    this.x.web_free(cam);
+    this.x.web_free(sp);
+    this.x.web_free(out);
+    if (status !== 0) return null;
+    return { d: v.slice(0, 3), beta: v[3], delta: v[4], hit: v[5] === 1,
+             t: v[6], focal: v[7] };
+  }
+}
+
+const FORMATS = ['PBM', 'PGM', 'PPM', 'PNG'];
+
+class RayoImage {
+  constructor(rayo, ptr) {
+    this.rayo = rayo;
+    this.ptr = ptr;
+    const info = (k) => rayo.x.web_info(ptr, k);
+    this.width = info(0);
+    this.height = info(1);
+    this.channels = info(2);
+    this.maxval = info(3);
+    this.bilevel = info(4) === 0;
+    this.format = FORMATS[info(5)];
+    this.plain = info(6) === 1;
+  }
+  imageData() {
+    const ptr = this.rayo.x.web_rgba(this.ptr);
+    const n = this.width * this.height * 4;
+    const rgba = new Uint8ClampedArray(this.rayo.x.memory.buffer, ptr, n);
+    return new ImageData(new Uint8ClampedArray(rgba), this.width, this.height);
+  }
+  free() {
+    if (this.ptr) this.rayo.x.web_image_free(this.ptr);
+    this.ptr = 0;
+  }
+}
+
+global.RayoWeb = { loadRayo, Rayo, RayoImage, RayoError };
+})(typeof window !== 'undefined' ? window : globalThis);

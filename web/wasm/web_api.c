@@ -1,0 +1,525 @@
+/*
+ * web_api.c - the functions the page's script calls in rayo's
+ * WebAssembly build: read an image, compare two, render a scene, trace
+ * one ray.  Everything here calls the library; nothing renders, compares
+ * or parses Netpbm itself, so the page shows what `rayo` would.
+ *
+ * The script passes bytes in memory it got from web_alloc and reads
+ * results back through pointers and lengths these functions return.
+ * Failures leave one line, as the command would print it ("rayo: ..."),
+ * for web_error.  Images the script holds are web_image pointers, freed
+ * with web_image_free.  One thread, no files: reading is from memory,
+ * writing into memory (output_memory.c).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "rayo/camera_spec.h"
+#include "rayo/compare.h"
+#include "rayo/course.h"
+#include "rayo/limits.h"
+#include "rayo/reader.h"
+#include "rayo/render.h"
+#include "rayo/scene.h"
+#include "rayo/seed.h"
+#include "rayo/sphere.h"
+
+#include "../../src/course/course_impl.h"
+#include "../../src/formats/reader_impl.h"
+#include "web.h"
+
+struct web_image {
+    rayo_image image;
+    rayo_read_report read;
+    unsigned char *rgba; /* for the canvas, made on demand */
+};
+
+static char last_error[RAYO_ERROR_MESSAGE_SIZE + 8];
+static int last_was_png;
+
+static void keep_error(const rayo_error *err)
+{
+    snprintf(last_error, sizeof last_error, "rayo: %s", err->message);
+}
+
+WEB_EXPORT("web_alloc") void *web_alloc(size_t size)
+{
+    return malloc(size ? size : 1);
+}
+
+WEB_EXPORT("web_free") void web_free(void *p) { free(p); }
+
+/* The last failure's line, "rayo: FILE: byte N: found X; expected Y". */
+WEB_EXPORT("web_error") const char *web_error(void) { return last_error; }
+
+/* 1 when the last web_read found a PNG, for the browser to decode. */
+WEB_EXPORT("web_error_is_png") int web_error_is_png(void)
+{
+    return last_was_png;
+}
+
+WEB_EXPORT("web_image_free") void web_image_free(web_image *im)
+{
+    if (im == NULL)
+        return;
+    rayo_image_free(&im->image);
+    free(im->rgba);
+    free(im);
+}
+
+static web_image *new_image(void)
+{
+    web_image *im = calloc(1, sizeof *im);
+    if (im == NULL)
+        snprintf(last_error, sizeof last_error, "rayo: out of memory");
+    return im;
+}
+
+/*
+ * Reads a PBM, PGM or PPM file (plain or raw) held in memory, as the
+ * library reads files: with clamp, plain samples out of range are
+ * clamped and counted (how `rayo compare` reads the image it checks).
+ * NULL on failure (web_error; web_error_is_png for a PNG).
+ */
+WEB_EXPORT("web_read")
+web_image *web_read(const unsigned char *data, size_t size, const char *name,
+                    int clamp)
+{
+    web_image *im = new_image();
+    rayo_error err;
+    rayo_status s;
+    last_was_png = 0;
+    if (im == NULL)
+        return NULL;
+    rayo_error_clear(&err);
+    if (clamp && size >= 2 && data[0] == 'P' && data[1] >= '1' &&
+        data[1] <= '6') {
+        /* rayo_image_read_memory's path with the reader's clamp option,
+           which only rayo_image_read_file_with offers. */
+        rayo_source src;
+        uint64_t rest = 0;
+        unsigned char magic[2];
+        size_t got;
+        rayo_source_open_memory(&src, data, size, name);
+        rayo_source_read(&src, magic, 2, &got);
+        s = rayo_pnm_read(&src, data[1], 1, &im->image, &im->read, &err);
+        if (s == RAYO_OK)
+            s = rayo_source_count_rest(&src, &rest, &err);
+        if (s == RAYO_OK)
+            im->read.trailing_bytes += rest;
+    } else {
+        s = rayo_image_read_memory(data, size, name, &im->image, &im->read,
+                                   &err);
+    }
+    if (s != RAYO_OK) {
+        last_was_png = im->read.format == RAYO_FORMAT_PNG && size >= 8 &&
+                       data[0] == 0x89;
+        keep_error(&err);
+        web_image_free(im);
+        return NULL;
+    }
+    return im;
+}
+
+/* The PNG's IHDR colour type and depth, and whether it has tRNS. */
+static void png_header(const unsigned char *png, size_t size, int *color,
+                       int *depth, int *trns)
+{
+    size_t at = 8;
+    *color = 2;
+    *depth = 8;
+    *trns = 0;
+    if (size >= 33 && memcmp(png + 12, "IHDR", 4) == 0) {
+        *depth = png[24];
+        *color = png[25];
+    }
+    while (at + 8 <= size) {
+        size_t n = (size_t)png[at] << 24 | (size_t)png[at + 1] << 16 |
+                   (size_t)png[at + 2] << 8 | png[at + 3];
+        if (memcmp(png + at + 4, "tRNS", 4) == 0)
+            *trns = 1;
+        if (memcmp(png + at + 4, "IDAT", 4) == 0 || n > size - at - 8)
+            break;
+        at += 12 + n;
+    }
+}
+
+/*
+ * An image from a PNG the browser decoded to 8-bit RGBA (w x h), laid
+ * out as the library's PNG reader lays that file out (reader.h): gray
+ * types one channel (1-bit gray without tRNS bilevel), the others RGB,
+ * alpha composited over white with the reader's formula.  png is the
+ * file, for its header.  The browser gives 8 bits: a 16-bit PNG becomes
+ * 8-bit, which compare takes it as anyway.
+ */
+WEB_EXPORT("web_from_png")
+web_image *web_from_png(const unsigned char *png, size_t png_size,
+                        const unsigned char *rgba, uint32_t w, uint32_t h)
+{
+    web_image *im = new_image();
+    rayo_image_info info;
+    rayo_error err;
+    int color, depth, trns;
+    uint32_t x, y;
+    if (im == NULL)
+        return NULL;
+    png_header(png, png_size, &color, &depth, &trns);
+    if ((color == 0 && depth == 1 && !trns))
+        info = rayo_image_info_bit(w, h);
+    else if (color == 0 || color == 4)
+        info = rayo_image_info_gray8(w, h);
+    else
+        info = rayo_image_info_rgb8(w, h);
+    rayo_error_clear(&err);
+    if (rayo_image_info_check(&info, &err) != RAYO_OK ||
+        rayo_image_create(&im->image, &info, &err) != RAYO_OK) {
+        keep_error(&err);
+        web_image_free(im);
+        return NULL;
+    }
+    im->read.format = RAYO_FORMAT_PNG;
+    for (y = 0; y < h; y++) {
+        unsigned char *row = rayo_image_row(&im->image, y);
+        for (x = 0; x < w; x++) {
+            const unsigned char *p = rgba + ((size_t)y * w + x) * 4;
+            unsigned a = p[3], c, v[3];
+            for (c = 0; c < 3; c++)
+                v[c] = (p[c] * a + 255u * (255u - a) + 127u) / 255u;
+            if (info.sample == RAYO_SAMPLE_BIT)
+                rayo_bit_set(row, x, v[0] < 128);
+            else if (info.channels == 1)
+                row[x] = (unsigned char)v[0];
+            else
+                for (c = 0; c < 3; c++)
+                    row[3 * (size_t)x + c] = (unsigned char)v[c];
+        }
+    }
+    return im;
+}
+
+/* 0 width, 1 height, 2 channels, 3 maxval, 4 sample (rayo_sample_type),
+   5 format (rayo_format), 6 plain. */
+WEB_EXPORT("web_info") unsigned web_info(const web_image *im, int field)
+{
+    const rayo_image_info *i = &im->image.info;
+    switch (field) {
+    case 0: return i->width;
+    case 1: return i->height;
+    case 2: return i->channels;
+    case 3: return i->maxval;
+    case 4: return (unsigned)i->sample;
+    case 5: return (unsigned)im->read.format;
+    case 6: return (unsigned)im->read.plain;
+    default: return 0;
+    }
+}
+
+/* The image as 8-bit RGBA for a canvas (width x height x 4 bytes, kept
+   with the image). */
+WEB_EXPORT("web_rgba") const unsigned char *web_rgba(web_image *im)
+{
+    const rayo_image_info *i = &im->image.info;
+    uint32_t x, y;
+    unsigned c;
+    if (im->rgba != NULL)
+        return im->rgba;
+    im->rgba = malloc((size_t)i->width * i->height * 4 + 1);
+    if (im->rgba == NULL)
+        return NULL;
+    for (y = 0; y < i->height; y++) {
+        const unsigned char *row = rayo_image_row(&im->image, y);
+        unsigned char *out = im->rgba + (size_t)y * i->width * 4;
+        for (x = 0; x < i->width; x++, out += 4) {
+            for (c = 0; c < 3; c++) {
+                unsigned long v, m = i->maxval;
+                size_t k = (size_t)x * i->channels +
+                           (i->channels == 3 ? c : 0);
+                if (i->sample == RAYO_SAMPLE_BIT)
+                    v = rayo_bit_get(row, x) ? 0 : 1;
+                else if (i->sample == RAYO_SAMPLE_U8)
+                    v = row[k];
+                else {
+                    uint16_t s;
+                    memcpy(&s, row + 2 * k, 2);
+                    v = s;
+                }
+                out[c] = (unsigned char)((v * 255u + m / 2) / m);
+            }
+            out[3] = 255;
+        }
+    }
+    return im->rgba;
+}
+
+/* What the last web_compare found, and its difference picture. */
+static char *compare_text, *compare_diagnosis;
+static rayo_compare_report compare_report;
+static web_bytes compare_diff;
+
+static uint64_t surplus_pixels(const web_image *im)
+{
+    unsigned per = im->image.info.channels ? im->image.info.channels : 1;
+    return (im->read.trailing_samples + per - 1) / per;
+}
+
+static char *format(size_t (*fn)(const rayo_compare_report *, char *,
+                                 size_t))
+{
+    size_t need = fn(&compare_report, NULL, 0);
+    char *text = malloc(need + 1);
+    if (text != NULL)
+        fn(&compare_report, text, need + 1);
+    return text;
+}
+
+/*
+ * `rayo compare REFERENCE IMAGE`: returns the text report (the command's
+ * standard output, word for word), NULL on failure (web_error).
+ * web_compare_verdict, web_compare_diagnosis and web_compare_diff then
+ * say more.  The image should come from web_read with clamp 1.
+ */
+WEB_EXPORT("web_compare")
+const char *web_compare(const web_image *reference, const web_image *image)
+{
+    rayo_compare_options options;
+    rayo_output *out = NULL;
+    rayo_error err;
+    free(compare_text);
+    free(compare_diagnosis);
+    free(compare_diff.data);
+    compare_text = compare_diagnosis = NULL;
+    memset(&compare_diff, 0, sizeof compare_diff);
+    rayo_error_clear(&err);
+    rayo_compare_options_init(&options);
+    if (rayo_compare_images(&reference->image, &image->image, &options,
+                            &compare_report, &err) != RAYO_OK) {
+        keep_error(&err);
+        return NULL;
+    }
+    compare_report.reference_surplus = surplus_pixels(reference);
+    compare_report.image_surplus = surplus_pixels(image);
+    rayo_compare_note_clamped(&compare_report, &image->read);
+    if (web_output_open(&out, "diff.png", &compare_diff, &err) == RAYO_OK) {
+        if (rayo_compare_write_diff(&reference->image, &image->image,
+                                    &options, out, &err) == RAYO_OK)
+            rayo_output_commit(out, &err);
+        else
+            rayo_output_abort(out);
+    }
+    compare_text = format(rayo_compare_format_text);
+    if (compare_report.diagnosis != RAYO_DIAGNOSIS_NONE)
+        compare_diagnosis = format(rayo_compare_format_diagnosis);
+    return compare_text;
+}
+
+WEB_EXPORT("web_compare_verdict") const char *web_compare_verdict(void)
+{
+    return rayo_compare_verdict_name(compare_report.verdict);
+}
+
+/* The diagnosis sentence, "" when there is none. */
+WEB_EXPORT("web_compare_diagnosis") const char *web_compare_diagnosis(void)
+{
+    return compare_diagnosis != NULL ? compare_diagnosis : "";
+}
+
+/* The difference picture, a PNG (rayo_compare_write_diff), and its size. */
+WEB_EXPORT("web_compare_diff") const unsigned char *web_compare_diff(void)
+{
+    return compare_diff.data;
+}
+
+WEB_EXPORT("web_compare_diff_size") size_t web_compare_diff_size(void)
+{
+    return compare_diff.size;
+}
+
+/* The course's exercise scene_id (0-2), NULL for the seed (-1). */
+static const rayo_course_data *course_data(int scene_id)
+{
+    return scene_id < 0 ? NULL
+                        : rayo_course_data_of((rayo_course_exercise)scene_id);
+}
+
+/*
+ * A scene for web_render: `scene` is -1 for the seed (the
+ * command's default: spheres without material, hit shading) or a
+ * rayo_course_exercise (its materials, lights and shading); spheres
+ * holds count x (cx, cy, cz, r), replacing the scene's own in order.
+ */
+static rayo_status build_scene(int scene_id, const double *spheres,
+                               size_t count, rayo_scene **scene,
+                               rayo_shade_mode *shade, rayo_error *err)
+{
+    const rayo_course_data *data = course_data(scene_id);
+    rayo_status s;
+    size_t i;
+    *shade = RAYO_SHADE_HIT;
+    if (scene_id >= 0 && data == NULL)
+        return rayo_error_set(err, RAYO_ERR_INVALID, "no scene %d", scene_id);
+    if ((s = rayo_scene_create(scene, err)) != RAYO_OK)
+        return s;
+    if (data == NULL) {
+        for (i = 0; s == RAYO_OK && i < count; i++)
+            s = rayo_scene_add_sphere(
+                *scene,
+                rayo_vec3_make(spheres[4 * i], spheres[4 * i + 1],
+                               spheres[4 * i + 2]),
+                spheres[4 * i + 3], err);
+        return s;
+    }
+    /* As rayo_course_scene_build fills it (course_scenes.c), the balls'
+       centres and radii taken from spheres. */
+    *shade = data->shade;
+    rayo_scene_set_ambient(*scene, rayo_vec3_make(data->ambient[0],
+                                                  data->ambient[1],
+                                                  data->ambient[2]));
+    for (i = 0; s == RAYO_OK && i < data->ball_count; i++) {
+        const rayo_course_ball *b = &data->balls[i];
+        const double *e = i < count ? spheres + 4 * i : NULL;
+        rayo_material m;
+        unsigned id;
+        memset(&m, 0, sizeof m);
+        m.color = rayo_vec3_make(b->color[0], b->color[1], b->color[2]);
+        m.ka = b->ka;
+        m.kd = b->kd;
+        s = rayo_scene_add_material(*scene, &m, &id, err);
+        if (s == RAYO_OK)
+            s = rayo_scene_add_sphere_material(
+                *scene,
+                e ? rayo_vec3_make(e[0], e[1], e[2])
+                  : rayo_vec3_make(b->center[0], b->center[1], b->center[2]),
+                e ? e[3] : b->radius, id, err);
+    }
+    for (i = 0; s == RAYO_OK && i < data->lamp_count; i++) {
+        const rayo_course_lamp *l = &data->lamps[i];
+        rayo_light light;
+        light.kind = l->point ? RAYO_LIGHT_POINT : RAYO_LIGHT_DIRECTIONAL;
+        light.vector =
+            rayo_vec3_make(l->vector[0], l->vector[1], l->vector[2]);
+        light.color = rayo_vec3_make(l->color[0], l->color[1], l->color[2]);
+        s = rayo_scene_add_light(*scene, &light, err);
+    }
+    if (s == RAYO_OK)
+        s = rayo_scene_prepare(*scene, err);
+    return s;
+}
+
+/* How many spheres scene_id has, and the i-th's centre and radius into
+   out[4] (the script's starting values). */
+WEB_EXPORT("web_scene_spheres")
+unsigned web_scene_spheres(int scene_id, unsigned i, double *out)
+{
+    const rayo_course_data *data = course_data(scene_id);
+    if (data == NULL) {
+        out[0] = RAYO_SEED_CENTER_X;
+        out[1] = RAYO_SEED_CENTER_Y;
+        out[2] = RAYO_SEED_CENTER_Z;
+        out[3] = RAYO_SEED_RADIUS;
+        return 1;
+    }
+    if (i < data->ball_count) {
+        memcpy(out, data->balls[i].center, 3 * sizeof *out);
+        out[3] = data->balls[i].radius;
+    }
+    return (unsigned)data->ball_count;
+}
+
+static rayo_status build_camera(const double *cam, rayo_camera *camera,
+                                rayo_error *err)
+{
+    rayo_camera_spec spec;
+    rayo_camera_spec_init(&spec);
+    if (!(cam[0] >= 1 && cam[0] <= 65535 && cam[1] >= 1 && cam[1] <= 65535))
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "width and height: expected 1 to %u",
+                              RAYO_MAX_DIMENSION);
+    spec.width = (uint32_t)cam[0];
+    spec.height = (uint32_t)cam[1];
+    spec.fov_degrees = cam[2];
+    spec.origin = rayo_vec3_make(cam[3], cam[4], cam[5]);
+    return rayo_camera_spec_build(&spec, camera, err);
+}
+
+/*
+ * `rayo render` of a scene: cam holds width, height, field of view
+ * (degrees) and the origin's x, y, z.  The seed with its own values is
+ * the command's default image, pixel for pixel.
+ */
+WEB_EXPORT("web_render")
+web_image *web_render(int scene_id, const double *cam, const double *spheres,
+                      size_t count)
+{
+    web_image *im = new_image();
+    rayo_camera camera;
+    rayo_scene *scene = NULL;
+    rayo_render_options options;
+    rayo_error err;
+    rayo_status s;
+    if (im == NULL)
+        return NULL;
+    rayo_error_clear(&err);
+    rayo_render_options_init(&options);
+    options.threads = 1;
+    s = build_camera(cam, &camera, &err);
+    if (s == RAYO_OK)
+        s = build_scene(scene_id, spheres, count, &scene, &options.shade,
+                        &err);
+    if (s == RAYO_OK)
+        s = rayo_render_image(&camera, scene, &options, &im->image, &err);
+    rayo_scene_free(scene);
+    if (s != RAYO_OK) {
+        keep_error(&err);
+        web_image_free(im);
+        return NULL;
+    }
+    im->read.format = rayo_format_netpbm_for(&im->image.info);
+    return im;
+}
+
+/*
+ * The assignment's arithmetic for the ray through pixel (px, py) and the
+ * scene's first sphere, into out: d (x, y, z, unit), beta = L.d, delta =
+ * beta^2 - L.L + R^2 (L = C - O, sphere.h), whether the ray hits any
+ * sphere of the scene, t of the nearest hit (or -1), the camera's focal
+ * distance in pixels.  Returns 0, or -1 when the camera is invalid.
+ */
+WEB_EXPORT("web_ray")
+int web_ray(const double *cam, const double *spheres, size_t count,
+            double px, double py, double *out)
+{
+    rayo_camera camera;
+    rayo_error err;
+    rayo_ray ray;
+    rayo_vec3 l;
+    double nearest = INFINITY;
+    size_t i;
+    if (build_camera(cam, &camera, &err) != RAYO_OK || count == 0) {
+        keep_error(&err);
+        return -1;
+    }
+    ray = rayo_camera_ray(&camera, px, py);
+    l = rayo_vec3_sub(rayo_vec3_make(spheres[0], spheres[1], spheres[2]),
+                      ray.origin);
+    out[0] = ray.direction.x;
+    out[1] = ray.direction.y;
+    out[2] = ray.direction.z;
+    out[3] = rayo_vec3_dot(l, ray.direction);
+    out[4] = out[3] * out[3] - rayo_vec3_dot(l, l) + spheres[3] * spheres[3];
+    for (i = 0; i < count; i++) {
+        rayo_sphere sphere;
+        double t;
+        sphere.center = rayo_vec3_make(spheres[4 * i], spheres[4 * i + 1],
+                                       spheres[4 * i + 2]);
+        sphere.radius = spheres[4 * i + 3];
+        t = rayo_sphere_intersect(&sphere, &ray, 0.0);
+        if (t < nearest)
+            nearest = t;
+    }
+    out[5] = nearest < INFINITY;
+    out[6] = nearest < INFINITY ? nearest : -1;
+    out[7] = camera.focal;
+    return 0;
+}
