@@ -5,8 +5,8 @@
 #   scripts/deps.sh build   a C compiler, make, pkg-config and libpng's
 #                           headers
 #   scripts/deps.sh check   also the Netpbm tools the tests cross-check with,
-#                           prove (perl), and jq and python3, which read
-#                           their JSON
+#                           prove (perl), jq and python3, which read
+#                           their JSON, and bubblewrap, grade's sandbox
 #
 # It installs with apt-get only when something is missing, and only as
 # root; otherwise it names the command to run and fails.  It never
@@ -48,6 +48,11 @@ if [ "$profile" = check ]; then
     command -v jq >/dev/null 2>&1 || tests="$tests jq"
     command -v python3 >/dev/null 2>&1 || tests="$tests python3"
     add_set "test tools" "$tests"
+    # rayo grade runs submissions in a bubblewrap sandbox, and the tests
+    # run it for real (docs/grading.md).
+    sandbox=""
+    command -v bwrap >/dev/null 2>&1 || sandbox=" bubblewrap"
+    add_set "the grader's sandbox" "$sandbox"
 fi
 [ -z "$sets" ] && exit 0
 need=$(printf '%s' "$sets" | sed 's/^[^:]*://' | tr '\n' ' ' | sed 's/  */ /g; s/ $//')
