@@ -2,10 +2,20 @@
  * output.c - buffered, atomic output files (see output.h for the contract).
  *
  * The temporary file is ".NAME.XXXXXX" in the target's directory, created
- * by mkstemp, given the mode a new file would get (0666 less the umask, or
- * the existing file's mode), filled, fsync'ed, closed and renamed.  A
- * symbolic link to a regular file is followed, so the link survives and
- * its target is replaced.
+ * as mkstemp would (O_EXCL, six random characters), given the mode a new
+ * file would get (0666 less the umask, or the existing file's mode),
+ * filled, fsync'ed, closed and renamed.  Everything after the opening
+ * goes through a descriptor of that directory (openat, renameat,
+ * unlinkat): a directory renamed mid-way still gets its file, or loses
+ * its temporary file, where it now is, and a signal handler can remove
+ * the temporary file with one unlinkat (rayo_output_temp_at).
+ *
+ * What it replaces is respected as a shell's redirection would respect
+ * it (output_target and replaceable below): an existing file we may not
+ * write is refused before anything is created; a replaced file keeps its
+ * mode and, when we are root, its owner and group; a symbolic link is
+ * followed, so the link survives and its target is replaced, but only
+ * where the kernel's protected_symlinks rule would follow it.
  *
  * The buffer's size suits what is written to, and is chosen (by fstat)
  * at the first write.  A pipe gets one pipe's worth: the reader empties
@@ -23,8 +33,7 @@
  * the buffer's bytes around them (writev), so the kernel copies them
  * once, straight from where they are.
  */
-#define _POSIX_C_SOURCE 200809L
-#define _DEFAULT_SOURCE
+#define _GNU_SOURCE /* O_PATH */
 
 #include "rayo/output.h"
 
@@ -39,6 +48,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/uio.h>
+#include <time.h>
 #include <unistd.h>
 
 #define OUTPUT_PIPE_BUFFER (64u * 1024u)    /* Linux's default pipe size */
@@ -47,6 +57,19 @@
 /* References held between two writes, at most (a writev gathers twice
  * as many pieces and one, far below any system's IOV_MAX). */
 #define OUTPUT_REFERENCES 64
+
+/* Symbolic links followed to the file replaced, at most (Linux's). */
+#define OUTPUT_MAX_LINKS 40
+/* Names tried for the temporary file before giving up (mkstemp's
+ * EEXIST); each is one of 62^6. */
+#define OUTPUT_TEMP_TRIES 100
+/* A directory opened only to name files in it: search permission is
+ * enough for O_PATH, where the system has it. */
+#ifdef O_PATH
+#define OUTPUT_DIR_FLAGS (O_PATH | O_DIRECTORY | O_CLOEXEC)
+#else
+#define OUTPUT_DIR_FLAGS (O_RDONLY | O_DIRECTORY | O_CLOEXEC)
+#endif
 
 /* A write smaller than OUTPUT_DIRECT_WRITE must fit an empty buffer. */
 _Static_assert(OUTPUT_DIRECT_WRITE <= OUTPUT_PIPE_BUFFER &&
@@ -63,8 +86,10 @@ typedef struct output_reference {
 struct rayo_output {
     int fd;
     int owns_fd;
-    char *path;      /* final name (resolved), NULL for standard output */
-    char *temp;      /* temporary file, NULL when writing directly */
+    int dir_fd;      /* the target's directory, or -1 (writing directly) */
+    char *name;      /* the target's name in it (links followed) */
+    char *temp;      /* temporary file's name in it, NULL when writing
+                        directly */
     char *display;   /* name for messages */
     unsigned char *buffer; /* allocated at the first write */
     size_t capacity;
@@ -92,8 +117,10 @@ static void output_free(rayo_output *out)
 {
     if (out->owns_fd && out->fd >= 0)
         close(out->fd);
+    if (out->dir_fd >= 0)
+        close(out->dir_fd);
     free(out->buffer);
-    free(out->path);
+    free(out->name);
     free(out->temp);
     free(out->display);
     free(out);
@@ -106,7 +133,8 @@ static rayo_output *output_new(const char *display)
         return NULL;
     out->fd = -1;
     out->owns_fd = 0;
-    out->path = NULL;
+    out->dir_fd = -1;
+    out->name = NULL;
     out->temp = NULL;
     out->buffer = NULL;
     out->capacity = 0;
@@ -143,33 +171,80 @@ static mode_t new_file_mode(void)
     return (mode_t)(0666 & ~mask);
 }
 
-/* Creates the temporary file beside out->path; sets out->temp and fd. */
-static rayo_status open_temporary(rayo_output *out, mode_t mode,
+/* Six characters of [0-9A-Za-z] for a temporary name, from a mix of
+ * the clock, the process and a counter (splitmix64): O_EXCL, not the
+ * randomness, keeps the file ours. */
+static void random_suffix(char *six)
+{
+    static const char alphabet[] =
+        "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
+    static uint64_t counter;
+    struct timespec ts;
+    uint64_t x;
+    int i;
+    clock_gettime(CLOCK_REALTIME, &ts);
+    x = (uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 30) ^
+        ((uint64_t)getpid() << 20) ^ (++counter * 0x9e3779b97f4a7c15u);
+    x += 0x9e3779b97f4a7c15u;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9u;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebu;
+    x ^= x >> 31;
+    for (i = 0; i < 6; i++, x /= 62)
+        six[i] = alphabet[x % 62];
+}
+
+/* What the temporary file must have: the replaced file's mode (and, for
+ * root, owner), or a new file's. */
+typedef struct output_attributes {
+    mode_t mode;
+    int keep_owner; /* 1: give it uid and gid */
+    uid_t uid;
+    gid_t gid;
+} output_attributes;
+
+/* Gives the new temporary file its owner (first: chown clears the
+ * set-user-ID bit) and mode. */
+static int set_attributes(int fd, const output_attributes *want)
+{
+    struct stat st;
+    if (want->keep_owner && fstat(fd, &st) == 0 &&
+        (st.st_uid != want->uid || st.st_gid != want->gid) &&
+        fchown(fd, want->uid, want->gid) != 0)
+        return -1;
+    return fchmod(fd, want->mode);
+}
+
+/* Creates ".NAME.XXXXXX" in out->dir_fd, as mkstemp would; sets
+ * out->temp and out->fd. */
+static rayo_status open_temporary(rayo_output *out,
+                                  const output_attributes *want,
                                   rayo_error *err)
 {
-    const char *slash = strrchr(out->path, '/');
-    size_t dir_len = slash ? (size_t)(slash - out->path) + 1 : 0;
-    const char *base = out->path + dir_len;
-    size_t size = dir_len + 1 + strlen(base) + sizeof ".XXXXXX";
-    out->temp = malloc(size);
+    size_t length = strlen(out->name);
+    int tries, code = EEXIST;
+    out->temp = malloc(length + sizeof "..XXXXXX");
     if (out->temp == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
                               out->display);
-    memcpy(out->temp, out->path, dir_len);
-    out->temp[dir_len] = '.';
-    strcpy(out->temp + dir_len + 1, base);
-    strcat(out->temp, ".XXXXXX");
-    out->fd = mkstemp(out->temp);
+    out->temp[0] = '.';
+    memcpy(out->temp + 1, out->name, length);
+    out->temp[length + 1] = '.';
+    out->temp[length + 8] = '\0';
+    for (tries = 0; tries < OUTPUT_TEMP_TRIES && code == EEXIST; tries++) {
+        random_suffix(out->temp + length + 2);
+        out->fd = openat(out->dir_fd, out->temp,
+                         O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        code = out->fd < 0 ? errno : 0;
+    }
     if (out->fd < 0) {
-        int code = errno;
         free(out->temp);
         out->temp = NULL;
         return system_error(out, code, err);
     }
     out->owns_fd = 1;
-    if (fchmod(out->fd, mode) != 0) {
+    if (set_attributes(out->fd, want) != 0) {
         rayo_status status = system_error(out, errno, err);
-        unlink(out->temp);
+        unlinkat(out->dir_fd, out->temp, 0);
         free(out->temp);
         out->temp = NULL;
         return status;
@@ -177,12 +252,128 @@ static rayo_status open_temporary(rayo_output *out, mode_t mode,
     return RAYO_OK;
 }
 
+/*
+ * Splits path into its directory, opened as *dir_fd (relative to
+ * `from`), and its last name, copied into *name ("." when path ends in
+ * a slash, so that a directory is found to be one).
+ */
+static int open_parent(int from, const char *path, int *dir_fd, char **name)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash != NULL ? slash + 1 : path;
+    int fd;
+    if (slash == NULL) {
+        fd = openat(from, ".", OUTPUT_DIR_FLAGS);
+    } else if (slash == path) {
+        fd = open("/", OUTPUT_DIR_FLAGS);
+    } else {
+        char *dir = strndup(path, (size_t)(slash - path));
+        if (dir == NULL)
+            return ENOMEM;
+        fd = openat(from, dir, OUTPUT_DIR_FLAGS);
+        free(dir);
+    }
+    if (fd < 0)
+        return errno;
+    *name = strdup(*base != '\0' ? base : ".");
+    if (*name == NULL) {
+        close(fd);
+        return ENOMEM;
+    }
+    if (*dir_fd >= 0)
+        close(*dir_fd);
+    *dir_fd = fd;
+    return 0;
+}
+
+/*
+ * The kernel's protected_symlinks rule (fs.protected_symlinks = 1): a
+ * link in a sticky, world-writable directory is followed only by its
+ * owner, or when the directory's owner owns it too.  Otherwise anyone
+ * could plant, in /tmp, a link that leads whoever writes there to a file
+ * of theirs.  1 when the link may be followed.
+ */
+static int may_follow(int dir_fd, const struct stat *link)
+{
+    struct stat dir;
+    if (fstat(dir_fd, &dir) != 0)
+        return 0;
+    if ((dir.st_mode & (S_ISVTX | S_IWOTH)) != (S_ISVTX | S_IWOTH))
+        return 1;
+    return link->st_uid == geteuid() || link->st_uid == dir.st_uid;
+}
+
+/*
+ * Finds what out->display names, following symbolic links as the rule
+ * allows: out->dir_fd and out->name are then the directory and the name
+ * of something that is not a link (or does not exist: *exists 0; *st
+ * otherwise).  0 or an errno value; a link the rule forbids is EACCES,
+ * *refused_link set.
+ */
+static int output_target(rayo_output *out, struct stat *st, int *exists,
+                         int *refused_link)
+{
+    int code = open_parent(AT_FDCWD, out->display, &out->dir_fd, &out->name);
+    int links = 0;
+    *exists = 0;
+    *refused_link = 0;
+    while (code == 0) {
+        char target[PATH_MAX];
+        ssize_t length;
+        if (fstatat(out->dir_fd, out->name, st, AT_SYMLINK_NOFOLLOW) != 0)
+            return errno == ENOENT ? 0 : errno;
+        if (!S_ISLNK(st->st_mode)) {
+            *exists = 1;
+            return 0;
+        }
+        if (++links > OUTPUT_MAX_LINKS)
+            return ELOOP;
+        if (!may_follow(out->dir_fd, st)) {
+            *refused_link = 1;
+            return EACCES;
+        }
+        length = readlinkat(out->dir_fd, out->name, target, sizeof target);
+        if (length < 0)
+            return errno;
+        if ((size_t)length >= sizeof target)
+            return ENAMETOOLONG;
+        if (length == 0)
+            return ENOENT;
+        target[length] = '\0';
+        free(out->name);
+        out->name = NULL;
+        code = open_parent(out->dir_fd, target, &out->dir_fd, &out->name);
+    }
+    return code;
+}
+
+/*
+ * What a shell's `>` would refuse of an existing regular file, and what
+ * the rename would: one we may not write (checked with our effective
+ * ids, as open(2) does; root may write anything on a writable file
+ * system), and, in a sticky directory, one owned by another user, which
+ * only its owner, the directory's or root may replace.
+ */
+static int replaceable(const rayo_output *out, const struct stat *st)
+{
+    struct stat dir;
+    if (faccessat(out->dir_fd, out->name, W_OK, AT_EACCESS) != 0)
+        return errno;
+    if (geteuid() != 0 && fstat(out->dir_fd, &dir) == 0 &&
+        (dir.st_mode & S_ISVTX) && st->st_uid != geteuid() &&
+        dir.st_uid != geteuid())
+        return EPERM;
+    return 0;
+}
+
 rayo_status rayo_output_open(rayo_output **result, const char *path,
                              rayo_error *err)
 {
     rayo_output *out;
     struct stat st;
+    output_attributes want;
     rayo_status status;
+    int exists, refused_link, code;
     *result = NULL;
     if (strcmp(path, "-") == 0)
         return rayo_output_open_fd(result, STDOUT_FILENO, "standard output",
@@ -190,37 +381,43 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
     out = output_new(path);
     if (out == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory", path);
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        if (S_ISDIR(st.st_mode)) {
-            output_free(out);
-            return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
-                                  strerror(EISDIR));
-        }
+    code = output_target(out, &st, &exists, &refused_link);
+    if (code == 0 && exists && S_ISDIR(st.st_mode))
+        code = EISDIR;
+    if (code == 0 && exists && !S_ISREG(st.st_mode)) {
         /* A device, pipe or socket: write straight into it. */
-        out->fd = open(path, O_WRONLY | O_TRUNC | O_CLOEXEC);
+        out->fd = openat(out->dir_fd, out->name,
+                         O_WRONLY | O_TRUNC | O_CLOEXEC);
         if (out->fd < 0) {
             status = system_error(out, errno, err);
             output_free(out);
             return status;
         }
         out->owns_fd = 1;
+        close(out->dir_fd);
+        out->dir_fd = -1;
         *result = out;
         return RAYO_OK;
     }
-    {
-        /* Replace the target of a symbolic link, not the link itself. */
-        char *resolved = realpath(path, NULL);
-        out->path = resolved ? resolved : strdup(path);
-        if (out->path == NULL) {
-            output_free(out);
-            return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
-                                  path);
-        }
+    if (code == 0 && exists)
+        code = replaceable(out, &st);
+    if (code != 0) {
+        if (refused_link)
+            status = rayo_error_set(
+                err, RAYO_ERR_IO,
+                "%s: %s (a symbolic link in a sticky world-writable "
+                "directory, owned by another user: not followed)",
+                path, strerror(code));
+        else
+            status = system_error(out, code, err);
+        output_free(out);
+        return status;
     }
-    status = open_temporary(out, stat(out->path, &st) == 0
-                                     ? (mode_t)(st.st_mode & 07777)
-                                     : new_file_mode(),
-                            err);
+    want.mode = exists ? (mode_t)(st.st_mode & 07777) : new_file_mode();
+    want.keep_owner = exists && geteuid() == 0;
+    want.uid = exists ? st.st_uid : 0;
+    want.gid = exists ? st.st_gid : 0;
+    status = open_temporary(out, &want, err);
     if (status != RAYO_OK) {
         output_free(out);
         return status;
@@ -420,7 +617,7 @@ rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
         if (failed) {
             status = system_error(out, code, err);
         } else {
-            if (rename(out->temp, out->path) != 0)
+            if (renameat(out->dir_fd, out->temp, out->dir_fd, out->name) != 0)
                 status = system_error(out, errno, err);
             else {
                 free(out->temp);
@@ -441,7 +638,7 @@ void rayo_output_abort(rayo_output *out)
     if (out == NULL)
         return;
     if (out->temp != NULL)
-        unlink(out->temp);
+        unlinkat(out->dir_fd, out->temp, 0);
     output_free(out);
 }
 
@@ -450,8 +647,9 @@ const char *rayo_output_name(const rayo_output *out)
     return out->display;
 }
 
-const char *rayo_output_temp_path(const rayo_output *out)
+const char *rayo_output_temp_at(const rayo_output *out, int *dir_fd)
 {
+    *dir_fd = out->temp != NULL ? out->dir_fd : -1;
     return out->temp;
 }
 
