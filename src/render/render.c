@@ -25,6 +25,11 @@
  * reason helpers are started on another CPU than the caller's
  * (helper_cpus), and the caller spins while they end (join_helper).
  *
+ * A render stops within a ray of being asked (render_stop.h): the rows
+ * poll the stop inside their bands, a band abandoned for it is never
+ * delivered, and a render that ends early for any reason raises the
+ * stop so its helpers drop their bands at once.
+ *
  * Rows reach the sink as pixels, except for one shortcut of the
  * library's own: when the sink is rayo_writer_row_sink and its writer
  * takes runs (plain PBM, writer_runs.h), bands of the span path travel

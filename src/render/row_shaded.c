@@ -13,7 +13,9 @@
  *   course-gray   the integer part of the level (already clamped to 255);
  *   course-color  the integer part of 255 c (c already clamped to 1);
  *   phong         255 c rounded to the nearest level, c clamped to [0, 1].
- * It knows nothing of what a model computes; shade_*.c do.
+ * It knows nothing of what a model computes; shade_*.c do.  Before each
+ * ray it polls the render's stop (render_stop.h): one ray of the slowest
+ * legal scene takes milliseconds, one pixel of 256 rays seconds.
  */
 #include <string.h>
 
