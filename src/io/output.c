@@ -307,8 +307,10 @@ static int may_follow(int dir_fd, const struct stat *link)
  * Finds what out->display names, following symbolic links as the rule
  * allows: out->dir_fd and out->name are then the directory and the name
  * of something that is not a link (or does not exist: *exists 0; *st
- * otherwise).  0 or an errno value; a link the rule forbids is EACCES,
- * *refused_link set.
+ * otherwise), or of a link to a device, pipe or socket (*st then that
+ * thing's), which is opened through the link: /dev/stdout leads to
+ * /proc/self/fd/1, whose "pipe:[N]" names nothing to walk to.  0 or an
+ * errno value; a link the rule forbids is EACCES, *refused_link set.
  */
 static int output_target(rayo_output *out, struct stat *st, int *exists,
                          int *refused_link)
@@ -331,6 +333,11 @@ static int output_target(rayo_output *out, struct stat *st, int *exists,
         if (!may_follow(out->dir_fd, st)) {
             *refused_link = 1;
             return EACCES;
+        }
+        if (fstatat(out->dir_fd, out->name, st, 0) == 0 &&
+            !S_ISREG(st->st_mode) && !S_ISDIR(st->st_mode)) {
+            *exists = 1;
+            return 0;
         }
         length = readlinkat(out->dir_fd, out->name, target, sizeof target);
         if (length < 0)

@@ -794,6 +794,38 @@ static void test_links(void)
     remove_tree(dir);
 }
 
+/* A link to a pipe, as /dev/stdout is through /proc/self/fd/1 (whose
+ * target, "pipe:[N]", names nothing to walk to): written straight into
+ * the pipe, no temporary file. */
+static void test_link_to_pipe(void)
+{
+    char dir[64], link[96], target[64], got[8] = {0};
+    int fds[2], dir_fd = 0;
+    rayo_output *out;
+    rayo_error err;
+    int opened;
+    if (!make_dir(dir, sizeof dir, 0755) || pipe(fds) != 0) {
+        ok(0, "a directory and a pipe");
+        return;
+    }
+    snprintf(link, sizeof link, "%s/stdout", dir);
+    snprintf(target, sizeof target, "/proc/self/fd/%d", fds[1]);
+    if (symlink(target, link) != 0)
+        ok(0, "symlink");
+    opened = rayo_output_open(&out, link, &err) == RAYO_OK;
+    ok(opened && rayo_output_temp_at(out, &dir_fd) == NULL,
+       "a link to a pipe's /proc/self/fd entry: written directly");
+    if (opened) {
+        rayo_output_write(out, "P1\n", 3, &err);
+        is_int(rayo_output_commit(out, &err), RAYO_OK, "and committed");
+        ok(read(fds[0], got, 3) == 3 && strcmp(got, "P1\n") == 0,
+           "the bytes came through the pipe");
+    }
+    close(fds[0]);
+    close(fds[1]);
+    remove_tree(dir);
+}
+
 int main(void)
 {
     signal(SIGPIPE, SIG_IGN);
@@ -809,5 +841,6 @@ int main(void)
     test_keeps_mode();
     test_permissions();
     test_links();
+    test_link_to_pipe();
     return tap_done();
 }
