@@ -84,6 +84,19 @@ static void release_signals(const sigset_t *old)
     sigprocmask(SIG_SETMASK, old, NULL);
 }
 
+rayo_status cli_output_open(rayo_output **out, const char *path,
+                            rayo_error *err)
+{
+    sigset_t old;
+    rayo_status status;
+    hold_signals(&old);
+    status = rayo_output_open(out, path, err);
+    if (status == RAYO_OK)
+        cli_guard_output(*out);
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    return status;
+}
+
 rayo_status cli_output_commit(rayo_output *out, rayo_error *err)
 {
     sigset_t old;

@@ -21,6 +21,12 @@
  * started stay ignored. */
 void cli_guard_output(const rayo_output *out);
 
+/* rayo_output_open and cli_guard_output with the signals held off in
+ * between, so that no signal finds the temporary file made and not yet
+ * guarded. */
+rayo_status cli_output_open(rayo_output **out, const char *path,
+                            rayo_error *err);
+
 /* rayo_output_commit and rayo_output_abort with the signals held off
  * until the file is in place or gone, then the guard lifted; a signal
  * that came meanwhile takes effect then. */
