@@ -11,7 +11,7 @@
  * the temporary file with one unlinkat (rayo_output_temp_at).
  *
  * What it replaces is respected as a shell's redirection would respect
- * it (output_target and replaceable below): an existing file we may not
+ * it (output_target.c finds it and checks): an existing file we may not
  * write is refused before anything is created; a replaced file keeps its
  * mode and, when we are root, its owner and group; a symbolic link is
  * followed, so the link survives and its target is replaced, but only
@@ -33,11 +33,13 @@
  * the buffer's bytes around them (writev), so the kernel copies them
  * once, straight from where they are.
  */
-#define _GNU_SOURCE /* O_PATH */
+#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE
 
 #include "rayo/output.h"
 
 #include "output_reserve.h"
+#include "output_target.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -58,18 +60,9 @@
  * as many pieces and one, far below any system's IOV_MAX). */
 #define OUTPUT_REFERENCES 64
 
-/* Symbolic links followed to the file replaced, at most (Linux's). */
-#define OUTPUT_MAX_LINKS 40
 /* Names tried for the temporary file before giving up (mkstemp's
  * EEXIST); each is one of 62^6. */
 #define OUTPUT_TEMP_TRIES 100
-/* A directory opened only to name files in it: search permission is
- * enough for O_PATH, where the system has it. */
-#ifdef O_PATH
-#define OUTPUT_DIR_FLAGS (O_PATH | O_DIRECTORY | O_CLOEXEC)
-#else
-#define OUTPUT_DIR_FLAGS (O_RDONLY | O_DIRECTORY | O_CLOEXEC)
-#endif
 
 /* A write smaller than OUTPUT_DIRECT_WRITE must fit an empty buffer. */
 _Static_assert(OUTPUT_DIRECT_WRITE <= OUTPUT_PIPE_BUFFER &&
@@ -252,135 +245,14 @@ static rayo_status open_temporary(rayo_output *out,
     return RAYO_OK;
 }
 
-/*
- * Splits path into its directory, opened as *dir_fd (relative to
- * `from`), and its last name, copied into *name ("." when path ends in
- * a slash, so that a directory is found to be one).
- */
-static int open_parent(int from, const char *path, int *dir_fd, char **name)
-{
-    const char *slash = strrchr(path, '/');
-    const char *base = slash != NULL ? slash + 1 : path;
-    int fd;
-    if (slash == NULL) {
-        fd = openat(from, ".", OUTPUT_DIR_FLAGS);
-    } else if (slash == path) {
-        fd = open("/", OUTPUT_DIR_FLAGS);
-    } else {
-        char *dir = strndup(path, (size_t)(slash - path));
-        if (dir == NULL)
-            return ENOMEM;
-        fd = openat(from, dir, OUTPUT_DIR_FLAGS);
-        free(dir);
-    }
-    if (fd < 0)
-        return errno;
-    *name = strdup(*base != '\0' ? base : ".");
-    if (*name == NULL) {
-        close(fd);
-        return ENOMEM;
-    }
-    if (*dir_fd >= 0)
-        close(*dir_fd);
-    *dir_fd = fd;
-    return 0;
-}
-
-/*
- * The kernel's protected_symlinks rule (fs.protected_symlinks = 1): a
- * link in a sticky, world-writable directory is followed only by its
- * owner, or when the directory's owner owns it too.  Otherwise anyone
- * could plant, in /tmp, a link that leads whoever writes there to a file
- * of theirs.  1 when the link may be followed.
- */
-static int may_follow(int dir_fd, const struct stat *link)
-{
-    struct stat dir;
-    if (fstat(dir_fd, &dir) != 0)
-        return 0;
-    if ((dir.st_mode & (S_ISVTX | S_IWOTH)) != (S_ISVTX | S_IWOTH))
-        return 1;
-    return link->st_uid == geteuid() || link->st_uid == dir.st_uid;
-}
-
-/*
- * Finds what out->display names, following symbolic links as the rule
- * allows: out->dir_fd and out->name are then the directory and the name
- * of something that is not a link (or does not exist: *exists 0; *st
- * otherwise), or of a link to a device, pipe or socket (*st then that
- * thing's), which is opened through the link: /dev/stdout leads to
- * /proc/self/fd/1, whose "pipe:[N]" names nothing to walk to.  0 or an
- * errno value; a link the rule forbids is EACCES, *refused_link set.
- */
-static int output_target(rayo_output *out, struct stat *st, int *exists,
-                         int *refused_link)
-{
-    int code = open_parent(AT_FDCWD, out->display, &out->dir_fd, &out->name);
-    int links = 0;
-    *exists = 0;
-    *refused_link = 0;
-    while (code == 0) {
-        char target[PATH_MAX];
-        ssize_t length;
-        if (fstatat(out->dir_fd, out->name, st, AT_SYMLINK_NOFOLLOW) != 0)
-            return errno == ENOENT ? 0 : errno;
-        if (!S_ISLNK(st->st_mode)) {
-            *exists = 1;
-            return 0;
-        }
-        if (++links > OUTPUT_MAX_LINKS)
-            return ELOOP;
-        if (!may_follow(out->dir_fd, st)) {
-            *refused_link = 1;
-            return EACCES;
-        }
-        if (fstatat(out->dir_fd, out->name, st, 0) == 0 &&
-            !S_ISREG(st->st_mode) && !S_ISDIR(st->st_mode)) {
-            *exists = 1;
-            return 0;
-        }
-        length = readlinkat(out->dir_fd, out->name, target, sizeof target);
-        if (length < 0)
-            return errno;
-        if ((size_t)length >= sizeof target)
-            return ENAMETOOLONG;
-        if (length == 0)
-            return ENOENT;
-        target[length] = '\0';
-        free(out->name);
-        out->name = NULL;
-        code = open_parent(out->dir_fd, target, &out->dir_fd, &out->name);
-    }
-    return code;
-}
-
-/*
- * What a shell's `>` would refuse of an existing regular file, and what
- * the rename would: one we may not write (checked with our effective
- * ids, as open(2) does; root may write anything on a writable file
- * system), and, in a sticky directory, one owned by another user, which
- * only its owner, the directory's or root may replace.
- */
-static int replaceable(const rayo_output *out, const struct stat *st)
-{
-    struct stat dir;
-    if (faccessat(out->dir_fd, out->name, W_OK, AT_EACCESS) != 0)
-        return errno;
-    if (geteuid() != 0 && fstat(out->dir_fd, &dir) == 0 &&
-        (dir.st_mode & S_ISVTX) && st->st_uid != geteuid() &&
-        dir.st_uid != geteuid())
-        return EPERM;
-    return 0;
-}
-
 rayo_status rayo_output_open(rayo_output **result, const char *path,
                              rayo_error *err)
 {
     rayo_output *out;
-    struct stat st;
+    rayo_output_target target;
     output_attributes want;
     rayo_status status;
-    int exists, refused_link, code;
+    int code;
     *result = NULL;
     if (strcmp(path, "-") == 0)
         return rayo_output_open_fd(result, STDOUT_FILENO, "standard output",
@@ -388,28 +260,28 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
     out = output_new(path);
     if (out == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory", path);
-    code = output_target(out, &st, &exists, &refused_link);
-    if (code == 0 && exists && S_ISDIR(st.st_mode))
+    code = rayo_output_target_find(&target, path);
+    if (code == 0 && target.exists && S_ISDIR(target.st.st_mode))
         code = EISDIR;
-    if (code == 0 && exists && !S_ISREG(st.st_mode)) {
+    if (code == 0 && target.exists && !S_ISREG(target.st.st_mode)) {
         /* A device, pipe or socket: write straight into it. */
-        out->fd = openat(out->dir_fd, out->name,
+        out->fd = openat(target.dir_fd, target.name,
                          O_WRONLY | O_TRUNC | O_CLOEXEC);
-        if (out->fd < 0) {
-            status = system_error(out, errno, err);
+        code = out->fd < 0 ? errno : 0;
+        rayo_output_target_free(&target);
+        if (code != 0) {
+            status = system_error(out, code, err);
             output_free(out);
             return status;
         }
         out->owns_fd = 1;
-        close(out->dir_fd);
-        out->dir_fd = -1;
         *result = out;
         return RAYO_OK;
     }
-    if (code == 0 && exists)
-        code = replaceable(out, &st);
+    if (code == 0 && target.exists)
+        code = rayo_output_target_replaceable(&target);
     if (code != 0) {
-        if (refused_link)
+        if (target.refused_link)
             status = rayo_error_set(
                 err, RAYO_ERR_IO,
                 "%s: %s (a symbolic link in a sticky world-writable "
@@ -417,13 +289,17 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
                 path, strerror(code));
         else
             status = system_error(out, code, err);
+        rayo_output_target_free(&target);
         output_free(out);
         return status;
     }
-    want.mode = exists ? (mode_t)(st.st_mode & 07777) : new_file_mode();
-    want.keep_owner = exists && geteuid() == 0;
-    want.uid = exists ? st.st_uid : 0;
-    want.gid = exists ? st.st_gid : 0;
+    want.mode = target.exists ? (mode_t)(target.st.st_mode & 07777)
+                              : new_file_mode();
+    want.keep_owner = target.exists && geteuid() == 0;
+    want.uid = target.exists ? target.st.st_uid : 0;
+    want.gid = target.exists ? target.st.st_gid : 0;
+    out->dir_fd = target.dir_fd; /* taken over */
+    out->name = target.name;
     status = open_temporary(out, &want, err);
     if (status != RAYO_OK) {
         output_free(out);
