@@ -206,9 +206,8 @@ static int write_diff(const char *path, const rayo_image *reference,
     rayo_output *out;
     rayo_error err;
     rayo_error_clear(&err);
-    if (rayo_output_open(&out, path, &err) != RAYO_OK)
+    if (cli_output_open(&out, path, &err) != RAYO_OK)
         return cli_report(&err);
-    cli_guard_output(out);
     if (rayo_compare_write_diff(reference, image, options, out, &err) ==
         RAYO_OK)
         cli_output_commit(out, &err);

@@ -221,10 +221,9 @@ static rayo_status write_image(const convert_request *req,
                                rayo_error *err)
 {
     rayo_output *out;
-    rayo_status status = rayo_output_open(&out, req->output, err);
+    rayo_status status = cli_output_open(&out, req->output, err);
     if (status != RAYO_OK)
         return status;
-    cli_guard_output(out);
     status = rayo_image_write(fit, out, options, err);
     if (status != RAYO_OK) {
         cli_output_abort(out);

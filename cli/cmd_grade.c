@@ -471,9 +471,8 @@ static int write_whole(const char *path, const char *text, size_t size)
     rayo_error err;
     rayo_error_clear(&err);
     fflush(stdout);
-    if (rayo_output_open(&out, path, &err) != RAYO_OK)
+    if (cli_output_open(&out, path, &err) != RAYO_OK)
         return cli_report(&err);
-    cli_guard_output(out);
     if (rayo_output_write(out, text, size, &err) != RAYO_OK) {
         cli_output_abort(out);
         return cli_report(&err);

@@ -43,8 +43,8 @@ typedef struct render_request {
     unsigned long depth;
 } render_request;
 
-/* The render's progress callback: draws the bar, stops on a signal (the
-   render then stops at the next band). */
+/* The render's progress callback: draws the bar, stops on a signal
+   (which the rendering threads see sooner, through options.cancel). */
 static int stop_requested(void *context, uint32_t done, uint32_t total)
 {
     cli_progress_update(context, done, total);
@@ -491,6 +491,7 @@ int cli_render(int argc, char **argv)
     options.threads = (unsigned)req->threads;
     options.progress = stop_requested;
     options.progress_context = &progress;
+    options.cancel = cli_interrupt_cancel; /* within a ray of a signal */
     cli_interrupt_catch();
 
     if (req->preview) {
@@ -505,7 +506,8 @@ int cli_render(int argc, char **argv)
                                                 rayo_output_is_terminal(out)));
     if (err.status == RAYO_OK) {
         if (render_to(out, &camera, scene, &options, &write_options,
-                      preview, &err) == RAYO_OK)
+                      preview, &err) == RAYO_OK &&
+            cli_interrupted() == 0)
             rayo_output_commit(out, &err);
         else
             rayo_output_abort(out);

@@ -5,7 +5,17 @@
  * so the same file system) and renamed over the final name only on
  * rayo_output_commit, after everything was written and synced; a failure
  * or rayo_output_abort removes the temporary file and leaves any earlier
- * file of that name untouched.  Standard output ("-"), devices, pipes and
+ * file of that name untouched.  The directory is held open meanwhile, so
+ * a directory renamed mid-way gets the file, or loses the temporary
+ * file, where it now is.
+ *
+ * An existing file is replaced only where a shell's `>` could write it:
+ * one we may not write is refused (RAYO_ERR_IO, "Permission denied")
+ * before anything is created, and a replaced file keeps its mode (for
+ * root, its owner and group too).  A symbolic link is followed (the link
+ * stays, its target is replaced) except where the kernel's
+ * protected_symlinks rule forbids it: in a sticky world-writable
+ * directory, a link owned by neither us nor the directory's owner.  Standard output ("-"), devices, pipes and
  * sockets are written directly: nothing is ever renamed over /dev/null.
  *
  * Writes are buffered; errors carry the file name and the system's reason.
@@ -56,10 +66,13 @@ const char *rayo_output_name(const rayo_output *out);
 int rayo_output_is_terminal(const rayo_output *out);
 
 /*
- * The temporary file being written, or NULL when writing directly.  Lets a
- * signal handler unlink(2) it before the process dies.
+ * The temporary file being written: its name in the directory open as
+ * *dir_fd (kept open by out until commit or abort), or NULL (and *dir_fd
+ * -1) when writing directly.  Lets a signal handler remove it before the
+ * process dies, with unlinkat(*dir_fd, name, 0), which is async-signal-
+ * safe and finds the file even after its directory was renamed.
  */
-const char *rayo_output_temp_path(const rayo_output *out);
+const char *rayo_output_temp_at(const rayo_output *out, int *dir_fd);
 
 #ifdef __cplusplus
 }

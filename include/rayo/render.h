@@ -54,6 +54,18 @@ const char *rayo_shade_mode_name(rayo_shade_mode mode);
 typedef int (*rayo_progress_fn)(void *context, uint32_t rows_done,
                                 uint32_t rows_total);
 
+/*
+ * Polled by every rendering thread inside its band, before each ray of a
+ * sampled or shaded render and every few pixels of a one-ray hit render
+ * (each band on its fast path, whose rows take microseconds): return
+ * nonzero to stop the render within about one ray's time (rayo_render
+ * then fails with RAYO_ERR_CANCELLED, and no row after the last
+ * delivered one reaches the sink).  Called from several threads at once,
+ * very often: it must be cheap and thread-safe, such as a relaxed atomic
+ * load of a flag a signal handler sets.  rayo_render_row does not poll.
+ */
+typedef int (*rayo_cancel_fn)(void *context);
+
 typedef struct rayo_render_options {
     rayo_shade_mode shade;
     unsigned samples; /* N: N x N stratified rays per pixel; default 1 */
@@ -61,10 +73,12 @@ typedef struct rayo_render_options {
     unsigned threads; /* 0: one per CPU (rayo_cpu_count) */
     rayo_progress_fn progress; /* may be NULL */
     void *progress_context;
+    rayo_cancel_fn cancel; /* may be NULL */
+    void *cancel_context;
 } rayo_render_options;
 
-/* Hit shading, 1 sample, depth 5, one thread per CPU, no progress
- * callback. */
+/* Hit shading, 1 sample, depth 5, one thread per CPU, no progress or
+ * cancel callback. */
 void rayo_render_options_init(rayo_render_options *options);
 
 /* The layout of the rows this camera and shading mode produce. */

@@ -2,10 +2,20 @@
  * output.c - buffered, atomic output files (see output.h for the contract).
  *
  * The temporary file is ".NAME.XXXXXX" in the target's directory, created
- * by mkstemp, given the mode a new file would get (0666 less the umask, or
- * the existing file's mode), filled, fsync'ed, closed and renamed.  A
- * symbolic link to a regular file is followed, so the link survives and
- * its target is replaced.
+ * as mkstemp would (O_EXCL, six random characters), given the mode a new
+ * file would get (0666 less the umask, or the existing file's mode),
+ * filled, fsync'ed, closed and renamed.  Everything after the opening
+ * goes through a descriptor of that directory (openat, renameat,
+ * unlinkat): a directory renamed mid-way still gets its file, or loses
+ * its temporary file, where it now is, and a signal handler can remove
+ * the temporary file with one unlinkat (rayo_output_temp_at).
+ *
+ * What it replaces is respected as a shell's redirection would respect
+ * it (output_target.c finds it and checks): an existing file we may not
+ * write is refused before anything is created; a replaced file keeps its
+ * mode and, when we are root, its owner and group; a symbolic link is
+ * followed, so the link survives and its target is replaced, but only
+ * where the kernel's protected_symlinks rule would follow it.
  *
  * The buffer's size suits what is written to, and is chosen (by fstat)
  * at the first write.  A pipe gets one pipe's worth: the reader empties
@@ -29,6 +39,7 @@
 #include "rayo/output.h"
 
 #include "output_reserve.h"
+#include "output_target.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -39,6 +50,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/uio.h>
+#include <time.h>
 #include <unistd.h>
 
 #define OUTPUT_PIPE_BUFFER (64u * 1024u)    /* Linux's default pipe size */
@@ -47,6 +59,10 @@
 /* References held between two writes, at most (a writev gathers twice
  * as many pieces and one, far below any system's IOV_MAX). */
 #define OUTPUT_REFERENCES 64
+
+/* Names tried for the temporary file before giving up (mkstemp's
+ * EEXIST); each is one of 62^6. */
+#define OUTPUT_TEMP_TRIES 100
 
 /* A write smaller than OUTPUT_DIRECT_WRITE must fit an empty buffer. */
 _Static_assert(OUTPUT_DIRECT_WRITE <= OUTPUT_PIPE_BUFFER &&
@@ -63,8 +79,10 @@ typedef struct output_reference {
 struct rayo_output {
     int fd;
     int owns_fd;
-    char *path;      /* final name (resolved), NULL for standard output */
-    char *temp;      /* temporary file, NULL when writing directly */
+    int dir_fd;      /* the target's directory, or -1 (writing directly) */
+    char *name;      /* the target's name in it (links followed) */
+    char *temp;      /* temporary file's name in it, NULL when writing
+                        directly */
     char *display;   /* name for messages */
     unsigned char *buffer; /* allocated at the first write */
     size_t capacity;
@@ -92,8 +110,10 @@ static void output_free(rayo_output *out)
 {
     if (out->owns_fd && out->fd >= 0)
         close(out->fd);
+    if (out->dir_fd >= 0)
+        close(out->dir_fd);
     free(out->buffer);
-    free(out->path);
+    free(out->name);
     free(out->temp);
     free(out->display);
     free(out);
@@ -106,7 +126,8 @@ static rayo_output *output_new(const char *display)
         return NULL;
     out->fd = -1;
     out->owns_fd = 0;
-    out->path = NULL;
+    out->dir_fd = -1;
+    out->name = NULL;
     out->temp = NULL;
     out->buffer = NULL;
     out->capacity = 0;
@@ -143,33 +164,80 @@ static mode_t new_file_mode(void)
     return (mode_t)(0666 & ~mask);
 }
 
-/* Creates the temporary file beside out->path; sets out->temp and fd. */
-static rayo_status open_temporary(rayo_output *out, mode_t mode,
+/* Six characters of [0-9A-Za-z] for a temporary name, from a mix of
+ * the clock, the process and a counter (splitmix64): O_EXCL, not the
+ * randomness, keeps the file ours. */
+static void random_suffix(char *six)
+{
+    static const char alphabet[] =
+        "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
+    static uint64_t counter;
+    struct timespec ts;
+    uint64_t x;
+    int i;
+    clock_gettime(CLOCK_REALTIME, &ts);
+    x = (uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 30) ^
+        ((uint64_t)getpid() << 20) ^ (++counter * 0x9e3779b97f4a7c15u);
+    x += 0x9e3779b97f4a7c15u;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9u;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebu;
+    x ^= x >> 31;
+    for (i = 0; i < 6; i++, x /= 62)
+        six[i] = alphabet[x % 62];
+}
+
+/* What the temporary file must have: the replaced file's mode (and, for
+ * root, owner), or a new file's. */
+typedef struct output_attributes {
+    mode_t mode;
+    int keep_owner; /* 1: give it uid and gid */
+    uid_t uid;
+    gid_t gid;
+} output_attributes;
+
+/* Gives the new temporary file its owner (first: chown clears the
+ * set-user-ID bit) and mode. */
+static int set_attributes(int fd, const output_attributes *want)
+{
+    struct stat st;
+    if (want->keep_owner && fstat(fd, &st) == 0 &&
+        (st.st_uid != want->uid || st.st_gid != want->gid) &&
+        fchown(fd, want->uid, want->gid) != 0)
+        return -1;
+    return fchmod(fd, want->mode);
+}
+
+/* Creates ".NAME.XXXXXX" in out->dir_fd, as mkstemp would; sets
+ * out->temp and out->fd. */
+static rayo_status open_temporary(rayo_output *out,
+                                  const output_attributes *want,
                                   rayo_error *err)
 {
-    const char *slash = strrchr(out->path, '/');
-    size_t dir_len = slash ? (size_t)(slash - out->path) + 1 : 0;
-    const char *base = out->path + dir_len;
-    size_t size = dir_len + 1 + strlen(base) + sizeof ".XXXXXX";
-    out->temp = malloc(size);
+    size_t length = strlen(out->name);
+    int tries, code = EEXIST;
+    out->temp = malloc(length + sizeof "..XXXXXX");
     if (out->temp == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
                               out->display);
-    memcpy(out->temp, out->path, dir_len);
-    out->temp[dir_len] = '.';
-    strcpy(out->temp + dir_len + 1, base);
-    strcat(out->temp, ".XXXXXX");
-    out->fd = mkstemp(out->temp);
+    out->temp[0] = '.';
+    memcpy(out->temp + 1, out->name, length);
+    out->temp[length + 1] = '.';
+    out->temp[length + 8] = '\0';
+    for (tries = 0; tries < OUTPUT_TEMP_TRIES && code == EEXIST; tries++) {
+        random_suffix(out->temp + length + 2);
+        out->fd = openat(out->dir_fd, out->temp,
+                         O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        code = out->fd < 0 ? errno : 0;
+    }
     if (out->fd < 0) {
-        int code = errno;
         free(out->temp);
         out->temp = NULL;
         return system_error(out, code, err);
     }
     out->owns_fd = 1;
-    if (fchmod(out->fd, mode) != 0) {
+    if (set_attributes(out->fd, want) != 0) {
         rayo_status status = system_error(out, errno, err);
-        unlink(out->temp);
+        unlinkat(out->dir_fd, out->temp, 0);
         free(out->temp);
         out->temp = NULL;
         return status;
@@ -181,8 +249,10 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
                              rayo_error *err)
 {
     rayo_output *out;
-    struct stat st;
+    rayo_output_target target;
+    output_attributes want;
     rayo_status status;
+    int code;
     *result = NULL;
     if (strcmp(path, "-") == 0)
         return rayo_output_open_fd(result, STDOUT_FILENO, "standard output",
@@ -190,16 +260,17 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
     out = output_new(path);
     if (out == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory", path);
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        if (S_ISDIR(st.st_mode)) {
-            output_free(out);
-            return rayo_error_set(err, RAYO_ERR_IO, "%s: %s", path,
-                                  strerror(EISDIR));
-        }
+    code = rayo_output_target_find(&target, path);
+    if (code == 0 && target.exists && S_ISDIR(target.st.st_mode))
+        code = EISDIR;
+    if (code == 0 && target.exists && !S_ISREG(target.st.st_mode)) {
         /* A device, pipe or socket: write straight into it. */
-        out->fd = open(path, O_WRONLY | O_TRUNC | O_CLOEXEC);
-        if (out->fd < 0) {
-            status = system_error(out, errno, err);
+        out->fd = openat(target.dir_fd, target.name,
+                         O_WRONLY | O_TRUNC | O_CLOEXEC);
+        code = out->fd < 0 ? errno : 0;
+        rayo_output_target_free(&target);
+        if (code != 0) {
+            status = system_error(out, code, err);
             output_free(out);
             return status;
         }
@@ -207,20 +278,29 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
         *result = out;
         return RAYO_OK;
     }
-    {
-        /* Replace the target of a symbolic link, not the link itself. */
-        char *resolved = realpath(path, NULL);
-        out->path = resolved ? resolved : strdup(path);
-        if (out->path == NULL) {
-            output_free(out);
-            return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
-                                  path);
-        }
+    if (code == 0 && target.exists)
+        code = rayo_output_target_replaceable(&target);
+    if (code != 0) {
+        if (target.refused_link)
+            status = rayo_error_set(
+                err, RAYO_ERR_IO,
+                "%s: %s (a symbolic link in a sticky world-writable "
+                "directory, owned by another user: not followed)",
+                path, strerror(code));
+        else
+            status = system_error(out, code, err);
+        rayo_output_target_free(&target);
+        output_free(out);
+        return status;
     }
-    status = open_temporary(out, stat(out->path, &st) == 0
-                                     ? (mode_t)(st.st_mode & 07777)
-                                     : new_file_mode(),
-                            err);
+    want.mode = target.exists ? (mode_t)(target.st.st_mode & 07777)
+                              : new_file_mode();
+    want.keep_owner = target.exists && geteuid() == 0;
+    want.uid = target.exists ? target.st.st_uid : 0;
+    want.gid = target.exists ? target.st.st_gid : 0;
+    out->dir_fd = target.dir_fd; /* taken over */
+    out->name = target.name;
+    status = open_temporary(out, &want, err);
     if (status != RAYO_OK) {
         output_free(out);
         return status;
@@ -420,7 +500,7 @@ rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
         if (failed) {
             status = system_error(out, code, err);
         } else {
-            if (rename(out->temp, out->path) != 0)
+            if (renameat(out->dir_fd, out->temp, out->dir_fd, out->name) != 0)
                 status = system_error(out, errno, err);
             else {
                 free(out->temp);
@@ -441,7 +521,7 @@ void rayo_output_abort(rayo_output *out)
     if (out == NULL)
         return;
     if (out->temp != NULL)
-        unlink(out->temp);
+        unlinkat(out->dir_fd, out->temp, 0);
     output_free(out);
 }
 
@@ -450,8 +530,9 @@ const char *rayo_output_name(const rayo_output *out)
     return out->display;
 }
 
-const char *rayo_output_temp_path(const rayo_output *out)
+const char *rayo_output_temp_at(const rayo_output *out, int *dir_fd)
 {
+    *dir_fd = out->temp != NULL ? out->dir_fd : -1;
     return out->temp;
 }
 

@@ -25,6 +25,11 @@
  * reason helpers are started on another CPU than the caller's
  * (helper_cpus), and the caller spins while they end (join_helper).
  *
+ * A render stops within a ray of being asked (render_stop.h): the rows
+ * poll the stop inside their bands, a band abandoned for it is never
+ * delivered, and a render that ends early for any reason raises the
+ * stop so its helpers drop their bands at once.
+ *
  * Rows reach the sink as pixels, except for one shortcut of the
  * library's own: when the sink is rayo_writer_row_sink and its writer
  * takes runs (plain PBM, writer_runs.h), bands of the span path travel
@@ -95,6 +100,7 @@ typedef struct band_job {
     pthread_mutex_t lock;
     pthread_cond_t changed; /* a band was rendered or delivered, or stop */
     atomic_uint version;    /* counts those changes, for spinning */
+    rayo_render_stop stopper; /* polled inside bands (render_stop.h) */
     unsigned sleepers;      /* threads waiting on changed */
     int spin;               /* spin before sleeping: a CPU per thread */
     uint32_t next_band;     /* next band to claim */
@@ -130,6 +136,8 @@ void rayo_render_options_init(rayo_render_options *options)
     options->threads = 0;
     options->progress = NULL;
     options->progress_context = NULL;
+    options->cancel = NULL;
+    options->cancel_context = NULL;
 }
 
 static uint32_t band_rows(uint32_t rows, uint32_t first, uint32_t per_band)
@@ -158,6 +166,18 @@ static void render_band(const band_job *job, uint32_t band, uint32_t slot)
                               slot_runs(job, slot));
 }
 
+static rayo_status cancelled(rayo_error *err)
+{
+    return rayo_error_set(err, RAYO_ERR_CANCELLED, "render cancelled");
+}
+
+/* 1 when the render is to stop: a band rendered before this says no is
+ * whole, and one abandoned for the stop is never delivered. */
+static int stopping(band_job *job)
+{
+    return rayo_render_stopping(&job->stopper);
+}
+
 static rayo_status deliver(band_job *job, uint32_t band, uint32_t slot,
                            rayo_row_sink sink, void *context,
                            rayo_error *err)
@@ -176,7 +196,7 @@ static rayo_status deliver(band_job *job, uint32_t band, uint32_t slot,
     if (job->options->progress != NULL &&
         job->options->progress(job->options->progress_context, first + count,
                                job->camera->height))
-        return rayo_error_set(err, RAYO_ERR_CANCELLED, "render cancelled");
+        return cancelled(err);
     return RAYO_OK;
 }
 
@@ -189,6 +209,8 @@ static rayo_status run_serial(band_job *job, uint32_t band,
     for (; band < job->band_count; band++) {
         rayo_status status;
         render_band(job, band, 0);
+        if (stopping(job))
+            return cancelled(err);
         status = deliver(job, band, 0, sink, context, err);
         if (status != RAYO_OK)
             return status;
@@ -411,6 +433,12 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     while (band < job->band_count && status == RAYO_OK) {
         uint32_t *ready = &job->ready[band % job->slot_count];
         unsigned seen;
+        /* Before a band is taken as ready: one abandoned mid-way was
+         * marked ready after its renderer saw the stop. */
+        if (stopping(job)) {
+            status = cancelled(err);
+            break;
+        }
         if (*ready != 0) {
             uint32_t slot = *ready - 1;
             pthread_mutex_unlock(&job->lock);
@@ -430,6 +458,8 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
             await_change(job, seen);
     }
     job->stop = 1;
+    if (status != RAYO_OK) /* helpers abandon their bands at once */
+        rayo_render_stop_now(&job->stopper);
     announce(job);
     pthread_mutex_unlock(&job->lock);
     for (i = 0; i < started; i++)
@@ -456,6 +486,8 @@ static rayo_status run_adaptive(band_job *job, unsigned threads,
     uint32_t band;
     rayo_row_plan_render(&job->plan, 0, slot_memory(job, 0));
     rendering = seconds_now() - start;
+    if (stopping(job))
+        return cancelled(err);
     if (rendering * job->camera->height >= SERIAL_BELOW_SECONDS)
         return run_parallel(job, threads, 0, sink, context, err);
     rendering = 0.0;
@@ -467,6 +499,8 @@ static rayo_status run_adaptive(band_job *job, unsigned threads,
         start = seconds_now();
         render_band(job, band, 0);
         rendering += seconds_now() - start;
+        if (stopping(job))
+            return cancelled(err);
         status = deliver(job, band, 0, sink, context, err);
         if (status != RAYO_OK)
             return status;
@@ -493,6 +527,8 @@ rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
     job.options = options;
     job.row_bytes = rayo_image_info_row_bytes(&info);
     rayo_row_plan_init(&job.plan, camera, scene, options);
+    rayo_render_stop_init(&job.stopper, options);
+    job.plan.stop = &job.stopper;
     job.runs_writer = rayo_row_plan_has_runs(&job.plan)
                           ? rayo_writer_taking_runs(sink, sink_context, &info)
                           : NULL;

@@ -12,14 +12,22 @@
 #include "row_plan.h"
 #include "shade.h"
 
+/* Pixels of the hit loop between two polls of the stop: a pixel is one
+ * ray, and a poll would cost a good part of a cheap one. */
+#define HIT_PIXELS_PER_POLL 64u
+
 /* The per-pixel loop of hit mode. */
 static void render_row_hit(const rayo_camera *camera, const rayo_scene *scene,
-                           uint32_t row, unsigned char *out)
+                           rayo_render_stop *stop, uint32_t row,
+                           unsigned char *out)
 {
     uint32_t i;
     memset(out, 0, ((size_t)camera->width + 7) / 8);
     for (i = 0; i < camera->width; i++) {
-        rayo_ray ray = rayo_camera_ray(camera, (double)i, (double)row);
+        rayo_ray ray;
+        if (i % HIT_PIXELS_PER_POLL == 0 && rayo_render_stopping(stop))
+            return;
+        ray = rayo_camera_ray(camera, (double)i, (double)row);
         if (rayo_scene_hit_any(scene, &ray, 0.0))
             out[i >> 3] = (unsigned char)(out[i >> 3] | (0x80u >> (i & 7)));
     }
@@ -35,6 +43,7 @@ void rayo_row_plan_init(rayo_row_plan *plan, const rayo_camera *camera,
     plan->hit_only =
         options->shade == RAYO_SHADE_HIT && options->samples <= 1;
     plan->spans = plan->hit_only ? rayo_hit_spans_plan(camera, scene) : NULL;
+    plan->stop = NULL;
 }
 
 void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
@@ -43,10 +52,10 @@ void rayo_row_plan_render(const rayo_row_plan *plan, uint32_t row,
     if (plan->spans != NULL)
         rayo_hit_spans_render(plan->spans, row, out); /* the same bits */
     else if (plan->hit_only)
-        render_row_hit(plan->camera, plan->scene, row, out);
+        render_row_hit(plan->camera, plan->scene, plan->stop, row, out);
     else
-        rayo_render_row_shaded(plan->camera, plan->scene, plan->options, row,
-                               out);
+        rayo_render_row_shaded(plan->camera, plan->scene, plan->options,
+                               plan->stop, row, out);
 }
 
 void rayo_row_plan_render_rows(const rayo_row_plan *plan, uint32_t first,
@@ -59,7 +68,7 @@ void rayo_row_plan_render_rows(const rayo_row_plan *plan, uint32_t first,
                                    runs);
         return;
     }
-    for (r = 0; r < count; r++) {
+    for (r = 0; r < count && !rayo_render_stopping(plan->stop); r++) {
         rayo_row_plan_render(plan, first + r, out + (size_t)r * stride);
         if (runs != NULL)
             runs[r].count = RAYO_ROW_RUNS_BITS;

@@ -16,6 +16,7 @@
 #include "rayo/render.h"
 
 #include "hit_spans.h"
+#include "render_stop.h"
 
 typedef struct rayo_row_plan {
     const rayo_camera *camera;
@@ -23,9 +24,12 @@ typedef struct rayo_row_plan {
     const rayo_render_options *options;
     int hit_only;          /* hit mode, one sample: bits, not shading */
     rayo_hit_spans *spans; /* hit_only and spans apply; or NULL */
+    rayo_render_stop *stop; /* polled inside rows (render_stop.h); NULL,
+                               as rayo_row_plan_init leaves it: never */
 } rayo_row_plan;
 
-/* Cannot fail: without memory for the fast path, rows take the loop. */
+/* Cannot fail: without memory for the fast path, rows take the loop.
+ * A row abandoned for the stop is left incomplete: the render fails. */
 void rayo_row_plan_init(rayo_row_plan *plan, const rayo_camera *camera,
                         const rayo_scene *scene,
                         const rayo_render_options *options);

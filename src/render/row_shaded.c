@@ -13,7 +13,9 @@
  *   course-gray   the integer part of the level (already clamped to 255);
  *   course-color  the integer part of 255 c (c already clamped to 1);
  *   phong         255 c rounded to the nearest level, c clamped to [0, 1].
- * It knows nothing of what a model computes; shade_*.c do.
+ * It knows nothing of what a model computes; shade_*.c do.  Before each
+ * ray it polls the render's stop (render_stop.h): one ray of the slowest
+ * legal scene takes milliseconds, one pixel of 256 rays seconds.
  */
 #include <string.h>
 
@@ -44,24 +46,29 @@ static unsigned sample_count(const rayo_render_options *options)
                                                : options->samples;
 }
 
-/* The sum of the pixel's n x n samples, in a fixed order. */
-static rayo_vec3 pixel_sum(const rayo_camera *camera,
-                            const rayo_scene *scene,
-                            const rayo_render_options *options, uint32_t i,
-                            uint32_t j)
+/* The sum of the pixel's n x n samples, in a fixed order, into *sum;
+ * 0 when the stop came first (one ray, with thousands of lights and deep
+ * mirrors, can take milliseconds, a pixel of 256 of them a second). */
+static int pixel_sum(const rayo_camera *camera, const rayo_scene *scene,
+                     const rayo_render_options *options,
+                     rayo_render_stop *stop, uint32_t i, uint32_t j,
+                     rayo_vec3 *sum)
 {
     unsigned n = sample_count(options), a, b;
-    rayo_vec3 sum = rayo_vec3_make(0, 0, 0);
+    rayo_vec3 total = rayo_vec3_make(0, 0, 0);
     for (b = 0; b < n; b++) {
         double dy = (b + 0.5) / n - 0.5;
         for (a = 0; a < n; a++) {
             double dx = (a + 0.5) / n - 0.5;
-            rayo_ray ray = rayo_camera_ray(camera, (double)i + dx,
-                                           (double)j + dy);
-            sum = rayo_vec3_add(sum, shade_one(scene, options, &ray));
+            rayo_ray ray;
+            if (rayo_render_stopping(stop))
+                return 0;
+            ray = rayo_camera_ray(camera, (double)i + dx, (double)j + dy);
+            total = rayo_vec3_add(total, shade_one(scene, options, &ray));
         }
     }
-    return sum;
+    *sum = total;
+    return 1;
 }
 
 static unsigned char course_byte(double c)
@@ -81,16 +88,19 @@ static unsigned char phong_byte(double c)
 void rayo_render_row_shaded(const rayo_camera *camera,
                             const rayo_scene *scene,
                             const rayo_render_options *options,
-                            uint32_t row, unsigned char *out)
+                            rayo_render_stop *stop, uint32_t row,
+                            unsigned char *out)
 {
     double rays = (double)sample_count(options) * sample_count(options);
     uint32_t i;
     if (options->shade == RAYO_SHADE_HIT)
         memset(out, 0, ((size_t)camera->width + 7) / 8);
     for (i = 0; i < camera->width; i++) {
-        rayo_vec3 sum = pixel_sum(camera, scene, options, i, row);
-        rayo_vec3 c = rayo_vec3_scale(sum, 1.0 / rays);
+        rayo_vec3 sum, c;
         unsigned char *rgb = out + 3 * (size_t)i;
+        if (!pixel_sum(camera, scene, options, stop, i, row, &sum))
+            return;
+        c = rayo_vec3_scale(sum, 1.0 / rays);
         switch (options->shade) {
         case RAYO_SHADE_HIT:
             if (2.0 * sum.x >= rays)

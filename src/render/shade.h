@@ -15,6 +15,8 @@
 
 #include "rayo/render.h"
 
+#include "render_stop.h"
+
 /*
  * The course's scene 2 model: a gray level in 0..255 (already clamped
  * to 255, not yet truncated), the same in all three components.
@@ -44,11 +46,14 @@ rayo_vec3 rayo_shade_phong(const rayo_scene *scene, const rayo_ray *ray,
 
 /*
  * One row of any mode with options->samples x options->samples rays per
- * pixel (hit mode: black where at least half of them hit).
+ * pixel (hit mode: black where at least half of them hit).  Polls stop
+ * (may be NULL) before each ray, and abandons the row, incomplete, when
+ * it says to stop.
  */
 void rayo_render_row_shaded(const rayo_camera *camera,
                             const rayo_scene *scene,
                             const rayo_render_options *options,
-                            uint32_t row, unsigned char *out);
+                            rayo_render_stop *stop, uint32_t row,
+                            unsigned char *out);
 
 #endif

@@ -7,21 +7,31 @@
  * wrong: no room on the device, a closed pipe, a reservation larger than
  * the buffer, a commit after bytes were lost or an image abandoned.  It
  * also tells a terminal from the rest (rayo_output_is_terminal), on a
- * pseudo-terminal of its own.
+ * pseudo-terminal of its own.  And it respects what it replaces: a
+ * directory renamed mid-way still gets the file, or loses the temporary
+ * file; a replaced file keeps its mode (and, for root, its owner); a
+ * file the user may not write is refused (as user nobody, in a child,
+ * when the test runs as root); links are followed only as the kernel's
+ * protected_symlinks rule would.
  *
  * The expected stream is generated here from a seeded sequence and the
  * destination read back with plain read(2).
  */
-#define _XOPEN_SOURCE 600 /* posix_openpt, grantpt, unlockpt, ptsname */
+#define _XOPEN_SOURCE 700 /* posix_openpt, grantpt, unlockpt, ptsname */
+#define _DEFAULT_SOURCE   /* setgroups */
 
+#include <dirent.h>
 #include <errno.h>
+#include <grp.h>
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/time.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -493,6 +503,329 @@ static void test_is_terminal(void)
         close(master);
 }
 
+/* --- replacing a file: its directory, its mode, owner and links ---- */
+
+/* A fresh directory under /tmp with the given mode, path into dir. */
+static int make_dir(char *dir, size_t size, mode_t mode)
+{
+    snprintf(dir, size, "/tmp/rayo-t-output-dir.XXXXXX");
+    return mkdtemp(dir) != NULL && chmod(dir, mode) == 0;
+}
+
+static void put_file(const char *path, const char *text, mode_t mode)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (fd >= 0) {
+        if (write(fd, text, strlen(text)) < 0)
+            abort();
+        fchmod(fd, mode);
+        close(fd);
+    }
+}
+
+/* The file's first bytes as a string ("" when it cannot be read). */
+static const char *file_text(const char *path)
+{
+    static char text[64];
+    int fd = open(path, O_RDONLY);
+    ssize_t n = fd >= 0 ? read(fd, text, sizeof text - 1) : -1;
+    text[n > 0 ? n : 0] = '\0';
+    if (fd >= 0)
+        close(fd);
+    return text;
+}
+
+/* Entries of dir other than . and .. */
+static int entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int n = 0;
+    if (d == NULL)
+        return -1;
+    while ((e = readdir(d)) != NULL)
+        n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    closedir(d);
+    return n;
+}
+
+/* Opens path, writes text and commits: the status, err's message. */
+static rayo_status replace_with(const char *path, const char *text,
+                                rayo_error *err)
+{
+    rayo_output *out;
+    rayo_status status = rayo_output_open(&out, path, err);
+    if (status != RAYO_OK)
+        return status;
+    status = rayo_output_write(out, text, strlen(text), err);
+    if (status != RAYO_OK) {
+        rayo_output_abort(out);
+        return status;
+    }
+    return rayo_output_commit(out, err);
+}
+
+static void remove_tree(const char *dir)
+{
+    char command[256];
+    snprintf(command, sizeof command, "rm -rf '%s'", dir);
+    if (system(command) != 0)
+        printf("# could not remove %s\n", dir);
+}
+
+/* The directory is renamed between the opening and the end: the commit
+ * lands, and an abort removes the temporary file, where it now is;
+ * rayo_output_temp_at names the temporary file in that directory. */
+static void test_renamed_directory(void)
+{
+    char dir[64], moved[80], again[96], path[128], check[160];
+    rayo_output *out;
+    rayo_error err;
+    const char *name;
+    int dir_fd, found;
+    struct stat st;
+    umask(022);
+    if (!make_dir(dir, sizeof dir, 0755)) {
+        ok(0, "a directory");
+        return;
+    }
+    snprintf(moved, sizeof moved, "%s-moved", dir);
+    snprintf(again, sizeof again, "%s-again", dir);
+    snprintf(path, sizeof path, "%s/f.pbm", dir);
+    found = rayo_output_open(&out, path, &err) == RAYO_OK;
+    ok(found, "renamed directory: opened");
+    if (!found)
+        return;
+    name = rayo_output_temp_at(out, &dir_fd);
+    ok(name != NULL && strncmp(name, ".f.pbm.", 7) == 0 &&
+           strlen(name) == 13,
+       "the temporary file is .NAME.XXXXXX (%s)", name ? name : "none");
+    ok(name != NULL && fstatat(dir_fd, name, &st, 0) == 0 &&
+           S_ISREG(st.st_mode) && (st.st_mode & 0777) == 0644,
+       "in the descriptor's directory, with a new file's mode");
+    rayo_output_write(out, "one\n", 4, &err);
+    ok(rename(dir, moved) == 0, "the directory renamed mid-way");
+    is_int(rayo_output_commit(out, &err), RAYO_OK, "the commit succeeds");
+    snprintf(check, sizeof check, "%s/f.pbm", moved);
+    is_string(file_text(check), "one\n", "the file is in the renamed "
+                                         "directory");
+    is_int(entries(moved), 1, "and nothing else is");
+
+    snprintf(path, sizeof path, "%s/f.pbm", moved);
+    found = rayo_output_open(&out, path, &err) == RAYO_OK;
+    ok(found, "renamed directory: opened again");
+    if (!found)
+        return;
+    rayo_output_write(out, "two\n", 4, &err);
+    ok(rename(moved, again) == 0, "renamed again");
+    name = rayo_output_temp_at(out, &dir_fd);
+    snprintf(check, sizeof check, "%s/%s", again, name ? name : "?");
+    ok(access(check, F_OK) == 0, "the temporary file moved with it");
+    rayo_output_abort(out);
+    is_int(entries(again), 1, "abort: the temporary file removed there");
+    snprintf(check, sizeof check, "%s/f.pbm", again);
+    is_string(file_text(check), "one\n", "abort: the earlier file intact");
+    remove_tree(again);
+    ok(rayo_output_open(&out, "-", &err) == RAYO_OK &&
+           rayo_output_temp_at(out, &dir_fd) == NULL && dir_fd == -1,
+       "standard output has no temporary file");
+    rayo_output_abort(out);
+}
+
+/* A replaced file keeps its mode, whatever the umask says. */
+static void test_keeps_mode(void)
+{
+    char dir[64], path[96];
+    rayo_error err;
+    struct stat st;
+    if (!make_dir(dir, sizeof dir, 0755)) {
+        ok(0, "a directory");
+        return;
+    }
+    snprintf(path, sizeof path, "%s/m.pbm", dir);
+    put_file(path, "old\n", 0604);
+    is_int(replace_with(path, "new\n", &err), RAYO_OK, "mode: replaced");
+    if (stat(path, &st) != 0)
+        st.st_mode = 0;
+    is_int(st.st_mode & 07777, 0604, "a 0604 file stays 0604");
+    is_string(file_text(path), "new\n", "with the new bytes");
+    remove_tree(dir);
+}
+
+#define NOBODY 65534
+
+/* Runs replace_with(path) as user NOBODY, in a child: 0 when it
+ * succeeded, 1 refused as permission denied (EACCES), 2 otherwise. */
+static int replace_as_nobody(const char *path)
+{
+    pid_t pid = fork();
+    int status;
+    if (pid == 0) {
+        rayo_error err;
+        rayo_status s;
+        if (setgroups(0, NULL) != 0 || setgid(NOBODY) != 0 ||
+            setuid(NOBODY) != 0)
+            _exit(3);
+        s = replace_with(path, "nobody\n", &err);
+        if (s == RAYO_OK)
+            _exit(0);
+        _exit(s == RAYO_ERR_IO &&
+                      strstr(err.message, strerror(EACCES)) != NULL
+                  ? 1
+                  : 2);
+    }
+    if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status))
+        return -1;
+    return WEXITSTATUS(status);
+}
+
+/* As an ordinary user, in a world-writable directory: a root-owned 0444
+ * file (which `>` cannot open) is refused and stays; one the user may
+ * write is replaced.  As root, a replaced file keeps its owner. */
+static void test_permissions(void)
+{
+    char dir[64], path[96];
+    struct stat st;
+    rayo_error err;
+    if (geteuid() != 0) {
+        ok(1, "# SKIP not root: no other user to be");
+        return;
+    }
+    if (!make_dir(dir, sizeof dir, 0777)) {
+        ok(0, "a directory");
+        return;
+    }
+    snprintf(path, sizeof path, "%s/ro.pbm", dir);
+    put_file(path, "root's\n", 0444);
+    is_int(replace_as_nobody(path), 1,
+           "a user's -o over root's 0444 file: permission denied");
+    is_string(file_text(path), "root's\n", "the file is intact");
+    ok(stat(path, &st) == 0 && st.st_uid == 0 && (st.st_mode & 0777) == 0444,
+       "still root's, still 0444");
+    is_int(entries(dir), 1, "no temporary file was made");
+
+    snprintf(path, sizeof path, "%s/own.pbm", dir);
+    put_file(path, "mine\n", 0664);
+    if (chown(path, NOBODY, NOBODY) != 0)
+        ok(0, "chown");
+    is_int(replace_as_nobody(path), 0, "a file the user may write: replaced");
+    is_string(file_text(path), "nobody\n", "with the user's bytes");
+
+    snprintf(path, sizeof path, "%s/theirs.pbm", dir);
+    put_file(path, "theirs\n", 0640);
+    if (chown(path, NOBODY, NOBODY) != 0)
+        ok(0, "chown");
+    is_int(replace_with(path, "root's\n", &err), RAYO_OK,
+           "root replaces another user's file");
+    if (stat(path, &st) != 0)
+        memset(&st, 0, sizeof st);
+    is_int(st.st_uid, NOBODY, "which keeps its owner");
+    is_int(st.st_gid, NOBODY, "its group");
+    is_int(st.st_mode & 07777, 0640, "and its mode");
+    remove_tree(dir);
+}
+
+/* A link named by root in dir (mode dir_mode, owner dir_owner), owned
+ * by link_owner, to a root-owned 0600 file: 1 when rayo followed it
+ * (the file replaced, the link still a link), 0 when it refused (the
+ * file intact), -1 otherwise. */
+static int follows(mode_t dir_mode, uid_t dir_owner, uid_t link_owner)
+{
+    char dir[64], target_dir[64], target[96], link[96];
+    rayo_error err;
+    rayo_status status;
+    struct stat st;
+    int result = -1;
+    if (!make_dir(dir, sizeof dir, dir_mode) ||
+        !make_dir(target_dir, sizeof target_dir, 0755))
+        return -1;
+    snprintf(target, sizeof target, "%s/secret", target_dir);
+    snprintf(link, sizeof link, "%s/out.pbm", dir);
+    put_file(target, "secret\n", 0600);
+    if (chown(dir, dir_owner, dir_owner) == 0 && symlink(target, link) == 0 &&
+        lchown(link, link_owner, link_owner) == 0) {
+        status = replace_with(link, "replaced\n", &err);
+        if (status == RAYO_OK && lstat(link, &st) == 0 && S_ISLNK(st.st_mode) &&
+            strcmp(file_text(target), "replaced\n") == 0 &&
+            stat(target, &st) == 0 && (st.st_mode & 0777) == 0600)
+            result = 1;
+        else if (status == RAYO_ERR_IO &&
+                 strstr(err.message, strerror(EACCES)) != NULL &&
+                 strcmp(file_text(target), "secret\n") == 0 &&
+                 entries(dir) == 1)
+            result = 0;
+    }
+    remove_tree(dir);
+    remove_tree(target_dir);
+    return result;
+}
+
+/* The kernel's protected_symlinks rule, whatever the kernel's setting:
+ * in a sticky world-writable directory a link is followed only when
+ * its owner is the follower or the directory's owner. */
+static void test_links(void)
+{
+    char dir[64], link[96], target[96];
+    rayo_error err;
+    if (geteuid() != 0) {
+        ok(1, "# SKIP not root: links of other users cannot be made");
+        return;
+    }
+    is_int(follows(01777, 0, NOBODY), 0,
+           "sticky /tmp-like directory, another user's link: refused");
+    is_int(follows(01777, 0, 0), 1, "the same, root's own link: followed");
+    is_int(follows(01777, NOBODY, NOBODY), 1,
+           "the link of the directory's owner: followed");
+    is_int(follows(00777, 0, NOBODY), 1,
+           "not sticky: another user's link followed");
+    is_int(follows(01755, 0, NOBODY), 1,
+           "sticky, not world-writable: followed");
+    if (!make_dir(dir, sizeof dir, 0755)) {
+        ok(0, "a directory");
+        return;
+    }
+    snprintf(link, sizeof link, "%s/dangling.pbm", dir);
+    snprintf(target, sizeof target, "%s/new.pbm", dir);
+    if (symlink("new.pbm", link) != 0)
+        ok(0, "symlink");
+    is_int(replace_with(link, "new\n", &err), RAYO_OK,
+           "a relative link to nothing yet");
+    is_string(file_text(target), "new\n", "creates its target, as > does");
+    remove_tree(dir);
+}
+
+/* A link to a pipe, as /dev/stdout is through /proc/self/fd/1 (whose
+ * target, "pipe:[N]", names nothing to walk to): written straight into
+ * the pipe, no temporary file. */
+static void test_link_to_pipe(void)
+{
+    char dir[64], link[96], target[64], got[8] = {0};
+    int fds[2], dir_fd = 0;
+    rayo_output *out;
+    rayo_error err;
+    int opened;
+    if (!make_dir(dir, sizeof dir, 0755) || pipe(fds) != 0) {
+        ok(0, "a directory and a pipe");
+        return;
+    }
+    snprintf(link, sizeof link, "%s/stdout", dir);
+    snprintf(target, sizeof target, "/proc/self/fd/%d", fds[1]);
+    if (symlink(target, link) != 0)
+        ok(0, "symlink");
+    opened = rayo_output_open(&out, link, &err) == RAYO_OK;
+    ok(opened && rayo_output_temp_at(out, &dir_fd) == NULL,
+       "a link to a pipe's /proc/self/fd entry: written directly");
+    if (opened) {
+        rayo_output_write(out, "P1\n", 3, &err);
+        is_int(rayo_output_commit(out, &err), RAYO_OK, "and committed");
+        ok(read(fds[0], got, 3) == 3 && strcmp(got, "P1\n") == 0,
+           "the bytes came through the pipe");
+    }
+    close(fds[0]);
+    close(fds[1]);
+    remove_tree(dir);
+}
+
 int main(void)
 {
     signal(SIGPIPE, SIG_IGN);
@@ -504,5 +837,10 @@ int main(void)
     test_lost_bytes();
     test_abandoned_image();
     test_closed_pipe();
+    test_renamed_directory();
+    test_keeps_mode();
+    test_permissions();
+    test_links();
+    test_link_to_pipe();
     return tap_done();
 }
