@@ -206,8 +206,9 @@ void cmp_shape_measure(const cmp_mask *mask, cmp_shape *shape);
 
 /* Mean distance (pixels) of the mask's outline from its best-fitting
  * ellipse; HUGE_VAL when no ellipse around black fits.  Costs a few
- * passes over the mask, so it is asked for only when needed. */
-double cmp_shape_ellipse_error(const cmp_mask *mask);
+ * passes over the mask, so it is asked for only when needed.  A mean
+ * past limit is not finished: some value past limit is returned. */
+double cmp_shape_ellipse_error(const cmp_mask *mask, double limit);
 
 /* ---- measure.c ---- */
 

@@ -388,7 +388,8 @@ static void judge_shape(const cmp_mask *image, const cmp_shape *is,
 {
     if (is->black == 0)
         report->diagnosis = RAYO_DIAGNOSIS_EMPTY;
-    else if (!(cmp_shape_ellipse_error(image) <= SPHERE_OUTLINE_ERROR))
+    else if (!(cmp_shape_ellipse_error(image, SPHERE_OUTLINE_ERROR) <=
+               SPHERE_OUTLINE_ERROR))
         report->diagnosis = RAYO_DIAGNOSIS_NOT_A_SPHERE;
     else if (report->reference_black != 0)
         report->diagnosis = RAYO_DIAGNOSIS_OTHER_SPHERE;
