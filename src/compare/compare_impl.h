@@ -95,7 +95,16 @@ typedef struct cmp_transform {
     uint32_t step; /* CMP_SCALE search: sample every step-th pixel only */
     const int32_t *columns; /* CMP_SCALE, step 1: the image column of each
                                reference column (-1: outside), or NULL */
+    const cmp_mask *transposed; /* CMP_TRANSPOSE: the image transposed
+                                   (cmp_mask_transpose), or NULL: read a
+                                   column a row, pixel by pixel */
 } cmp_transform;
+
+/* out = m transposed (out->width = m->height), its bits in *bits (to
+ * free); eight by eight blocks, so the image is read row by row instead
+ * of a column (a cache miss a pixel) for each row. */
+rayo_status cmp_mask_transpose(const cmp_mask *m, cmp_mask *out,
+                               unsigned char **bits, rayo_error *err);
 
 /* The column map of a CMP_SCALE transform (columns has room for
  * ref_width entries). */

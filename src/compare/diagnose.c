@@ -101,7 +101,7 @@ static rayo_status scale_loss(const cmp_mask *ref, const cmp_mask *image,
                               double s, uint32_t step, double *loss,
                               rayo_error *err)
 {
-    cmp_transform t = {CMP_SCALE, 0, 0, 0, 0, NULL};
+    cmp_transform t = {CMP_SCALE, 0, 0, 0, 0, NULL, NULL};
     cmp_counts c;
     rayo_status st;
     t.scale = s;
@@ -218,6 +218,27 @@ static rayo_status consider_scaled(chooser *ch, const cmp_mask *ref,
     return s;
 }
 
+/* The transposition candidate, read from a transposed copy. */
+static rayo_status consider_transposed(chooser *ch, const cmp_mask *ref,
+                                       const cmp_mask *image,
+                                       cmp_outline *outline,
+                                       const rayo_compare_report *report,
+                                       cmp_transform *t, rayo_error *err)
+{
+    cmp_mask transposed;
+    unsigned char *bits;
+    rayo_status s = cmp_mask_transpose(image, &transposed, &bits, err);
+    if (s != RAYO_OK)
+        return s;
+    t->transposed = &transposed;
+    s = consider(ch, ref, image, outline, report, t, err);
+    t->transposed = NULL; /* the chooser may keep a copy of t */
+    if (ch->found)
+        ch->transform.transposed = NULL;
+    free(bits);
+    return s;
+}
+
 /* A candidate that undoes every far mismatch ends the search. */
 static int exact_found(const chooser *ch)
 {
@@ -277,7 +298,7 @@ static rayo_status judge_close(const cmp_mask *ref, const cmp_mask *image,
                                const cmp_shape *rs, const cmp_shape *is,
                                rayo_compare_report *report, rayo_error *err)
 {
-    cmp_transform t = {CMP_SHIFT, 0, 0, 1, 1, NULL};
+    cmp_transform t = {CMP_SHIFT, 0, 0, 1, 1, NULL, NULL};
     cmp_counts c;
     rayo_status s;
     int32_t ex, ey, dx, dy;
@@ -352,7 +373,7 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
 {
     static const cmp_transform_kind plain[] = {
         CMP_INVERT, CMP_FLIP_V, CMP_FLIP_H, CMP_FLIP_BOTH, CMP_TRANSPOSE};
-    cmp_transform t = {CMP_IDENTITY, 0, 0, 1, 1, NULL};
+    cmp_transform t = {CMP_IDENTITY, 0, 0, 1, 1, NULL, NULL};
     rayo_status s = RAYO_OK;
     size_t i;
     for (i = 0; i < sizeof plain / sizeof plain[0] && s == RAYO_OK &&
@@ -361,7 +382,10 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
         t.kind = plain[i];
         if ((t.kind != CMP_TRANSPOSE || ref->width == ref->height) &&
             centroid_agrees(ref, rs, is, (double)report->mismatches, t.kind))
-            s = consider(ch, ref, image, outline, report, &t, err);
+            s = t.kind == CMP_TRANSPOSE
+                    ? consider_transposed(ch, ref, image, outline, report, &t,
+                                          err)
+                    : consider(ch, ref, image, outline, report, &t, err);
     }
     if (s != RAYO_OK || !report->shapes_measured || exact_found(ch))
         return s;
@@ -404,15 +428,21 @@ static rayo_status diagnose_size(const cmp_mask *ref, const cmp_mask *image,
                                  rayo_compare_report *report,
                                  rayo_error *err)
 {
-    cmp_transform t = {CMP_TRANSPOSE, 0, 0, 1, 1, NULL};
+    cmp_transform t = {CMP_TRANSPOSE, 0, 0, 1, 1, NULL, NULL};
     cmp_counts c;
+    cmp_mask transposed;
+    unsigned char *bits;
     rayo_status s;
     report->verdict = RAYO_VERDICT_INCONSISTENT;
     report->diagnosis = RAYO_DIAGNOSIS_DIFFERENT_SIZE;
     if (image->width != ref->height || image->height != ref->width)
         return RAYO_OK;
+    if ((s = cmp_mask_transpose(image, &transposed, &bits, err)) != RAYO_OK)
+        return s;
+    t.transposed = &transposed;
     s = cmp_measure(ref, image, &t, outline, 0, report->tolerance, &c,
                     err);
+    free(bits);
     if (s != RAYO_OK)
         return s;
     if (c.beyond == 0 || iou_of(&c) >= CLOSE_IOU) {
