@@ -11,6 +11,9 @@
  *              pixel of the other colour;
  *   near       which mismatches of a row lie within the tolerance of the
  *              outline, without their distances;
+ *   band       how many pixels lie within the tolerance of the
+ *              outline, which the mismatches of a consistent image
+ *              may fill only in part;
  *   farthest   the largest distance of a mismatch, from bounds and the
  *              exact distances of the few that could be the largest;
  *   shape      the moments of a mask's black region and how ellipse-like
@@ -172,6 +175,32 @@ void cmp_near_free(cmp_near *near);
  * no reference pixel of colour `colour` within the tolerance. */
 uint64_t cmp_near_count_far(cmp_near *near, uint32_t y, int colour,
                             const unsigned char *diff);
+
+/* ---- band.c ---- */
+
+/* *band = the reference pixels within the tolerance of a pixel of the
+ * other colour (0 when the reference has one colour).  Rewinds the
+ * outline. */
+rayo_status cmp_outline_band(const cmp_mask *ref, cmp_outline *outline,
+                             double tolerance, uint64_t *band,
+                             rayo_error *err);
+
+/* Whether differences fill more than RAYO_COMPARE_BAND_SHARE of the
+ * band (masks and tones alike). */
+static inline int cmp_crowded(uint64_t differences, uint64_t band)
+{
+    return (double)differences > RAYO_COMPARE_BAND_SHARE * (double)band;
+}
+
+/* The mismatches expected between masks of these black counts whose
+ * black pixels were placed independently at random. */
+double cmp_chance_mismatches(uint64_t pixels, uint64_t reference_black,
+                             uint64_t image_black);
+
+/* A mask report whose mismatches, all within the tolerance, still do
+ * not make it consistent: more than the band's share, or no fewer than
+ * chance (report's band, mismatches and black counts filled). */
+int cmp_mask_crowded(const rayo_compare_report *report);
 
 /* ---- farthest.c ---- */
 

@@ -16,6 +16,11 @@
  *
  * Thresholds are written once, below, with their reasons.  Not a
  * registration algorithm: one mistake at a time, no combinations.
+ *
+ * Consistent means every mismatch within the tolerance of the outline,
+ * the mismatches at most RAYO_COMPARE_BAND_SHARE of the pixels there and
+ * fewer than chance (band.c): near an outline only because the
+ * reference is all outline is not enough.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -466,8 +471,16 @@ rayo_status cmp_diagnose(const cmp_mask *ref, const cmp_mask *image,
         report->verdict = RAYO_VERDICT_IDENTICAL;
         return RAYO_OK;
     }
-    if (report->beyond_tolerance == 0)
-        return judge_close(ref, image, rs, is, report, err);
+    if (report->beyond_tolerance == 0) {
+        s = judge_close(ref, image, rs, is, report, err);
+        if (s != RAYO_OK || report->verdict != RAYO_VERDICT_CONSISTENT)
+            return s;
+        s = cmp_outline_band(ref, outline, report->tolerance, &report->band,
+                             err);
+        if (s != RAYO_OK || !cmp_mask_crowded(report))
+            return s;
+        report->crowded = 1;
+    }
     report->verdict = RAYO_VERDICT_INCONSISTENT;
     if (is->black == 0) {
         report->diagnosis = RAYO_DIAGNOSIS_EMPTY;
@@ -479,6 +492,8 @@ rayo_status cmp_diagnose(const cmp_mask *ref, const cmp_mask *image,
         return s;
     if (ch.found)
         name_choice(&ch, report);
+    else if (report->crowded) /* no shape to judge: the note says why */
+        report->diagnosis = RAYO_DIAGNOSIS_UNKNOWN;
     else
         judge_shape(image, is, report);
     return RAYO_OK;
