@@ -371,6 +371,17 @@ static int centroid_agrees(const cmp_mask *ref, const cmp_shape *rs,
            slack;
 }
 
+/* Whether a flip or a transposition, which moves the image's black
+ * pixels without changing their number, surely leaves more than half the
+ * mismatches: it leaves at least the difference of the black counts.
+ * (try_candidate would count that, at the cost of a pass.) */
+static int cannot_halve(const rayo_compare_report *report)
+{
+    uint64_t rb = report->reference_black, ib = report->image_black;
+    uint64_t least = rb > ib ? rb - ib : ib - rb;
+    return 2 * least > report->mismatches;
+}
+
 static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
                            cmp_outline *outline, const cmp_shape *rs,
                            const cmp_shape *is, rayo_compare_report *report,
@@ -385,6 +396,8 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
                 !exact_found(ch);
          i++) {
         t.kind = plain[i];
+        if (t.kind != CMP_INVERT && cannot_halve(report))
+            continue;
         if ((t.kind != CMP_TRANSPOSE || ref->width == ref->height) &&
             centroid_agrees(ref, rs, is, (double)report->mismatches, t.kind))
             s = t.kind == CMP_TRANSPOSE

@@ -159,7 +159,7 @@ rayo_status cmp_mask_transpose(const cmp_mask *m, cmp_mask *out,
                                unsigned char **bits, rayo_error *err)
 {
     size_t in_bytes = cmp_row_bytes(m->width);
-    size_t stride = cmp_row_bytes(m->height), k, r;
+    size_t stride = cmp_row_bytes(m->height), k, k0, r;
     uint32_t y;
     out->width = m->height;
     out->height = m->width;
@@ -171,19 +171,23 @@ rayo_status cmp_mask_transpose(const cmp_mask *m, cmp_mask *out,
                               "compare: out of memory for a transposed "
                               "%ux%u image",
                               m->width, m->height);
-    for (y = 0; y < m->height; y += 8)
-        for (k = 0; k < in_bytes; k++) {
-            uint64_t x = 0;
-            for (r = 0; r < 8; r++) /* rows past the end are white */
-                x = x << 8 | (y + r < m->height
-                                  ? cmp_mask_row(m, (uint32_t)(y + r))[k]
-                                  : 0u);
-            x = transpose8(x);
-            /* byte 7 - c of x is column 8k + c, rows y..y+7 */
-            for (r = 0; r < 8 && 8 * k + r < m->width; r++)
-                (*bits)[(8 * k + r) * stride + y / 8] =
-                    (unsigned char)(x >> (8 * (7 - r)));
-        }
+    /* 64 bytes of columns at a time, so the 512 rows written stay in
+       the cache while the image's rows are read down. */
+    for (k0 = 0; k0 < in_bytes; k0 += 64)
+        for (y = 0; y < m->height; y += 8)
+            for (k = k0; k < k0 + 64 && k < in_bytes; k++) {
+                uint64_t x = 0;
+                for (r = 0; r < 8; r++) /* rows past the end are white */
+                    x = x << 8 |
+                        (y + r < m->height
+                             ? cmp_mask_row(m, (uint32_t)(y + r))[k]
+                             : 0u);
+                x = transpose8(x);
+                /* byte 7 - c of x is column 8k + c, rows y..y+7 */
+                for (r = 0; r < 8 && 8 * k + r < m->width; r++)
+                    (*bits)[(8 * k + r) * stride + y / 8] =
+                        (unsigned char)(x >> (8 * (7 - r)));
+            }
     for (y = 0; y < out->height; y++)
         cmp_clear_padding(*bits + (size_t)y * stride, out->width);
     return RAYO_OK;
