@@ -90,10 +90,12 @@ typedef enum rayo_compare_diagnosis {
 } rayo_compare_diagnosis;
 
 /* The most of the band (rayo_compare_report.band) the differences of a
-   consistent image may fill: an outline drawn d <= tolerance pixels
+   consistent image may fill.  An outline drawn d <= tolerance pixels
    apart changes d of the 2 x tolerance pixels across the band, at most
-   half (docs/compare.md, "Consistent"). */
-#define RAYO_COMPARE_BAND_SHARE 0.5
+   half where it is straight; a disc of radius r grown by the tolerance t
+   fills 1/2 + t / 4r of it, 3/4 when r = t (docs/compare.md,
+   "Consistent"). */
+#define RAYO_COMPARE_BAND_SHARE 0.75
 
 /* How a comparison was made. */
 typedef enum rayo_compare_kind {

@@ -6,7 +6,8 @@
  * drawn a pixel or two apart (another focal distance, float instead of
  * double, off-by-one outlines) changes only a part of it: an outline
  * moved by d <= t pixels turns d of the 2t pixels across the band, at
- * most half.  The consistency rule (diagnose.c, docs/compare.md)
+ * most half where it is straight, a little more on the outside of a
+ * curve (RAYO_COMPARE_BAND_SHARE).  The consistency rule (diagnose.c, docs/compare.md)
  * compares the mismatches with this count, so that an image whose
  * mismatches are near an outline only because the reference is all
  * outline (a checkerboard against its inverse) is not called

@@ -190,8 +190,8 @@ static void put_crowded_text(cmp_sink *s, const rayo_compare_report *r)
         cmp_put(s, "note: every mismatch is within %g px of the reference's "
                    "outline, but they are %.1f%% of the %llu pixels within "
                    "that distance of it (an outline drawn a pixel or two "
-                   "apart changes at most %.0f%% of them): the shapes "
-                   "disagree\n",
+                   "apart changes about half of them at most; the limit is "
+                   "%.0f%%): the shapes disagree\n",
             r->tolerance, cmp_band_percent(r->mismatches, r->band),
             (unsigned long long)r->band, 100 * RAYO_COMPARE_BAND_SHARE);
     else

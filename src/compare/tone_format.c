@@ -224,7 +224,8 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
         cmp_put(s, "note: every differing pixel is explained, but they are "
                    "%.1f%% of the %llu pixels near an edge or in shading that "
                    "varies within %g px (a picture drawn a pixel or two apart "
-                   "changes at most %.0f%% of them): the pictures disagree\n",
+                   "changes about half of them at most; the limit is %.0f%%): "
+                   "the pictures disagree\n",
             cmp_band_percent(t->differing, r->band),
             (unsigned long long)r->band, r->tolerance,
             100 * RAYO_COMPARE_BAND_SHARE);
