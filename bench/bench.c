@@ -2,8 +2,8 @@
  * bench.c - `make bench`: runs every benchmark row, prints the table
  * (figures, then targets with pass or FAIL) and writes it as JSON.
  *
- *   rayo-bench [--json FILE] [--repeat N] [--only seed|large|bvh|commands]
- *              [--rows FILE]
+ *   rayo-bench [--json FILE] [--repeat N]
+ *              [--only seed|large|bvh|commands|compare] [--rows FILE]
  *
  * $RAYO names the `rayo` command for the rows that run it (peak memory,
  * bench/commands.tsv).  Every figure is the best of N runs (default 3;
@@ -203,7 +203,7 @@ int main(int argc, char **argv)
             rows = argv[++i];
         else {
             fprintf(stderr, "usage: %s [--json FILE] [--repeat N] [--only "
-                            "seed|large|bvh|commands] [--rows FILE]\n",
+                            "seed|large|bvh|commands|compare] [--rows FILE]\n",
                     argv[0]);
             return 2;
         }
@@ -223,6 +223,8 @@ int main(int argc, char **argv)
         bench_bvh(&table);
     if (wants(only, "commands") && rayo != NULL)
         bench_commands(&table, rows);
+    if (wants(only, "compare") && rayo != NULL)
+        bench_compare_noise(&table);
     print_targets(&table);
     if (json != NULL) {
         write_json(&table, json);

@@ -89,6 +89,14 @@ typedef enum rayo_compare_diagnosis {
                                        compare: rayo_compare_note_clamped) */
 } rayo_compare_diagnosis;
 
+/* The most of the band (rayo_compare_report.band) the differences of a
+   consistent image may fill.  An outline drawn d <= tolerance pixels
+   apart changes d of the 2 x tolerance pixels across the band, at most
+   half where it is straight; a disc of radius r grown by the tolerance t
+   fills 1/2 + t / 4r of it, 3/4 when r = t (docs/compare.md,
+   "Consistent"). */
+#define RAYO_COMPARE_BAND_SHARE 0.75
+
 /* How a comparison was made. */
 typedef enum rayo_compare_kind {
     RAYO_COMPARE_MASK, /* both bilevel: black/white masks */
@@ -185,6 +193,16 @@ typedef struct rayo_compare_report {
                                  mismatch; -1 when the reference is one
                                  colour (it has no outline) */
     uint64_t beyond_tolerance; /* mismatches farther than tolerance */
+    /* Where a picture drawn a pixel or two apart may differ: masks, the
+       reference pixels within the tolerance of a pixel of the other
+       colour; tones, the pixels near an edge or where the reference's
+       values vary within the tolerance.  Counted only when nothing is
+       beyond the tolerance (else 0).  crowded: the differences are more
+       than RAYO_COMPARE_BAND_SHARE of it, so the image is inconsistent
+       however near the outlines they lie (a checkerboard against its
+       inverse). */
+    uint64_t band;
+    int crowded;
 
     /* The black shapes, each in its own frame. */
     uint64_t reference_black, image_black;

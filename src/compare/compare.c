@@ -68,7 +68,7 @@ static void fill_shapes(const cmp_shape *rs, const cmp_shape *is,
 static rayo_status run(const cmp_pair *pair, rayo_compare_report *report,
                        rayo_error *err)
 {
-    cmp_transform identity = {CMP_IDENTITY, 0, 0, 1, 1, NULL};
+    cmp_transform identity = {CMP_IDENTITY, 0, 0, 1, 1, NULL, NULL};
     cmp_outline *outline;
     cmp_counts counts;
     cmp_shape rs, is;

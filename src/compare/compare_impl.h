@@ -11,6 +11,9 @@
  *              pixel of the other colour;
  *   near       which mismatches of a row lie within the tolerance of the
  *              outline, without their distances;
+ *   band       how many pixels lie within the tolerance of the
+ *              outline, which the mismatches of a consistent image
+ *              may fill only in part;
  *   farthest   the largest distance of a mismatch, from bounds and the
  *              exact distances of the few that could be the largest;
  *   shape      the moments of a mask's black region and how ellipse-like
@@ -95,7 +98,16 @@ typedef struct cmp_transform {
     uint32_t step; /* CMP_SCALE search: sample every step-th pixel only */
     const int32_t *columns; /* CMP_SCALE, step 1: the image column of each
                                reference column (-1: outside), or NULL */
+    const cmp_mask *transposed; /* CMP_TRANSPOSE: the image transposed
+                                   (cmp_mask_transpose), or NULL: read a
+                                   column a row, pixel by pixel */
 } cmp_transform;
+
+/* out = m transposed (out->width = m->height), its bits in *bits (to
+ * free); eight by eight blocks, so the image is read row by row instead
+ * of a column (a cache miss a pixel) for each row. */
+rayo_status cmp_mask_transpose(const cmp_mask *m, cmp_mask *out,
+                               unsigned char **bits, rayo_error *err);
 
 /* The column map of a CMP_SCALE transform (columns has room for
  * ref_width entries). */
@@ -164,6 +176,32 @@ void cmp_near_free(cmp_near *near);
 uint64_t cmp_near_count_far(cmp_near *near, uint32_t y, int colour,
                             const unsigned char *diff);
 
+/* ---- band.c ---- */
+
+/* *band = the reference pixels within the tolerance of a pixel of the
+ * other colour (0 when the reference has one colour).  Rewinds the
+ * outline. */
+rayo_status cmp_outline_band(const cmp_mask *ref, cmp_outline *outline,
+                             double tolerance, uint64_t *band,
+                             rayo_error *err);
+
+/* Whether differences fill more than RAYO_COMPARE_BAND_SHARE of the
+ * band (masks and tones alike). */
+static inline int cmp_crowded(uint64_t differences, uint64_t band)
+{
+    return (double)differences > RAYO_COMPARE_BAND_SHARE * (double)band;
+}
+
+/* The mismatches expected between masks of these black counts whose
+ * black pixels were placed independently at random. */
+double cmp_chance_mismatches(uint64_t pixels, uint64_t reference_black,
+                             uint64_t image_black);
+
+/* A mask report whose mismatches, all within the tolerance, still do
+ * not make it consistent: more than the band's share, or no fewer than
+ * chance (report's band, mismatches and black counts filled). */
+int cmp_mask_crowded(const rayo_compare_report *report);
+
 /* ---- farthest.c ---- */
 
 typedef struct cmp_farthest cmp_farthest;
@@ -206,8 +244,9 @@ void cmp_shape_measure(const cmp_mask *mask, cmp_shape *shape);
 
 /* Mean distance (pixels) of the mask's outline from its best-fitting
  * ellipse; HUGE_VAL when no ellipse around black fits.  Costs a few
- * passes over the mask, so it is asked for only when needed. */
-double cmp_shape_ellipse_error(const cmp_mask *mask);
+ * passes over the mask, so it is asked for only when needed.  A mean
+ * past limit is not finished: some value past limit is returned. */
+double cmp_shape_ellipse_error(const cmp_mask *mask, double limit);
 
 /* ---- measure.c ---- */
 

@@ -16,6 +16,11 @@
  *
  * Thresholds are written once, below, with their reasons.  Not a
  * registration algorithm: one mistake at a time, no combinations.
+ *
+ * Consistent means every mismatch within the tolerance of the outline,
+ * the mismatches at most RAYO_COMPARE_BAND_SHARE of the pixels there and
+ * fewer than chance (band.c): near an outline only because the
+ * reference is all outline is not enough.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -101,7 +106,7 @@ static rayo_status scale_loss(const cmp_mask *ref, const cmp_mask *image,
                               double s, uint32_t step, double *loss,
                               rayo_error *err)
 {
-    cmp_transform t = {CMP_SCALE, 0, 0, 0, 0, NULL};
+    cmp_transform t = {CMP_SCALE, 0, 0, 0, 0, NULL, NULL};
     cmp_counts c;
     rayo_status st;
     t.scale = s;
@@ -218,6 +223,27 @@ static rayo_status consider_scaled(chooser *ch, const cmp_mask *ref,
     return s;
 }
 
+/* The transposition candidate, read from a transposed copy. */
+static rayo_status consider_transposed(chooser *ch, const cmp_mask *ref,
+                                       const cmp_mask *image,
+                                       cmp_outline *outline,
+                                       const rayo_compare_report *report,
+                                       cmp_transform *t, rayo_error *err)
+{
+    cmp_mask transposed;
+    unsigned char *bits;
+    rayo_status s = cmp_mask_transpose(image, &transposed, &bits, err);
+    if (s != RAYO_OK)
+        return s;
+    t->transposed = &transposed;
+    s = consider(ch, ref, image, outline, report, t, err);
+    t->transposed = NULL; /* the chooser may keep a copy of t */
+    if (ch->found)
+        ch->transform.transposed = NULL;
+    free(bits);
+    return s;
+}
+
 /* A candidate that undoes every far mismatch ends the search. */
 static int exact_found(const chooser *ch)
 {
@@ -277,7 +303,7 @@ static rayo_status judge_close(const cmp_mask *ref, const cmp_mask *image,
                                const cmp_shape *rs, const cmp_shape *is,
                                rayo_compare_report *report, rayo_error *err)
 {
-    cmp_transform t = {CMP_SHIFT, 0, 0, 1, 1, NULL};
+    cmp_transform t = {CMP_SHIFT, 0, 0, 1, 1, NULL, NULL};
     cmp_counts c;
     rayo_status s;
     int32_t ex, ey, dx, dy;
@@ -345,6 +371,17 @@ static int centroid_agrees(const cmp_mask *ref, const cmp_shape *rs,
            slack;
 }
 
+/* Whether a flip or a transposition, which moves the image's black
+ * pixels without changing their number, surely leaves more than half the
+ * mismatches: it leaves at least the difference of the black counts.
+ * (try_candidate would count that, at the cost of a pass.) */
+static int cannot_halve(const rayo_compare_report *report)
+{
+    uint64_t rb = report->reference_black, ib = report->image_black;
+    uint64_t least = rb > ib ? rb - ib : ib - rb;
+    return 2 * least > report->mismatches;
+}
+
 static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
                            cmp_outline *outline, const cmp_shape *rs,
                            const cmp_shape *is, rayo_compare_report *report,
@@ -352,16 +389,21 @@ static rayo_status try_all(const cmp_mask *ref, const cmp_mask *image,
 {
     static const cmp_transform_kind plain[] = {
         CMP_INVERT, CMP_FLIP_V, CMP_FLIP_H, CMP_FLIP_BOTH, CMP_TRANSPOSE};
-    cmp_transform t = {CMP_IDENTITY, 0, 0, 1, 1, NULL};
+    cmp_transform t = {CMP_IDENTITY, 0, 0, 1, 1, NULL, NULL};
     rayo_status s = RAYO_OK;
     size_t i;
     for (i = 0; i < sizeof plain / sizeof plain[0] && s == RAYO_OK &&
                 !exact_found(ch);
          i++) {
         t.kind = plain[i];
+        if (t.kind != CMP_INVERT && cannot_halve(report))
+            continue;
         if ((t.kind != CMP_TRANSPOSE || ref->width == ref->height) &&
             centroid_agrees(ref, rs, is, (double)report->mismatches, t.kind))
-            s = consider(ch, ref, image, outline, report, &t, err);
+            s = t.kind == CMP_TRANSPOSE
+                    ? consider_transposed(ch, ref, image, outline, report, &t,
+                                          err)
+                    : consider(ch, ref, image, outline, report, &t, err);
     }
     if (s != RAYO_OK || !report->shapes_measured || exact_found(ch))
         return s;
@@ -388,7 +430,8 @@ static void judge_shape(const cmp_mask *image, const cmp_shape *is,
 {
     if (is->black == 0)
         report->diagnosis = RAYO_DIAGNOSIS_EMPTY;
-    else if (!(cmp_shape_ellipse_error(image) <= SPHERE_OUTLINE_ERROR))
+    else if (!(cmp_shape_ellipse_error(image, SPHERE_OUTLINE_ERROR) <=
+               SPHERE_OUTLINE_ERROR))
         report->diagnosis = RAYO_DIAGNOSIS_NOT_A_SPHERE;
     else if (report->reference_black != 0)
         report->diagnosis = RAYO_DIAGNOSIS_OTHER_SPHERE;
@@ -403,15 +446,21 @@ static rayo_status diagnose_size(const cmp_mask *ref, const cmp_mask *image,
                                  rayo_compare_report *report,
                                  rayo_error *err)
 {
-    cmp_transform t = {CMP_TRANSPOSE, 0, 0, 1, 1, NULL};
+    cmp_transform t = {CMP_TRANSPOSE, 0, 0, 1, 1, NULL, NULL};
     cmp_counts c;
+    cmp_mask transposed;
+    unsigned char *bits;
     rayo_status s;
     report->verdict = RAYO_VERDICT_INCONSISTENT;
     report->diagnosis = RAYO_DIAGNOSIS_DIFFERENT_SIZE;
     if (image->width != ref->height || image->height != ref->width)
         return RAYO_OK;
+    if ((s = cmp_mask_transpose(image, &transposed, &bits, err)) != RAYO_OK)
+        return s;
+    t.transposed = &transposed;
     s = cmp_measure(ref, image, &t, outline, 0, report->tolerance, &c,
                     err);
+    free(bits);
     if (s != RAYO_OK)
         return s;
     if (c.beyond == 0 || iou_of(&c) >= CLOSE_IOU) {
@@ -435,8 +484,16 @@ rayo_status cmp_diagnose(const cmp_mask *ref, const cmp_mask *image,
         report->verdict = RAYO_VERDICT_IDENTICAL;
         return RAYO_OK;
     }
-    if (report->beyond_tolerance == 0)
-        return judge_close(ref, image, rs, is, report, err);
+    if (report->beyond_tolerance == 0) {
+        s = judge_close(ref, image, rs, is, report, err);
+        if (s != RAYO_OK || report->verdict != RAYO_VERDICT_CONSISTENT)
+            return s;
+        s = cmp_outline_band(ref, outline, report->tolerance, &report->band,
+                             err);
+        if (s != RAYO_OK || !cmp_mask_crowded(report))
+            return s;
+        report->crowded = 1;
+    }
     report->verdict = RAYO_VERDICT_INCONSISTENT;
     if (is->black == 0) {
         report->diagnosis = RAYO_DIAGNOSIS_EMPTY;
@@ -448,6 +505,8 @@ rayo_status cmp_diagnose(const cmp_mask *ref, const cmp_mask *image,
         return s;
     if (ch.found)
         name_choice(&ch, report);
+    else if (report->crowded) /* no shape to judge: the note says why */
+        report->diagnosis = RAYO_DIAGNOSIS_UNKNOWN;
     else
         judge_shape(image, is, report);
     return RAYO_OK;

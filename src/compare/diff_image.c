@@ -111,7 +111,7 @@ static void header(diff_png *d, uint32_t width, uint32_t height)
 static rayo_status write_png(diff_png *d, const cmp_pair *pair,
                              unsigned char *rows)
 {
-    cmp_transform frame = {CMP_IDENTITY, 0, 0, 1, 1, NULL};
+    cmp_transform frame = {CMP_IDENTITY, 0, 0, 1, 1, NULL, NULL};
     uint32_t w = pair->ref.width, y;
     size_t n = cmp_row_bytes(w), k;
     unsigned char *img = rows, *known = rows + n, *out = rows + 2 * n;

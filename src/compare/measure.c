@@ -88,6 +88,8 @@ typedef struct band_tools {
     cmp_outline *outline;  /* NULL: counts only */
     cmp_near *near;        /* NULL: every mismatch's exact distance */
     cmp_farthest *farthest; /* with near, when the maximum is asked for */
+    int has_edges;         /* 0: a reference of one colour, every
+                              mismatch infinitely far */
     int exact;
     double tolerance;
 } band_tools;
@@ -165,6 +167,10 @@ static void measure_row(const cmp_mask *ref, uint32_t y, measure_rows *r,
     split_row(ref, y, r, all_known, &ref_only, &img_only, c);
     if (t->outline == NULL)
         return;
+    if (!t->has_edges) { /* no distance to find: every one is beyond */
+        c->beyond += ref_only + img_only;
+        return;
+    }
     if (ref_only)
         row_mismatch_distances(t, y, 1, r->diff, ref->width, r->d2, c);
     if (img_only)
@@ -192,8 +198,8 @@ static rayo_status tools_make(band *b, band_tools *t)
     t->outline = b->outline;
     t->exact = b->exact;
     t->tolerance = b->tolerance;
-    if (b->outline == NULL || b->tolerance > CMP_NEAR_MAX_TOLERANCE ||
-        (b->exact && !cmp_outline_has_edges(b->outline)))
+    t->has_edges = b->outline != NULL && cmp_outline_has_edges(b->outline);
+    if (!t->has_edges || b->tolerance > CMP_NEAR_MAX_TOLERANCE)
         return RAYO_OK;
     s = cmp_near_create(&t->near, b->ref, b->tolerance, &b->err);
     if (s == RAYO_OK && b->exact)

@@ -310,16 +310,57 @@ static int64_t scan(const unsigned char *row, uint32_t width, int64_t x,
     return -1;
 }
 
+/* The nearest pixels of the colour beside the runs of a row, found as
+ * the runs are taken from left to right: no pixel of a run has the
+ * colour (a mismatch's reference colour is the other one), so the
+ * nearest one left of a run is between it and the run before, or the
+ * one found for that run; and the nearest one right of the run before,
+ * when it lies past this run's end, is this run's too.  Each pixel of
+ * the row is so scanned at most twice, however many runs it has (a
+ * scan per run from the run's ends cost a whole row each when the
+ * colour is rare: a white reference against noise, quadratic). */
+typedef struct run_sides {
+    int64_t left, right; /* -1: none */
+    int64_t scanned_to;  /* left of a run: pixels below were scanned */
+    int right_known;
+} run_sides;
+
+static void sides_of_run(run_sides *s, const unsigned char *row,
+                         uint32_t width, int colour, uint32_t a, uint32_t b)
+{
+    int64_t found = -1, x;
+    for (x = (int64_t)a - 1; x >= s->scanned_to; x--) {
+        if ((x & 7) == 7 && x - 7 >= s->scanned_to &&
+            row[x >> 3] == (colour ? 0x00u : 0xFFu)) {
+            x -= 7;
+            continue;
+        }
+        if (rayo_bit_get(row, (uint32_t)x) == colour) {
+            found = x;
+            break;
+        }
+    }
+    if (found >= 0)
+        s->left = found;
+    s->scanned_to = (int64_t)b + 1;
+    if (!s->right_known || (s->right >= 0 && s->right <= (int64_t)b))
+        s->right = scan(row, width, (int64_t)b + 1, 1, colour);
+    s->right_known = 1;
+}
+
 /* The run of mismatches a..b needs the envelope only over a..b widened
  * by its largest distance bound: for each x, the vertical distance to
  * the colour and the horizontal distance to the nearest pixel of the
  * colour outside the run, both upper bounds on the true distance. */
 static uint32_t run_reach(cmp_outline *o, const unsigned char *row,
-                          uint32_t y, int colour, uint32_t a, uint32_t b)
+                          uint32_t y, int colour, uint32_t a, uint32_t b,
+                          run_sides *sides)
 {
     uint32_t w = o->ref->width, x, reach = 0;
-    int64_t left = scan(row, w, (int64_t)a - 1, -1, colour);
-    int64_t right = scan(row, w, (int64_t)b + 1, 1, colour);
+    int64_t left, right;
+    sides_of_run(sides, row, w, colour, a, b);
+    left = sides->left;
+    right = sides->right;
     for (x = a; x <= b; x++) {
         int64_t bound = vertical(o, row, x, y, colour), h = INT64_MAX;
         if (left >= 0)
@@ -371,9 +412,10 @@ void cmp_outline_mismatch_distances(cmp_outline *o, uint32_t y, int colour,
     const unsigned char *row = cmp_mask_row(o->ref, y);
     uint32_t w = o->ref->width, a, b, x = 0, lo = 0, hi = 0;
     int open = 0;
+    run_sides sides = {-1, -1, 0, 0};
     seek(o, y);
     while (next_run(diff, w, x, &a, &b)) {
-        uint32_t reach = run_reach(o, row, y, colour, a, b);
+        uint32_t reach = run_reach(o, row, y, colour, a, b, &sides);
         uint32_t rlo = a > reach ? a - reach : 0;
         uint32_t rhi = w - 1 - b > reach ? b + reach : w - 1;
         if (open && rlo <= hi + 1) {

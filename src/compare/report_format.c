@@ -43,6 +43,19 @@ static void put_surplus(cmp_sink *s, const char *which, uint64_t pixels,
     cmp_put(s, "; they were not compared\n");
 }
 
+double cmp_band_percent(unsigned long long differences,
+                        unsigned long long band)
+{
+    return band ? 100.0 * (double)differences / (double)band : 0;
+}
+
+void cmp_put_crowded_json(cmp_sink *s, const rayo_compare_report *r)
+{
+    if (r->crowded)
+        cmp_put(s, ", \"band\": %llu, \"crowded\": true",
+            (unsigned long long)r->band);
+}
+
 void cmp_put_clamped_json(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->image_clamped_high + r->image_clamped_low == 0)
@@ -168,6 +181,28 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
     }
 }
 
+/* Why mismatches all within the tolerance are not consistent. */
+static void put_crowded_text(cmp_sink *s, const rayo_compare_report *r)
+{
+    if (!r->crowded)
+        return;
+    if (cmp_crowded(r->mismatches, r->band))
+        cmp_put(s, "note: every mismatch is within %g px of the reference's "
+                   "outline, but they are %.1f%% of the %llu pixels within "
+                   "that distance of it (an outline drawn a pixel or two "
+                   "apart changes about half of them at most; the limit is "
+                   "%.0f%%): the shapes disagree\n",
+            r->tolerance, cmp_band_percent(r->mismatches, r->band),
+            (unsigned long long)r->band, 100 * RAYO_COMPARE_BAND_SHARE);
+    else
+        cmp_put(s, "note: every mismatch is within %g px of the reference's "
+                   "outline, but there are as many as between black pixels "
+                   "placed at random (%.0f): the shapes disagree\n",
+            r->tolerance,
+            cmp_chance_mismatches(r->pixels, r->reference_black,
+                                  r->image_black));
+}
+
 static void put_distance_text(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->max_distance < 0)
@@ -211,6 +246,7 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
     else
         cmp_put(&s, "black shape of the image vs the reference: - (one of "
                     "them has no black pixel)\n");
+    put_crowded_text(&s, r);
     cmp_put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
         cmp_put(&s, "diagnosis: ");
@@ -250,6 +286,7 @@ size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
         cmp_put(&s, ", \"max_distance\": %.6f", r->max_distance);
     cmp_put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": %llu",
         r->tolerance, (unsigned long long)r->beyond_tolerance);
+    cmp_put_crowded_json(&s, r);
     if (r->shapes_measured)
         cmp_put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, "
                     "\"scale\": %.6f",

@@ -28,4 +28,11 @@ struct rayo_compare_report;
 void cmp_put_out_of_range(cmp_sink *s, const struct rayo_compare_report *r);
 void cmp_put_clamped_json(cmp_sink *s, const struct rayo_compare_report *r);
 
+/* 100 differences / band (0 for an empty band), and the JSON members
+   of a crowded report, "band" and "crowded" (nothing otherwise:
+   report_format.c). */
+double cmp_band_percent(unsigned long long differences,
+                        unsigned long long band);
+void cmp_put_crowded_json(cmp_sink *s, const struct rayo_compare_report *r);
+
 #endif

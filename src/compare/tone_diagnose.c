@@ -12,12 +12,16 @@
  * distance or the field of view); a constant offset, everywhere or on
  * the objects only (a missing ambient term); values wrapped past 255.
  * Among those that fit, the fewest unexplained pixels win, then the
- * first tried; the rounds are in try_all.
+ * first tried; the rounds are in try_all.  Consistent needs nothing
+ * unexplained and the differences at most RAYO_COMPARE_BAND_SHARE of
+ * the pixels where they could be explained (tone_band): a reference busy
+ * everywhere explains anything.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "compare_impl.h"
 #include "tone_impl.h"
 
 #define CLOSE_REDUCTION 20
@@ -492,7 +496,10 @@ rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
         judge_close(ref, image, r);
         if (r->verdict != RAYO_VERDICT_CONSISTENT)
             return RAYO_OK;
-        return look_for_hidden(ref, image, options, r, err);
+        r->band = tone_band(ref);
+        if (!cmp_crowded(r->tone.differing, r->band))
+            return look_for_hidden(ref, image, options, r, err);
+        r->crowded = 1;
     }
     r->verdict = RAYO_VERDICT_INCONSISTENT;
     if (all_black(image)) {

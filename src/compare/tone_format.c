@@ -169,9 +169,14 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
             r->reference_height);
         break;
     default:
-        cmp_put(s, "no single mistake explains the differences; the first "
-                   "unexplained pixel is column %d, row %d",
-            (int)t->first_x, (int)t->first_y);
+        if (t->first_x < 0) /* crowded: nothing unexplained, too much */
+            cmp_put(s, "no single mistake explains the differences, and "
+                       "there are too many of them for one picture drawn a "
+                       "pixel or two apart");
+        else
+            cmp_put(s, "no single mistake explains the differences; the "
+                       "first unexplained pixel is column %d, row %d",
+                (int)t->first_x, (int)t->first_y);
         break;
     }
 }
@@ -215,6 +220,15 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
                    "the same picture drawn a pixel or two apart there "
                    "(another focal distance, float instead of double), not a "
                    "mistake\n");
+    if (r->crowded)
+        cmp_put(s, "note: every differing pixel is explained, but they are "
+                   "%.1f%% of the %llu pixels near an edge or in shading that "
+                   "varies within %g px (a picture drawn a pixel or two apart "
+                   "changes about half of them at most; the limit is %.0f%%): "
+                   "the pictures disagree\n",
+            cmp_band_percent(t->differing, r->band),
+            (unsigned long long)r->band, r->tolerance,
+            100 * RAYO_COMPARE_BAND_SHARE);
     cmp_put(s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
         cmp_put(s, "diagnosis: ");
@@ -260,6 +274,7 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         t->max_edge_difference, (unsigned long long)t->in_shading,
         (unsigned long long)t->unexplained,
         (unsigned long long)r->beyond_tolerance);
+    cmp_put_crowded_json(s, r);
     if (t->first_x >= 0)
         cmp_put(s, ", \"first_unexplained\": {\"x\": %d, \"y\": %d}",
             (int)t->first_x, (int)t->first_y);

@@ -152,6 +152,12 @@ rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
                           const rayo_compare_options *options,
                           rayo_compare_report *report, rayo_error *err);
 
+/* The pixels of the reference where a difference could be explained at
+   all: near an edge, or where some channel's value varies within the
+   tolerance (its maps made by tone_image_find_edges); elsewhere the
+   reference is flat and a differing pixel never is explained. */
+uint64_t tone_band(const tone_image *ref);
+
 /* The scale s (image = reference scaled by s about the optical centre)
    between lo and hi that leaves the smallest sum of squared differences
    (searched on a sampled grid, then finer); *left the differing pixels

@@ -461,6 +461,22 @@ rayo_status tone_image_find_edges(tone_image *t, double tolerance,
     return RAYO_OK;
 }
 
+uint64_t tone_band(const tone_image *ref)
+{
+    size_t n = (size_t)ref->width * ref->height, i;
+    unsigned c, channels = ref->channels;
+    uint64_t band = 0;
+    if (ref->near == NULL || ref->lo == NULL || ref->hi == NULL)
+        return n; /* no maps: anything may be explained anywhere */
+    for (i = 0; i < n; i++) {
+        int in = ref->near[i] != 0;
+        for (c = 0; c < channels && !in; c++)
+            in = ref->hi[i * channels + c] > ref->lo[i * channels + c];
+        band += (uint64_t)in;
+    }
+    return band;
+}
+
 static double squares_of(const tone_counts *k)
 {
     return k->sum_squares[0] + k->sum_squares[1] + k->sum_squares[2];

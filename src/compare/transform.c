@@ -11,6 +11,7 @@
  * Not a resampler for display (no filtering); nearest pixel only.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "compare_impl.h"
@@ -141,6 +142,57 @@ static void mirrored_row(const cmp_mask *image, uint32_t j,
     cmp_clear_padding(out, image->width);
 }
 
+/* The 8x8 bit block held in x (byte r the row r, its high bit the
+ * column 0) transposed: the three swaps of Hacker's Delight, 7-3. */
+static uint64_t transpose8(uint64_t x)
+{
+    uint64_t t;
+    t = (x ^ (x >> 7)) & 0x00AA00AA00AA00AAull;
+    x = x ^ t ^ (t << 7);
+    t = (x ^ (x >> 14)) & 0x0000CCCC0000CCCCull;
+    x = x ^ t ^ (t << 14);
+    t = (x ^ (x >> 28)) & 0x00000000F0F0F0F0ull;
+    return x ^ t ^ (t << 28);
+}
+
+rayo_status cmp_mask_transpose(const cmp_mask *m, cmp_mask *out,
+                               unsigned char **bits, rayo_error *err)
+{
+    size_t in_bytes = cmp_row_bytes(m->width);
+    size_t stride = cmp_row_bytes(m->height), k, k0, r;
+    uint32_t y;
+    out->width = m->height;
+    out->height = m->width;
+    out->stride = stride;
+    *bits = calloc(stride * m->width, 1);
+    out->bits = *bits;
+    if (*bits == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM,
+                              "compare: out of memory for a transposed "
+                              "%ux%u image",
+                              m->width, m->height);
+    /* 64 bytes of columns at a time, so the 512 rows written stay in
+       the cache while the image's rows are read down. */
+    for (k0 = 0; k0 < in_bytes; k0 += 64)
+        for (y = 0; y < m->height; y += 8)
+            for (k = k0; k < k0 + 64 && k < in_bytes; k++) {
+                uint64_t x = 0;
+                for (r = 0; r < 8; r++) /* rows past the end are white */
+                    x = x << 8 |
+                        (y + r < m->height
+                             ? cmp_mask_row(m, (uint32_t)(y + r))[k]
+                             : 0u);
+                x = transpose8(x);
+                /* byte 7 - c of x is column 8k + c, rows y..y+7 */
+                for (r = 0; r < 8 && 8 * k + r < m->width; r++)
+                    (*bits)[(8 * k + r) * stride + y / 8] =
+                        (unsigned char)(x >> (8 * (7 - r)));
+            }
+    for (y = 0; y < out->height; y++)
+        cmp_clear_padding(*bits + (size_t)y * stride, out->width);
+    return RAYO_OK;
+}
+
 /* Flips and transposition: a permutation of the pixels of equal frames. */
 static int permuted_row(const cmp_transform *t, const cmp_mask *image,
                         uint32_t width, uint32_t y, unsigned char *out,
@@ -154,6 +206,8 @@ static int permuted_row(const cmp_transform *t, const cmp_mask *image,
                      scratch, out);
         return 1;
     }
+    if (t->transposed != NULL)
+        return same_frame_row(t->transposed, width, y, 0, out);
     for (i = 0; i < width; i++) /* transposed: column y, row i */
         if (image_bit(image, y, i) > 0)
             rayo_bit_set(out, i, 1);

@@ -9,7 +9,8 @@
 # Not run here: the quick start itself (`make run`, `make check`: this is
 # make check; `make run`'s two renders are done first instead) and the
 # block that runs `make install PREFIX=$HOME/.local` (tests/cli/install.t
-# installs and builds a student's program the same way).  The two slow
+# installs and builds a student's program the same way), and the page's
+# `make web` and its server (make check-web builds and serves it).  The two slow
 # console blocks (grading EJ3 under valgrind, about 20 s, and a class
 # whose infinite loop waits out its 10 s limit) run only with
 # RAYO_README_ALL=1 (CI); otherwise they are reported as skipped.
@@ -19,7 +20,14 @@ work=$TMP/w
 mkdir -p "$work/build"
 ln -s "$RAYO" "$work/build/rayo"
 ln -s "$RAYO_SOURCE/examples" "$work/examples"
-ln -s "$RAYO_SOURCE/tests" "$work/tests"
+# tests/grade is copied, not linked: grade shows a source's name as typed
+# only when it leads there without a link (the sandbox binds the real
+# folder), as in a student's own folder.
+mkdir "$work/tests"
+for entry in "$RAYO_SOURCE"/tests/*; do
+    ln -s "$entry" "$work/tests/${entry##*/}"
+done
+rm "$work/tests/grade" && cp -r "$RAYO_SOURCE/tests/grade" "$work/tests/grade"
 cd "$work" || exit 1
 # make run
 build/rayo -o esfera.pbm && build/rayo -o esfera.png
@@ -65,7 +73,8 @@ slow = ("--exercise ej3", "--each")
 for kind, line, body in blocks:
     text = "\n".join(body)
     if kind == "sh":
-        if "make install" in text or body[:1] == ["make run      # builds build/rayo and renders the sphere to esfera.pbm and esfera.png"]:
+        # make web and its server: make check-web builds and serves it.
+        if "make install" in text or "make web" in text or body[:1] == ["make run      # builds build/rayo and renders the sphere to esfera.pbm and esfera.png"]:
             tap(True, "README line %d: not run here" % line, " # skip see the header")
             continue
         for k, command in enumerate(body):
