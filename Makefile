@@ -194,8 +194,9 @@ clean:
 # libclang-rt-*-dev-wasm32) into $(BUILD)/web/, a static site.  libpng,
 # threads and files are the browser's business there: the library's
 # sources build unchanged against web/wasm/include (pthread.h, png.h),
-# with src/formats/png_read.c and src/io/output.c replaced by web/wasm/
-# files, and src/grade/ (which runs compilers) left out.  `make
+# with src/formats/png_read.c and src/io/output.c (and output_target.c,
+# its replacing of files) replaced by web/wasm/ files, and src/grade/
+# (which runs compilers) left out.  `make
 # check-web` drives Chromium with Playwright (tests/web/); it skips when
 # either is missing, and `make check` runs it when Chromium is installed.
 WASM_CC ?= clang
@@ -204,7 +205,7 @@ WASM_CFLAGS = --target=wasm32-wasi -std=c11 -O2 $(WARNINGS) \
               -Wno-gnu-statement-expression -Iweb/wasm/include -Iinclude \
               -MMD -MP
 WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/io/output.c \
-                 src/grade/%,$(LIB_SRC))
+                 src/io/output_target.c src/grade/%,$(LIB_SRC))
 WASM_SRC := $(WASM_LIB_SRC) $(sort $(wildcard web/wasm/*.c))
 WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o)
 WEB_ASSETS := $(sort $(wildcard web/*.html web/*.js web/*.css))

@@ -24,13 +24,16 @@ one_line() { wc -l <"$1" | tr -d ' '; }
 noise() { { printf 'P5\n1000 1000\n255\n'; head -c 1000000 /dev/urandom; } >"$1"; }
 noise "$TMP/n1.pgm"
 noise "$TMP/n2.pgm"
+# n1 again: compare's diffs are made of two images that agree, so exit
+# status 1 can only mean that the diff could not be written.
+cp "$TMP/n1.pgm" "$TMP/same.pgm"
 mkdir "$TMP/d"
 
 # --- a full device ---------------------------------------------------
 run_capture convert "$TMP/n1.pgm" /dev/full --format pgm
 is "$status" 1 "convert to /dev/full: exit 1"
 is "$(cat "$TMP/err")" "rayo: /dev/full: No space left on device" "convert to /dev/full: file and reason, one line"
-run_capture compare "$TMP/n1.pgm" "$TMP/n2.pgm" --diff /dev/full
+run_capture compare "$TMP/n1.pgm" "$TMP/same.pgm" --diff /dev/full
 is "$status" 1 "compare --diff /dev/full: exit 1"
 is "$(cat "$TMP/err")" "rayo: /dev/full: No space left on device" "compare --diff /dev/full: file and reason, one line"
 is "$(wc -c <"$TMP/out" | tr -d ' ')" 0 "compare --diff /dev/full: no report when the diff failed"
@@ -50,7 +53,7 @@ is "$(cat "$TMP/d/keep.pgm")" "precious" "convert, file size limit: the earlier 
 is "$(leftovers "$TMP/d")" 0 "convert, file size limit: no temporary file left"
 
 printf 'precious\n' >"$TMP/d/diff.png"
-limited 16 compare "$TMP/n1.pgm" "$TMP/n2.pgm" --diff "$TMP/d/diff.png"
+limited 16 compare "$TMP/n1.pgm" "$TMP/same.pgm" --diff "$TMP/d/diff.png"
 is "$status" 1 "compare --diff, file size limit mid-file: exit 1"
 is "$(cat "$TMP/err")" "rayo: $TMP/d/diff.png: File too large" "compare --diff, file size limit: file and reason"
 is "$(cat "$TMP/d/diff.png")" "precious" "compare --diff, file size limit: the earlier file is intact"
@@ -73,7 +76,7 @@ if [ "$mounted" = 1 ]; then
     is "$status" 1 "convert, file system full: exit 1"
     is "$(cat "$TMP/err")" "rayo: $small/out.pgm: No space left on device" "convert, file system full: file and reason"
     is "$(cat "$small/out.pgm")" "precious" "convert, file system full: the earlier file is intact"
-    run_capture compare "$TMP/n1.pgm" "$TMP/n2.pgm" --diff "$small/diff.png"
+    run_capture compare "$TMP/n1.pgm" "$TMP/same.pgm" --diff "$small/diff.png"
     is "$status" 1 "compare --diff, file system full: exit 1"
     is "$(cat "$TMP/err")" "rayo: $small/diff.png: No space left on device" "compare --diff, file system full: file and reason"
     is "$(cat "$small/diff.png")" "precious" "compare --diff, file system full: the earlier file is intact"
@@ -105,7 +108,7 @@ if [ -n "$ro" ]; then
     ok $? "convert, read-only output folder: file and reason"
     is "$(one_line "$TMP/err")" 1 "convert, read-only output folder: one line"
     is "$(cat "$ro/out.pgm")" "precious" "convert, read-only output folder: the earlier file is intact"
-    run_capture compare "$TMP/n1.pgm" "$TMP/n2.pgm" --diff "$ro/diff.png"
+    run_capture compare "$TMP/n1.pgm" "$TMP/same.pgm" --diff "$ro/diff.png"
     is "$status" 1 "compare --diff, read-only output folder: exit 1"
     grep -Eq "^rayo: $ro/[.]?diff.png.*: $reason\$" "$TMP/err"
     ok $? "compare --diff, read-only output folder: file and reason"

@@ -156,8 +156,10 @@ int rayo_output_is_terminal(const rayo_output *out)
     return 0;
 }
 
-const char *rayo_output_temp_path(const rayo_output *out)
+const char *rayo_output_temp_at(const rayo_output *out, int *dir_fd)
 {
     (void)out;
+    if (dir_fd != NULL)
+        *dir_fd = -1;
     return NULL;
 }
