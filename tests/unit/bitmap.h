@@ -1,11 +1,13 @@
 /*
  * bitmap.h - bilevel images for the unit tests that build them pixel by
- * pixel (t_compare, t_compare_bounds, t_preview): make one all white,
- * read and set a pixel.  Failing to allocate aborts the test.
+ * pixel (t_compare, t_compare_band, t_compare_bounds, t_preview): make
+ * one all white, read and set a pixel, compare two at a tolerance.
+ * Failing to allocate, or a comparison that fails, aborts the test.
  */
 #ifndef RAYO_TEST_BITMAP_H
 #define RAYO_TEST_BITMAP_H
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,6 +32,23 @@ static inline void bitmap_put(rayo_image *m, uint32_t x, uint32_t y,
                               int black)
 {
     rayo_bit_set(rayo_image_row(m, y), x, black);
+}
+
+/* rayo_compare_images with the default options but the tolerance. */
+static inline rayo_compare_report bitmap_compare(const rayo_image *a,
+                                                 const rayo_image *b,
+                                                 double tolerance)
+{
+    rayo_compare_options options;
+    rayo_compare_report report;
+    rayo_error err;
+    rayo_compare_options_init(&options);
+    options.tolerance = tolerance;
+    if (rayo_compare_images(a, b, &options, &report, &err) != RAYO_OK) {
+        printf("# %s\n", err.message);
+        abort();
+    }
+    return report;
 }
 
 #endif
