@@ -85,7 +85,8 @@ static void window_columns(const unsigned char *in, unsigned char *out,
         const unsigned char *a = tile + j * TILE_COLUMNS;
         unsigned char *p = prefix + j * TILE_COLUMNS;
         for (c = 0; c < cols; c++)
-            p[c] = j % w == 0 ? a[c] : pick(p[c - TILE_COLUMNS], a[c], max);
+            p[c] = j % w == 0 ? a[c]
+                              : pick((p - TILE_COLUMNS)[c], a[c], max);
     }
     for (j = total; j-- > 0;) {
         const unsigned char *a = tile + j * TILE_COLUMNS;
