@@ -152,9 +152,22 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
                                          (rayo_course_mistake)m))
             continue;
         s = course_tone((rayo_course_exercise)course, (rayo_course_mistake)m,
-                        image->channels, 1, r, &t, err);
+                        image->channels, 0, r, &t, err);
         if (s != RAYO_OK)
             return s;
+        /* The differing pixels alone, counted without the render's edges
+           and windows, rule most mistakes out: consider needs them
+           halved whatever is explained. */
+        tone_measure(&t, image, &id, r->tolerance, r->tone.levels, -1, &k);
+        if (8 * k.placed < r->pixels || 2 * k.differing > r->tone.differing) {
+            tone_image_free(&t);
+            continue;
+        }
+        s = tone_image_find_edges(&t, r->tolerance, r->tone.levels, err);
+        if (s != RAYO_OK) {
+            tone_image_free(&t);
+            return s;
+        }
         cap(&id, r);
         tone_measure(&t, image, &id, r->tolerance, r->tone.levels, 0, &k);
         tone_image_free(&t);
