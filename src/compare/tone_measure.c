@@ -67,6 +67,51 @@ static int undo_scaled(const tone_image *ref, const tone_image *image,
     return 1;
 }
 
+/* Where undo_scaled reads along one axis: for each reference column
+   (or row) the image's pixel before it, the one after and the weight of
+   the one after; at < 0 outside the image.  The same arithmetic as
+   undo_scaled's, done once a column and once a row instead of once a
+   pixel. */
+typedef struct scale_axis {
+    int64_t at, next;
+    double weight;
+} scale_axis;
+
+static void scale_axis_make(scale_axis *a, uint32_t n, uint32_t ref_n,
+                            uint32_t image_n, double s)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        double f = s * ((double)i - ref_n / 2) + image_n / 2;
+        double f0 = floor(f);
+        int64_t k = (int64_t)f0;
+        a[i].weight = f - f0;
+        a[i].at = k < 0 || k >= image_n ? -1 : k;
+        a[i].next = k + 1 < image_n ? k + 1 : k;
+    }
+}
+
+static int undo_scaled_at(const tone_image *image, const scale_axis *ax,
+                          const scale_axis *ay, unsigned n, unsigned char *u)
+{
+    double wx = ax->weight, wy = ay->weight;
+    const unsigned char *pa, *pb, *pd, *pe;
+    unsigned c;
+    if (ax->at < 0 || ay->at < 0)
+        return 0;
+    pa = tone_pixel(image, (uint32_t)ax->at, (uint32_t)ay->at);
+    pb = tone_pixel(image, (uint32_t)ax->next, (uint32_t)ay->at);
+    pd = tone_pixel(image, (uint32_t)ax->at, (uint32_t)ay->next);
+    pe = tone_pixel(image, (uint32_t)ax->next, (uint32_t)ay->next);
+    for (c = 0; c < n; c++) {
+        double a = pa[c], b = pb[c], d = pd[c], e = pe[c];
+        double v = (a * (1 - wx) + b * wx) * (1 - wy) +
+                   (d * (1 - wx) + e * wx) * wy;
+        u[c] = (unsigned char)floor(v + 0.5);
+    }
+    return 1;
+}
+
 /* The image's pixel for reference pixel (x, y), undone by t, into u;
    0 when it falls outside the image. */
 static int undo(const tone_image *ref, const tone_image *image,
@@ -295,14 +340,30 @@ void tone_measure(const tone_image *ref, const tone_image *image,
     uint32_t step = t->step > 0 ? t->step : 1, x, y;
     unsigned n = ref->channels, c;
     int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    scale_axis *xs = NULL, *ys = NULL;
     memset(k, 0, sizeof *k);
     k->first_x = k->first_y = -1;
+    if (t->kind == TONE_SCALE) {
+        xs = malloc(ref->width * sizeof *xs);
+        ys = malloc(ref->height * sizeof *ys);
+        if (xs == NULL || ys == NULL) { /* then pixel by pixel */
+            free(xs);
+            free(ys);
+            xs = ys = NULL;
+        } else {
+            scale_axis_make(xs, ref->width, ref->width, image->width,
+                            t->scale);
+            scale_axis_make(ys, ref->height, ref->height, image->height,
+                            t->scale);
+        }
+    }
     for (y = 0; y < ref->height; y += step)
         for (x = 0; x < ref->width; x += step) {
             const unsigned char *r = tone_pixel(ref, x, y);
             unsigned char u[3];
             unsigned worst = 0;
-            if (undo(ref, image, t, x, y, u)) {
+            if (xs != NULL ? undo_scaled_at(image, &xs[x], &ys[y], n, u)
+                           : undo(ref, image, t, x, y, u)) {
                 k->placed++;
             } else if (t->kind == TONE_SHIFT) {
                 /* What a shift brings in from outside the image is black,
@@ -348,9 +409,13 @@ void tone_measure(const tone_image *ref, const tone_image *image,
             if (t->capped && (k->unexplained > t->max_unexplained ||
                               k->differing > t->max_differing)) {
                 k->stopped = 1;
+                free(xs);
+                free(ys);
                 return;
             }
         }
+    free(xs);
+    free(ys);
 }
 
 /* A step stands out when it is more than the levels and more than twice
