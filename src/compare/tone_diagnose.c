@@ -148,6 +148,9 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
         tone_counts k;
         tone_xform id = tone_identity();
         rayo_status s;
+        /* Nothing beats a candidate that leaves no pixel differing. */
+        if (ch->found && ch->unexplained == 0 && ch->differing == 0)
+            break;
         if (!rayo_course_mistake_applies((rayo_course_exercise)course,
                                          (rayo_course_mistake)m))
             continue;
@@ -157,9 +160,12 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
             return s;
         /* The differing pixels alone, counted without the render's edges
            and windows, rule most mistakes out: consider needs them
-           halved whatever is explained. */
+           halved whatever is explained, and fewer than those of a
+           choice that leaves nothing unexplained. */
         tone_measure(&t, image, &id, r->tolerance, r->tone.levels, -1, &k);
-        if (8 * k.placed < r->pixels || 2 * k.differing > r->tone.differing) {
+        if (8 * k.placed < r->pixels || 2 * k.differing > r->tone.differing ||
+            (ch->found && ch->unexplained == 0 &&
+             k.differing >= ch->differing)) {
             tone_image_free(&t);
             continue;
         }
@@ -353,7 +359,8 @@ static rayo_status hidden_mistake(const tone_image *image, int course,
         s = differing_from(image, course, RAYO_MISTAKE_NONE, r, &right, err);
     if (s != RAYO_OK || right < CLOSE_REDUCTION)
         return s;
-    for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT; m++) {
+    for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT && best > 0;
+         m++) {
         if (!rayo_course_mistake_applies((rayo_course_exercise)course,
                                          (rayo_course_mistake)m))
             continue;
