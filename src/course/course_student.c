@@ -90,6 +90,15 @@ rayo_status rayo_course_render_student(rayo_course_exercise exercise,
                                        const rayo_course_options *options,
                                        rayo_image *image, rayo_error *err)
 {
+    return rayo_course_render_student_rows(exercise, options, image, 0,
+                                           RAYO_COURSE_HEIGHT, err);
+}
+
+rayo_status rayo_course_render_student_rows(rayo_course_exercise exercise,
+                                            const rayo_course_options *options,
+                                            rayo_image *image, uint32_t first,
+                                            uint32_t end, rayo_error *err)
+{
     const rayo_course_data *data = rayo_course_data_of(exercise);
     course_student student;
     rayo_camera camera;
@@ -114,10 +123,14 @@ rayo_status rayo_course_render_student(rayo_course_exercise exercise,
     student_init(&student, data, options->mistake);
     info = gray ? rayo_image_info_gray8(RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT)
                 : rayo_image_info_rgb8(RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT);
-    status = rayo_image_create(image, &info, err);
-    if (status != RAYO_OK)
-        return status;
-    for (j = 0; j < RAYO_COURSE_HEIGHT; j++) {
+    if (first == 0) {
+        status = rayo_image_create(image, &info, err);
+        if (status != RAYO_OK)
+            return status;
+    }
+    if (end > RAYO_COURSE_HEIGHT)
+        end = RAYO_COURSE_HEIGHT;
+    for (j = first; j < end; j++) {
         unsigned char *row = rayo_image_row(image, j);
         float vy = (float)(top - (int)j);
         for (i = 0; i < RAYO_COURSE_WIDTH; i++) {
