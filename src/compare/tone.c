@@ -103,6 +103,20 @@ void tone_image_convert_rows(const rayo_image *image, tone_image *out,
     const rayo_image_info *info = &image->info;
     unsigned channels = out->channels, c;
     uint32_t x, y;
+    if (info->sample == RAYO_SAMPLE_U8 && info->maxval == 255 &&
+        (info->channels == channels || info->channels == 1)) {
+        /* 8-bit samples as they are: copied, a gray one repeated. */
+        for (y = first; y < end; y++) {
+            const unsigned char *row = rayo_image_row(image, y);
+            unsigned char *dst = out->v + (size_t)y * info->width * channels;
+            if (info->channels == channels)
+                memcpy(dst, row, (size_t)info->width * channels);
+            else
+                for (x = 0; x < info->width; x++, dst += 3)
+                    dst[0] = dst[1] = dst[2] = row[x];
+        }
+        return;
+    }
     for (y = first; y < end; y++) {
         const unsigned char *row = rayo_image_row(image, y);
         unsigned char *dst = out->v + (size_t)y * info->width * channels;

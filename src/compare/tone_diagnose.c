@@ -188,14 +188,24 @@ static rayo_status mistake_render(int course, int m, const tone_image *image,
     memset(&render, 0, sizeof render);
     s = rayo_course_render_student_rows((rayo_course_exercise)course, &o,
                                         &render, 0, 0, err);
-    if (s == RAYO_OK)
-        s = tone_image_make(&render, image->channels, t, err);
-    if (s == RAYO_OK && (t->width != image->width ||
-                         t->height != image->height))
+    if (s == RAYO_OK && (render.info.width != image->width ||
+                         render.info.height != image->height))
         s = rayo_error_set(err, RAYO_ERR_INVALID,
                            "compare: the course's render is %ux%u, the "
                            "image %ux%u",
-                           t->width, t->height, image->width, image->height);
+                           render.info.width, render.info.height,
+                           image->width, image->height);
+    if (s == RAYO_OK) {
+        /* tone_image_make's image, its rows converted as they come */
+        t->width = image->width;
+        t->height = image->height;
+        t->channels = image->channels;
+        t->v = malloc((size_t)t->width * t->height * t->channels);
+        if (t->v == NULL)
+            s = rayo_error_set(err, RAYO_ERR_NOMEM,
+                               "compare: out of memory for a %ux%u image",
+                               t->width, t->height);
+    }
     for (; s == RAYO_OK && y < t->height && !*out; y = end) {
         end = y + RENDER_BAND < t->height ? y + RENDER_BAND : t->height;
         s = rayo_course_render_student_rows((rayo_course_exercise)course,
