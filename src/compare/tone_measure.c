@@ -333,6 +333,61 @@ static int near_edge(const tone_image *ref, uint32_t x, uint32_t y,
     return 0;
 }
 
+/* tone_measure with classify -1 for the transforms that only move the
+   image (the identity, a shift, a scale: xs and ys its axes): the same
+   counts in the same order, the image read in place without undo. */
+static void count_only(const tone_image *ref, const tone_image *image,
+                       const tone_xform *t, const scale_axis *xs,
+                       const scale_axis *ys, uint32_t step, unsigned levels,
+                       tone_counts *k)
+{
+    static const unsigned char black[3] = {0, 0, 0};
+    int64_t ox = (int64_t)(image->width / 2) - (int64_t)(ref->width / 2);
+    int64_t oy = (int64_t)(image->height / 2) - (int64_t)(ref->height / 2);
+    int64_t dx = t->kind == TONE_SHIFT ? t->dx : 0;
+    int64_t dy = t->kind == TONE_SHIFT ? t->dy : 0;
+    unsigned n = ref->channels, c;
+    uint32_t x, y;
+    for (y = 0; y < ref->height; y += step) {
+        int64_t iy = (int64_t)y + dy + oy;
+        int row_in = iy >= 0 && iy < image->height;
+        for (x = 0; x < ref->width; x += step) {
+            const unsigned char *r = tone_pixel(ref, x, y), *p;
+            unsigned char u[3];
+            unsigned worst = 0;
+            if (xs != NULL) {
+                if (!undo_scaled_at(image, &xs[x], &ys[y], n, u))
+                    continue;
+                p = u;
+                k->placed++;
+            } else {
+                int64_t ix = (int64_t)x + dx + ox;
+                if (row_in && ix >= 0 && ix < image->width) {
+                    p = tone_pixel(image, (uint32_t)ix, (uint32_t)iy);
+                    k->placed++;
+                } else if (t->kind == TONE_SHIFT) {
+                    p = black;
+                } else {
+                    continue;
+                }
+            }
+            k->known++;
+            for (c = 0; c < n; c++) {
+                unsigned d = p[c] > r[c] ? p[c] - r[c] : r[c] - p[c];
+                k->sum_squares[c] += (double)d * d;
+                if (d > k->max_difference[c])
+                    k->max_difference[c] = d;
+                if (d > levels)
+                    k->beyond[c]++;
+                if (d > worst)
+                    worst = d;
+            }
+            if (worst > levels)
+                k->differing++;
+        }
+    }
+}
+
 void tone_measure(const tone_image *ref, const tone_image *image,
                   const tone_xform *t, double tolerance, unsigned levels,
                   int classify, tone_counts *k)
@@ -356,6 +411,13 @@ void tone_measure(const tone_image *ref, const tone_image *image,
             scale_axis_make(ys, ref->height, ref->height, image->height,
                             t->scale);
         }
+    }
+    if (classify < 0 && (xs != NULL || t->kind == TONE_SHIFT ||
+                         t->kind == TONE_IDENTITY)) {
+        count_only(ref, image, t, xs, ys, step, levels, k);
+        free(xs);
+        free(ys);
+        return;
     }
     for (y = 0; y < ref->height; y += step)
         for (x = 0; x < ref->width; x += step) {
