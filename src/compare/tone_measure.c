@@ -74,7 +74,7 @@ static int undo_scaled(const tone_image *ref, const tone_image *image,
    pixel. */
 typedef struct scale_axis {
     int64_t at, next;
-    double weight;
+    double weight, rest; /* rest: 1 - weight */
 } scale_axis;
 
 static void scale_axis_make(scale_axis *a, uint32_t n, uint32_t ref_n,
@@ -86,15 +86,17 @@ static void scale_axis_make(scale_axis *a, uint32_t n, uint32_t ref_n,
         double f0 = floor(f);
         int64_t k = (int64_t)f0;
         a[i].weight = f - f0;
+        a[i].rest = 1 - a[i].weight;
         a[i].at = k < 0 || k >= image_n ? -1 : k;
         a[i].next = k + 1 < image_n ? k + 1 : k;
     }
 }
 
-static int undo_scaled_at(const tone_image *image, const scale_axis *ax,
-                          const scale_axis *ay, unsigned n, unsigned char *u)
+static inline int undo_scaled_at(const tone_image *image,
+                                 const scale_axis *ax, const scale_axis *ay,
+                                 unsigned n, unsigned char *u)
 {
-    double wx = ax->weight, wy = ay->weight;
+    double wx = ax->weight, wy = ay->weight, rx = ax->rest, ry = ay->rest;
     const unsigned char *pa, *pb, *pd, *pe;
     unsigned c;
     if (ax->at < 0 || ay->at < 0)
@@ -105,9 +107,9 @@ static int undo_scaled_at(const tone_image *image, const scale_axis *ax,
     pe = tone_pixel(image, (uint32_t)ax->next, (uint32_t)ay->next);
     for (c = 0; c < n; c++) {
         double a = pa[c], b = pb[c], d = pd[c], e = pe[c];
-        double v = (a * (1 - wx) + b * wx) * (1 - wy) +
-                   (d * (1 - wx) + e * wx) * wy;
-        u[c] = (unsigned char)floor(v + 0.5);
+        double v = (a * rx + b * wx) * ry + (d * rx + e * wx) * wy;
+        /* v >= 0: truncating is floor, without a call for it */
+        u[c] = (unsigned char)(v + 0.5);
     }
     return 1;
 }
