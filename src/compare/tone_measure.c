@@ -409,6 +409,8 @@ void tone_measure(const tone_image *ref, const tone_image *image,
     unsigned n = ref->channels, c;
     int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
     scale_axis *xs = NULL, *ys = NULL;
+    int in_place = t->kind == TONE_IDENTITY && ref->width == image->width &&
+                   ref->height == image->height;
     memset(k, 0, sizeof *k);
     k->first_x = k->first_y = -1;
     if (t->kind == TONE_SCALE) {
@@ -437,7 +439,12 @@ void tone_measure(const tone_image *ref, const tone_image *image,
             const unsigned char *r = tone_pixel(ref, x, y);
             unsigned char u[3];
             unsigned worst = 0;
-            if (xs != NULL ? undo_scaled_at(image, &xs[x], &ys[y], n, u)
+            if (in_place) {
+                /* the identity on images of one size: undo's copy */
+                memcpy(u, tone_pixel(image, x, y), n);
+                k->placed++;
+            } else if (xs != NULL
+                           ? undo_scaled_at(image, &xs[x], &ys[y], n, u)
                            : undo(ref, image, t, x, y, u)) {
                 k->placed++;
             } else if (t->kind == TONE_SHIFT) {
