@@ -78,8 +78,6 @@ rayo_status tone_image_make(const rayo_image *image, unsigned channels,
 {
     const rayo_image_info *info = &image->info;
     size_t count;
-    uint32_t x, y;
-    unsigned c;
     rayo_status s = rayo_image_info_check(info, err);
     memset(out, 0, sizeof *out);
     if (s != RAYO_OK)
@@ -95,7 +93,31 @@ rayo_status tone_image_make(const rayo_image *image, unsigned channels,
     out->width = info->width;
     out->height = info->height;
     out->channels = channels;
-    for (y = 0; y < info->height; y++) {
+    tone_image_convert_rows(image, out, 0, info->height);
+    return RAYO_OK;
+}
+
+void tone_image_convert_rows(const rayo_image *image, tone_image *out,
+                             uint32_t first, uint32_t end)
+{
+    const rayo_image_info *info = &image->info;
+    unsigned channels = out->channels, c;
+    uint32_t x, y;
+    if (info->sample == RAYO_SAMPLE_U8 && info->maxval == 255 &&
+        (info->channels == channels || info->channels == 1)) {
+        /* 8-bit samples as they are: copied, a gray one repeated. */
+        for (y = first; y < end; y++) {
+            const unsigned char *row = rayo_image_row(image, y);
+            unsigned char *dst = out->v + (size_t)y * info->width * channels;
+            if (info->channels == channels)
+                memcpy(dst, row, (size_t)info->width * channels);
+            else
+                for (x = 0; x < info->width; x++, dst += 3)
+                    dst[0] = dst[1] = dst[2] = row[x];
+        }
+        return;
+    }
+    for (y = first; y < end; y++) {
         const unsigned char *row = rayo_image_row(image, y);
         unsigned char *dst = out->v + (size_t)y * info->width * channels;
         for (x = 0; x < info->width; x++, dst += channels) {
@@ -120,7 +142,6 @@ rayo_status tone_image_make(const rayo_image *image, unsigned channels,
             }
         }
     }
-    return RAYO_OK;
 }
 
 void tone_image_free(tone_image *t)

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../course/course_impl.h"
 #include "compare_impl.h"
 #include "tone_impl.h"
 
@@ -138,23 +139,114 @@ static rayo_status detect_course(const tone_image *ref,
     return RAYO_OK;
 }
 
+/* Rows of a mistake's render made at a time before it is checked. */
+#define RENDER_BAND 16
+
+/* Whether the render t of a mistake, rows 0..end-1 made so far, already
+   differs from the image in too many pixels for consider to take it:
+   *differing counts them, from row `from` on. */
+static int ruled_out(const tone_image *t, const tone_image *image,
+                     const rayo_compare_report *r, const choice *ch,
+                     uint32_t from, uint32_t end, uint64_t *differing)
+{
+    size_t i = (size_t)from * t->width * t->channels;
+    size_t stop = (size_t)end * t->width * t->channels;
+    unsigned c, n = t->channels, levels = r->tone.levels;
+    for (; i < stop; i += n) {
+        unsigned worst = 0;
+        for (c = 0; c < n; c++) {
+            unsigned a = t->v[i + c], b = image->v[i + c];
+            unsigned d = a > b ? a - b : b - a;
+            if (d > worst)
+                worst = d;
+        }
+        *differing += worst > levels;
+    }
+    return 2 * *differing > r->tone.differing ||
+           (ch->found && ch->unexplained == 0 && *differing >= ch->differing);
+}
+
+/* The render of mistake m as a tone image into t, made a band of rows
+   at a time and given up (*out 1, t freed) as soon as the pixels that
+   differ from the image rule the mistake out: consider needs them
+   halved whatever is explained, and fewer than those of a choice that
+   leaves nothing unexplained. */
+static rayo_status mistake_render(int course, int m, const tone_image *image,
+                                  const rayo_compare_report *r,
+                                  const choice *ch, tone_image *t, int *out,
+                                  rayo_error *err)
+{
+    rayo_course_options o;
+    rayo_image render;
+    rayo_status s;
+    uint64_t differing = 0;
+    uint32_t y = 0, end;
+    rayo_course_options_init(&o);
+    o.mistake = (rayo_course_mistake)m;
+    memset(t, 0, sizeof *t);
+    *out = 0;
+    memset(&render, 0, sizeof render);
+    s = rayo_course_render_student_rows((rayo_course_exercise)course, &o,
+                                        &render, 0, 0, err);
+    if (s == RAYO_OK && (render.info.width != image->width ||
+                         render.info.height != image->height))
+        s = rayo_error_set(err, RAYO_ERR_INVALID,
+                           "compare: the course's render is %ux%u, the "
+                           "image %ux%u",
+                           render.info.width, render.info.height,
+                           image->width, image->height);
+    if (s == RAYO_OK) {
+        /* tone_image_make's image, its rows converted as they come */
+        t->width = image->width;
+        t->height = image->height;
+        t->channels = image->channels;
+        t->v = malloc((size_t)t->width * t->height * t->channels);
+        if (t->v == NULL)
+            s = rayo_error_set(err, RAYO_ERR_NOMEM,
+                               "compare: out of memory for a %ux%u image",
+                               t->width, t->height);
+    }
+    for (; s == RAYO_OK && y < t->height && !*out; y = end) {
+        end = y + RENDER_BAND < t->height ? y + RENDER_BAND : t->height;
+        s = rayo_course_render_student_rows((rayo_course_exercise)course,
+                                            &o, &render, y, end, err);
+        if (s != RAYO_OK)
+            break;
+        tone_image_convert_rows(&render, t, y, end);
+        *out = ruled_out(t, image, r, ch, y, end, &differing);
+    }
+    rayo_image_free(&render);
+    if (s != RAYO_OK || *out)
+        tone_image_free(t);
+    return s;
+}
+
 static rayo_status try_mistakes(choice *ch, const tone_image *image,
                                 int course, const rayo_compare_report *r,
                                 rayo_error *err)
 {
-    int m;
+    int m, out;
     for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT; m++) {
         tone_image t;
         tone_counts k;
         tone_xform id = tone_identity();
         rayo_status s;
+        /* Nothing beats a candidate that leaves no pixel differing. */
+        if (ch->found && ch->unexplained == 0 && ch->differing == 0)
+            break;
         if (!rayo_course_mistake_applies((rayo_course_exercise)course,
                                          (rayo_course_mistake)m))
             continue;
-        s = course_tone((rayo_course_exercise)course, (rayo_course_mistake)m,
-                        image->channels, 1, r, &t, err);
+        s = mistake_render(course, m, image, r, ch, &t, &out, err);
         if (s != RAYO_OK)
             return s;
+        if (out)
+            continue;
+        s = tone_image_find_edges(&t, r->tolerance, r->tone.levels, err);
+        if (s != RAYO_OK) {
+            tone_image_free(&t);
+            return s;
+        }
         cap(&id, r);
         tone_measure(&t, image, &id, r->tolerance, r->tone.levels, 0, &k);
         tone_image_free(&t);
@@ -340,7 +432,8 @@ static rayo_status hidden_mistake(const tone_image *image, int course,
         s = differing_from(image, course, RAYO_MISTAKE_NONE, r, &right, err);
     if (s != RAYO_OK || right < CLOSE_REDUCTION)
         return s;
-    for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT; m++) {
+    for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT && best > 0;
+         m++) {
         if (!rayo_course_mistake_applies((rayo_course_exercise)course,
                                          (rayo_course_mistake)m))
             continue;

@@ -57,6 +57,11 @@ rayo_status tone_image_make(const rayo_image *image, unsigned channels,
                             tone_image *out, rayo_error *err);
 void tone_image_free(tone_image *t);
 
+/* Rows first..end-1 of image into out, made by tone_image_make from an
+   image of the same size and format. */
+void tone_image_convert_rows(const rayo_image *image, tone_image *out,
+                             uint32_t first, uint32_t end);
+
 /* Marks, once, the pixels of t within the tolerance of an edge (for
    levels), so tone_measure, used with t as the reference, needs not look
    around every differing pixel for one. */

@@ -67,6 +67,53 @@ static int undo_scaled(const tone_image *ref, const tone_image *image,
     return 1;
 }
 
+/* Where undo_scaled reads along one axis: for each reference column
+   (or row) the image's pixel before it, the one after and the weight of
+   the one after; at < 0 outside the image.  The same arithmetic as
+   undo_scaled's, done once a column and once a row instead of once a
+   pixel. */
+typedef struct scale_axis {
+    int64_t at, next;
+    double weight, rest; /* rest: 1 - weight */
+} scale_axis;
+
+static void scale_axis_make(scale_axis *a, uint32_t n, uint32_t ref_n,
+                            uint32_t image_n, double s)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        double f = s * ((double)i - ref_n / 2) + image_n / 2;
+        double f0 = floor(f);
+        int64_t k = (int64_t)f0;
+        a[i].weight = f - f0;
+        a[i].rest = 1 - a[i].weight;
+        a[i].at = k < 0 || k >= image_n ? -1 : k;
+        a[i].next = k + 1 < image_n ? k + 1 : k;
+    }
+}
+
+static inline int undo_scaled_at(const tone_image *image,
+                                 const scale_axis *ax, const scale_axis *ay,
+                                 unsigned n, unsigned char *u)
+{
+    double wx = ax->weight, wy = ay->weight, rx = ax->rest, ry = ay->rest;
+    const unsigned char *pa, *pb, *pd, *pe;
+    unsigned c;
+    if (ax->at < 0 || ay->at < 0)
+        return 0;
+    pa = tone_pixel(image, (uint32_t)ax->at, (uint32_t)ay->at);
+    pb = tone_pixel(image, (uint32_t)ax->next, (uint32_t)ay->at);
+    pd = tone_pixel(image, (uint32_t)ax->at, (uint32_t)ay->next);
+    pe = tone_pixel(image, (uint32_t)ax->next, (uint32_t)ay->next);
+    for (c = 0; c < n; c++) {
+        double a = pa[c], b = pb[c], d = pd[c], e = pe[c];
+        double v = (a * rx + b * wx) * ry + (d * rx + e * wx) * wy;
+        /* v >= 0: truncating is floor, without a call for it */
+        u[c] = (unsigned char)(v + 0.5);
+    }
+    return 1;
+}
+
 /* The image's pixel for reference pixel (x, y), undone by t, into u;
    0 when it falls outside the image. */
 static int undo(const tone_image *ref, const tone_image *image,
@@ -288,6 +335,72 @@ static int near_edge(const tone_image *ref, uint32_t x, uint32_t y,
     return 0;
 }
 
+/* tone_measure with classify -1 for the transforms that only move the
+   image (the identity, a shift, a scale: xs and ys its axes): the same
+   counts in the same order, the image read in place without undo. */
+static void count_only(const tone_image *ref, const tone_image *image,
+                       const tone_xform *t, const scale_axis *xs,
+                       const scale_axis *ys, uint32_t step, unsigned levels,
+                       tone_counts *k)
+{
+    static const unsigned char black[3] = {0, 0, 0};
+    int64_t ox = (int64_t)(image->width / 2) - (int64_t)(ref->width / 2);
+    int64_t oy = (int64_t)(image->height / 2) - (int64_t)(ref->height / 2);
+    int64_t dx = t->kind == TONE_SHIFT ? t->dx : 0;
+    int64_t dy = t->kind == TONE_SHIFT ? t->dy : 0;
+    unsigned n = ref->channels, c, most[3] = {0, 0, 0};
+    /* Squares of whole levels add up exactly in a double as in an
+       integer (below 2^53), so this sum is the double one bit for bit;
+       kept in locals, the loop does not wait on memory. */
+    uint64_t squares[3] = {0, 0, 0}, beyond[3] = {0, 0, 0};
+    uint64_t placed = 0, known = 0, differing = 0;
+    uint32_t x, y;
+    for (y = 0; y < ref->height; y += step) {
+        int64_t iy = (int64_t)y + dy + oy;
+        int row_in = iy >= 0 && iy < image->height;
+        for (x = 0; x < ref->width; x += step) {
+            const unsigned char *r = tone_pixel(ref, x, y), *p;
+            unsigned char u[3];
+            unsigned worst = 0;
+            if (xs != NULL) {
+                if (!undo_scaled_at(image, &xs[x], &ys[y], n, u))
+                    continue;
+                p = u;
+                placed++;
+            } else {
+                int64_t ix = (int64_t)x + dx + ox;
+                if (row_in && ix >= 0 && ix < image->width) {
+                    p = tone_pixel(image, (uint32_t)ix, (uint32_t)iy);
+                    placed++;
+                } else if (t->kind == TONE_SHIFT) {
+                    p = black;
+                } else {
+                    continue;
+                }
+            }
+            known++;
+            for (c = 0; c < n; c++) {
+                unsigned d = p[c] > r[c] ? p[c] - r[c] : r[c] - p[c];
+                squares[c] += (uint64_t)d * d;
+                if (d > most[c])
+                    most[c] = d;
+                beyond[c] += d > levels;
+                if (d > worst)
+                    worst = d;
+            }
+            differing += worst > levels;
+        }
+    }
+    k->placed = placed;
+    k->known = known;
+    k->differing = differing;
+    for (c = 0; c < n; c++) {
+        k->sum_squares[c] = (double)squares[c];
+        k->max_difference[c] = most[c];
+        k->beyond[c] = beyond[c];
+    }
+}
+
 void tone_measure(const tone_image *ref, const tone_image *image,
                   const tone_xform *t, double tolerance, unsigned levels,
                   int classify, tone_counts *k)
@@ -295,14 +408,44 @@ void tone_measure(const tone_image *ref, const tone_image *image,
     uint32_t step = t->step > 0 ? t->step : 1, x, y;
     unsigned n = ref->channels, c;
     int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    scale_axis *xs = NULL, *ys = NULL;
+    int in_place = t->kind == TONE_IDENTITY && ref->width == image->width &&
+                   ref->height == image->height;
     memset(k, 0, sizeof *k);
     k->first_x = k->first_y = -1;
+    if (t->kind == TONE_SCALE) {
+        xs = malloc(ref->width * sizeof *xs);
+        ys = malloc(ref->height * sizeof *ys);
+        if (xs == NULL || ys == NULL) { /* then pixel by pixel */
+            free(xs);
+            free(ys);
+            xs = ys = NULL;
+        } else {
+            scale_axis_make(xs, ref->width, ref->width, image->width,
+                            t->scale);
+            scale_axis_make(ys, ref->height, ref->height, image->height,
+                            t->scale);
+        }
+    }
+    if (classify < 0 && (xs != NULL || t->kind == TONE_SHIFT ||
+                         t->kind == TONE_IDENTITY)) {
+        count_only(ref, image, t, xs, ys, step, levels, k);
+        free(xs);
+        free(ys);
+        return;
+    }
     for (y = 0; y < ref->height; y += step)
         for (x = 0; x < ref->width; x += step) {
             const unsigned char *r = tone_pixel(ref, x, y);
             unsigned char u[3];
             unsigned worst = 0;
-            if (undo(ref, image, t, x, y, u)) {
+            if (in_place) {
+                /* the identity on images of one size: undo's copy */
+                memcpy(u, tone_pixel(image, x, y), n);
+                k->placed++;
+            } else if (xs != NULL
+                           ? undo_scaled_at(image, &xs[x], &ys[y], n, u)
+                           : undo(ref, image, t, x, y, u)) {
                 k->placed++;
             } else if (t->kind == TONE_SHIFT) {
                 /* What a shift brings in from outside the image is black,
@@ -348,9 +491,13 @@ void tone_measure(const tone_image *ref, const tone_image *image,
             if (t->capped && (k->unexplained > t->max_unexplained ||
                               k->differing > t->max_differing)) {
                 k->stopped = 1;
+                free(xs);
+                free(ys);
                 return;
             }
         }
+    free(xs);
+    free(ys);
 }
 
 /* A step stands out when it is more than the levels and more than twice

@@ -80,4 +80,13 @@ rayo_status rayo_course_render_student(rayo_course_exercise exercise,
                                        const rayo_course_options *options,
                                        rayo_image *image, rayo_error *err);
 
+/* The same rows first..end-1 only, for a caller that may stop early (the
+   tone comparison ruling a mistake out): with first 0 the image is
+   created (then freed by the caller with rayo_image_free whatever
+   follows), and later calls fill the rows after. */
+rayo_status rayo_course_render_student_rows(rayo_course_exercise exercise,
+                                            const rayo_course_options *options,
+                                            rayo_image *image, uint32_t first,
+                                            uint32_t end, rayo_error *err);
+
 #endif

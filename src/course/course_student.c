@@ -13,6 +13,8 @@
  * (x = i - w/2, y = j - h/2 from the top, direction (x, -y, f)): the top
  * row's direction has y component +240.
  */
+#include <string.h>
+
 #include "course_student.h"
 
 static course_fvec fvec_of(const double v[3])
@@ -86,9 +88,70 @@ int rayo_course_student_shadowed(const course_student *s, course_fvec p,
     return 0;
 }
 
+/*
+ * Marks in maybe[] the pixels of the row at height vy whose ray may meet
+ * some sphere; elsewhere every sphere's delta is negative, so the
+ * student's program finds no sphere and prints black, whatever its
+ * mistake.  A ray (vx, vy, vz) from the eye meets a sphere of centre C
+ * and radius r when (d.C)^2 >= |d|^2 (|C|^2 - r^2): along the row a
+ * quadratic in vx, solved in double for a sphere 5% larger plus 0.01
+ * (a margin hundreds of times the float model's rounding of delta), and
+ * widened by a pixel on each side.  A sphere around the eye, or one
+ * whose cone of rays is not bounded along the row, marks the whole row.
+ */
+static void row_may_hit(const course_student *s, double vy, double vz,
+                        int half_w, unsigned char *maybe)
+{
+    size_t b;
+    int w = (int)RAYO_COURSE_WIDTH;
+    memset(maybe, 0, RAYO_COURSE_WIDTH);
+    for (b = 0; b < s->ball_count; b++) {
+        const course_fball *ball = &s->balls[b];
+        double cx = ball->center.x, cy = ball->center.y, cz = ball->center.z;
+        double r = 1.05 * (double)ball->radius + 0.01;
+        double k = cx * cx + cy * cy + cz * cz - r * r;
+        double bb = vy * cy + vz * cz, e = vy * vy + vz * vz;
+        double qa = cx * cx - k, qb = 2 * cx * bb, qc = bb * bb - e * k;
+        double disc = qb * qb - 4 * qa * qc, x0, x1, root;
+        int i0, i1, i;
+        if (k <= 0 || qa >= 0) {
+            memset(maybe, 1, RAYO_COURSE_WIDTH);
+            return;
+        }
+        if (disc < 0)
+            continue;
+        root = sqrt(disc);
+        /* qa < 0: between the roots */
+        x0 = (-qb + root) / (2 * qa);
+        x1 = (-qb - root) / (2 * qa);
+        if (x0 > x1) {
+            double swap = x0;
+            x0 = x1;
+            x1 = swap;
+        }
+        x0 = floor(x0) + half_w - 1;
+        x1 = ceil(x1) + half_w + 1;
+        if (x1 < 0 || x0 >= w)
+            continue;
+        i0 = x0 < 0 ? 0 : (int)x0;
+        i1 = x1 >= w ? w - 1 : (int)x1;
+        for (i = i0; i <= i1; i++)
+            maybe[i] = 1;
+    }
+}
+
 rayo_status rayo_course_render_student(rayo_course_exercise exercise,
                                        const rayo_course_options *options,
                                        rayo_image *image, rayo_error *err)
+{
+    return rayo_course_render_student_rows(exercise, options, image, 0,
+                                           RAYO_COURSE_HEIGHT, err);
+}
+
+rayo_status rayo_course_render_student_rows(rayo_course_exercise exercise,
+                                            const rayo_course_options *options,
+                                            rayo_image *image, uint32_t first,
+                                            uint32_t end, rayo_error *err)
 {
     const rayo_course_data *data = rayo_course_data_of(exercise);
     course_student student;
@@ -114,15 +177,26 @@ rayo_status rayo_course_render_student(rayo_course_exercise exercise,
     student_init(&student, data, options->mistake);
     info = gray ? rayo_image_info_gray8(RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT)
                 : rayo_image_info_rgb8(RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT);
-    status = rayo_image_create(image, &info, err);
-    if (status != RAYO_OK)
-        return status;
-    for (j = 0; j < RAYO_COURSE_HEIGHT; j++) {
+    if (first == 0) {
+        status = rayo_image_create(image, &info, err);
+        if (status != RAYO_OK)
+            return status;
+    }
+    if (end > RAYO_COURSE_HEIGHT)
+        end = RAYO_COURSE_HEIGHT;
+    for (j = first; j < end; j++) {
         unsigned char *row = rayo_image_row(image, j);
+        unsigned char maybe[RAYO_COURSE_WIDTH];
         float vy = (float)(top - (int)j);
+        row_may_hit(&student, vy, vz, half_w, maybe);
         for (i = 0; i < RAYO_COURSE_WIDTH; i++) {
             float vx = (float)((int)i - half_w);
-            course_fvec d = course_fnormalize(course_fvec_make(vx, vy, vz));
+            course_fvec d;
+            if (!maybe[i]) {
+                memset(row + (gray ? i : 3 * (size_t)i), 0, gray ? 1 : 3);
+                continue;
+            }
+            d = course_fnormalize(course_fvec_make(vx, vy, vz));
             if (gray)
                 row[i] = rayo_course_student_gray(&student, d);
             else
