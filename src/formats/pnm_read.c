@@ -392,8 +392,6 @@ static rayo_status read_plain_sample(pnm_reader *r, unsigned *value,
         else if (!is_space(c))
             break;
     }
-    snprintf(expected, sizeof expected, "a sample from 0 to %u",
-             r->maxval);
     if (c == '-' && r->clamp && r->digit != '1') {
         int d = rayo_source_peek(r->src);
         if (d >= '0' && d <= '9') {
@@ -401,8 +399,13 @@ static rayo_status read_plain_sample(pnm_reader *r, unsigned *value,
             c = rayo_source_getc(r->src);
         }
     }
-    if (c < '0' || c > '9')
+    if (c < '0' || c > '9') {
+        /* Only here: a message formatted per sample was a fifth of
+           reading a plain PPM. */
+        snprintf(expected, sizeof expected, "a sample from 0 to %u",
+                 r->maxval);
         return found_error(r, RAYO_ERR_FORMAT, c, expected, err);
+    }
     while (c >= '0' && c <= '9') {
         if (v <= 65536)
             v = v * 10 + (uint64_t)(c - '0');
