@@ -186,8 +186,9 @@ static rayo_status mistake_render(int course, int m, const tone_image *image,
     memset(t, 0, sizeof *t);
     *out = 0;
     memset(&render, 0, sizeof render);
+    /* The first band creates the image (course_impl.h). */
     s = rayo_course_render_student_rows((rayo_course_exercise)course, &o,
-                                        &render, 0, 0, err);
+                                        &render, 0, RENDER_BAND, err);
     if (s == RAYO_OK && (render.info.width != image->width ||
                          render.info.height != image->height))
         s = rayo_error_set(err, RAYO_ERR_INVALID,
@@ -208,8 +209,9 @@ static rayo_status mistake_render(int course, int m, const tone_image *image,
     }
     for (; s == RAYO_OK && y < t->height && !*out; y = end) {
         end = y + RENDER_BAND < t->height ? y + RENDER_BAND : t->height;
-        s = rayo_course_render_student_rows((rayo_course_exercise)course,
-                                            &o, &render, y, end, err);
+        if (y > 0)
+            s = rayo_course_render_student_rows(
+                (rayo_course_exercise)course, &o, &render, y, end, err);
         if (s != RAYO_OK)
             break;
         tone_image_convert_rows(&render, t, y, end);
