@@ -352,17 +352,25 @@ static void print_column(const char *s, size_t width)
         putchar(' ');
 }
 
-/* The report's first line: how the submission was isolated ("sandbox:
-   bubblewrap (...)", or a warning that it was not); nothing for
-   --sandbox=off. */
-static void print_isolation(const char *isolation)
+/* The report's first line, in line: how the submission was isolated
+   ("sandbox: bubblewrap (...)", or a warning that it was not); NULL for
+   --sandbox=off.  Also the second line of Gradescope's output. */
+static const char *isolation_line(const char *isolation, char *line,
+                                  size_t room)
 {
     if (strcmp(isolation, "off") == 0 || isolation[0] == '\0')
-        return;
-    if (strncmp(isolation, "sandbox: ", 9) == 0)
-        printf("%s\n", isolation);
-    else
-        printf("warning: %s\n", isolation);
+        return NULL;
+    snprintf(line, room, "%s%s",
+             strncmp(isolation, "sandbox: ", 9) == 0 ? "" : "warning: ",
+             isolation);
+    return line;
+}
+
+static void print_isolation(const char *isolation)
+{
+    char line[300];
+    if (isolation_line(isolation, line, sizeof line) != NULL)
+        printf("%s\n", line);
 }
 
 static void print_text(const rayo_grade_report *r)
@@ -482,6 +490,19 @@ static int write_whole(const char *path, const char *text, size_t size)
     return CLI_EXIT_OK;
 }
 
+/* A memory stream for what will go to path, or NULL (said) without
+   memory. */
+static FILE *start_export(char **text, size_t *size, const char *path)
+{
+    FILE *stream;
+    *text = NULL;
+    *size = 0;
+    stream = open_memstream(text, size);
+    if (stream == NULL)
+        cli_sayf("%s: out of memory", path);
+    return stream;
+}
+
 /* A memory stream's text, written to path; an exit status. */
 static int finish_export(FILE *stream, char **text, size_t *size,
                          const char *path)
@@ -504,33 +525,26 @@ static int export_one(const grade_request *req, const char *student,
 {
     const char *message = report == NULL ? err->message : NULL;
     int status = CLI_EXIT_OK;
-    char *text = NULL;
-    size_t size = 0;
+    char *text;
+    size_t size;
     FILE *stream;
     if (req->csv != NULL) {
-        stream = open_memstream(&text, &size);
-        if (stream == NULL)
-            return cli_report(err);
+        if ((stream = start_export(&text, &size, req->csv)) == NULL)
+            return CLI_EXIT_FAILURE;
         cli_grade_csv_header(stream);
         cli_grade_csv_row(stream, student, report, message, &req->points);
         status = finish_export(stream, &text, &size, req->csv);
     }
     if (req->gradescope != NULL && status == CLI_EXIT_OK) {
-        text = NULL;
-        size = 0;
-        stream = open_memstream(&text, &size);
-        if (stream == NULL)
+        char line[300];
+        if ((stream = start_export(&text, &size, req->gradescope)) == NULL)
             return CLI_EXIT_FAILURE;
-        char note[300] = "";
-        if (report != NULL && report->isolation[0] != '\0' &&
-            strcmp(report->isolation, "off") != 0)
-            snprintf(note, sizeof note, "%s%s",
-                     strncmp(report->isolation, "sandbox: ", 9) == 0
-                         ? ""
-                         : "warning: ",
-                     report->isolation);
         cli_grade_gradescope(stream, report, message,
-                             note[0] != '\0' ? note : NULL, &req->points);
+                             report != NULL
+                                 ? isolation_line(report->isolation, line,
+                                                  sizeof line)
+                                 : NULL,
+                             &req->points);
         status = finish_export(stream, &text, &size, req->gradescope);
     }
     return status;
@@ -698,10 +712,9 @@ static int grade_each(const char *dir, grade_request *req)
     p.width = student_width(folders, count);
     p.quiet = is_stdout(req->csv);
     if (req->csv != NULL) {
-        p.csv = open_memstream(&csv_text, &csv_size);
+        p.csv = start_export(&csv_text, &csv_size, req->csv);
         if (p.csv == NULL) {
             rayo_grade_paths_free(folders, count);
-            cli_sayf("%s: out of memory", req->csv);
             return CLI_EXIT_FAILURE;
         }
         cli_grade_csv_header(p.csv);
