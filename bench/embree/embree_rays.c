@@ -1,0 +1,792 @@
+/*
+ * embree_rays.c - the benchmark's yardstick: the rays rayo casts for a
+ * scene file, cast through Embree 3 instead (issue 17).
+ *
+ * `make bench` compares rayo with the state of the art in CPU ray
+ * intersection on the same work.  This program reads the scene file that
+ * bench/field_scene.py writes (only that subset: the camera's size, fov,
+ * origin, look-at and up, point lights, planes and spheres; materials and
+ * settings are read past), puts the spheres into one Embree
+ * RTC_GEOMETRY_TYPE_SPHERE_POINT geometry and each plane into a large
+ * quad (PLANE_HALF_SIZE from the camera's foot on the plane), and casts
+ * through it exactly the primary rays of rayo's camera (include/rayo/
+ * camera.h: x = i - w/2, y = j - h/2, direction x right - y up + f
+ * forward normalised, computed in doubles as rayo does, then rounded to
+ * floats, Embree's precision).  Modes:
+ *   occlusion  every primary ray as an occlusion query: the work of
+ *              `rayo render --shade hit`;
+ *   shadow     every primary ray as a nearest-hit query, and from each
+ *              hit whose normal (turned to face the ray) faces the first
+ *              point light, one shadow ray towards it: the rays of a
+ *              phong render with shadows, shading nothing (rayo also
+ *              follows mirror reflections; this does not).
+ * Rays go one at a time (rtcIntersect1/rtcOccluded1) or in 16-ray
+ * packets of 4x4 pixels (--packet 16), always on the calling thread;
+ * --threads sets Embree's device threads, which build the hierarchy.
+ *
+ *   embree-rays SCENE [--mode occlusion|shadow] [--packet 1|16]
+ *               [--threads N] [--repeat N] [--pbm FILE]
+ *
+ * It prints "key value" lines: read_s, build_s, setup_s (wall seconds),
+ * rays (cast in one pass), rays_s (processor seconds of the best pass),
+ * ns_per_ray, and the checksums hits (primary rays that hit: the black
+ * pixels of rayo's --shade hit PBM) and lit (shadow rays that reached the
+ * light).  --pbm writes the hits as a raw PBM, for tests.  Errors: one
+ * line on stderr (with the line number for the scene), exit 2 (bad input)
+ * or 1 (I/O, Embree).  This is a benchmark tool: rayo never links Embree.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <embree3/rtcore.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define PLANE_HALF_SIZE 1e5
+#define MAX_PLANES 64
+
+typedef struct vec3 {
+    double x, y, z;
+} vec3;
+
+typedef struct scene {
+    unsigned width, height;
+    double fov;
+    vec3 origin, look_at, up;
+    int aimed;
+    int has_light;
+    vec3 light;
+    size_t sphere_count, sphere_cap;
+    float *spheres; /* x, y, z, r */
+    size_t plane_count;
+    vec3 plane_point[MAX_PLANES], plane_normal[MAX_PLANES];
+} scene;
+
+/* The camera of camera.h: focal distance and orthonormal basis. */
+typedef struct camera {
+    vec3 origin, right, up, forward;
+    double focal;
+} camera;
+
+static vec3 v3(double x, double y, double z)
+{
+    vec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+static vec3 add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static vec3 sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static vec3 scale(vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static double dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static vec3 cross(vec3 a, vec3 b)
+{
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z,
+              a.x * b.y - a.y * b.x);
+}
+static vec3 normalize(vec3 a) { return scale(a, 1.0 / sqrt(dot(a, a))); }
+
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* ---- the scene file's subset ---- */
+
+typedef struct reader {
+    const char *path;
+    char *p;      /* the current position in the line */
+    unsigned line;
+} reader;
+
+static void die_input(const reader *r, const char *what)
+{
+    fprintf(stderr, "embree-rays: %s:%u: %s\n", r->path, r->line, what);
+    exit(2);
+}
+
+/* The next word of the line (NUL-terminated in place), or NULL. */
+static char *word(reader *r)
+{
+    char *start;
+    while (*r->p == ' ' || *r->p == '\t' || *r->p == '\r')
+        r->p++;
+    if (*r->p == '\0' || *r->p == '#')
+        return NULL;
+    start = r->p;
+    while (*r->p != '\0' && *r->p != ' ' && *r->p != '\t' && *r->p != '\r')
+        r->p++;
+    if (*r->p != '\0')
+        *r->p++ = '\0';
+    return start;
+}
+
+static double number(reader *r, const char *what)
+{
+    char *w = word(r), *end;
+    double value;
+    char message[128];
+    if (w == NULL) {
+        snprintf(message, sizeof message, "expected %s, found the end of "
+                                          "the line", what);
+        die_input(r, message);
+    }
+    errno = 0;
+    value = strtod(w, &end);
+    if (*end != '\0' || errno != 0 || !isfinite(value)) {
+        snprintf(message, sizeof message, "expected %s, found '%.40s'", what,
+                 w);
+        die_input(r, message);
+    }
+    return value;
+}
+
+static vec3 vector(reader *r, const char *what)
+{
+    vec3 v;
+    v.x = number(r, what);
+    v.y = number(r, what);
+    v.z = number(r, what);
+    return v;
+}
+
+/* Skips "material NAME" (or nothing); anything else is an error. */
+static void trailing_material(reader *r)
+{
+    char *w = word(r);
+    if (w == NULL)
+        return;
+    if (strcmp(w, "material") != 0 || word(r) == NULL || word(r) != NULL)
+        die_input(r, "expected 'material NAME' or the end of the line");
+}
+
+static void camera_line(reader *r, scene *s)
+{
+    char *w;
+    while ((w = word(r)) != NULL) {
+        if (strcmp(w, "size") == 0) {
+            double width = number(r, "a width"), height = number(r, "a height");
+            if (!(width >= 1 && width <= 65536 && height >= 1 &&
+                  height <= 65536) || width != floor(width) ||
+                height != floor(height))
+                die_input(r, "expected a size of 1 to 65536 pixels each way");
+            s->width = (unsigned)width;
+            s->height = (unsigned)height;
+        } else if (strcmp(w, "fov") == 0) {
+            s->fov = number(r, "a field of view in degrees");
+            if (!(s->fov > 0 && s->fov < 180))
+                die_input(r, "expected a field of view between 0 and 180");
+        } else if (strcmp(w, "origin") == 0) {
+            s->origin = vector(r, "the origin's coordinates");
+        } else if (strcmp(w, "look-at") == 0) {
+            s->look_at = vector(r, "the look-at point's coordinates");
+            s->aimed = 1;
+        } else if (strcmp(w, "up") == 0) {
+            s->up = vector(r, "the up vector's coordinates");
+        } else {
+            die_input(r, "unknown camera setting; expected size, fov, "
+                         "origin, look-at or up");
+        }
+    }
+}
+
+static void sphere_line(reader *r, scene *s)
+{
+    vec3 c = vector(r, "the centre's coordinates");
+    double radius = number(r, "a radius");
+    float *slot;
+    if (!(radius > 0))
+        die_input(r, "expected a radius greater than 0");
+    trailing_material(r);
+    if (s->sphere_count == s->sphere_cap) {
+        size_t cap = s->sphere_cap ? 2 * s->sphere_cap : 1024;
+        float *grown = realloc(s->spheres, cap * 4 * sizeof *grown);
+        if (grown == NULL) {
+            fprintf(stderr, "embree-rays: out of memory\n");
+            exit(1);
+        }
+        s->spheres = grown;
+        s->sphere_cap = cap;
+    }
+    slot = s->spheres + 4 * s->sphere_count++;
+    slot[0] = (float)c.x;
+    slot[1] = (float)c.y;
+    slot[2] = (float)c.z;
+    slot[3] = (float)radius;
+}
+
+static void plane_line(reader *r, scene *s)
+{
+    vec3 p = vector(r, "the plane's point"), n = vector(r, "its normal");
+    if (dot(n, n) == 0)
+        die_input(r, "expected a non-zero normal");
+    if (s->plane_count == MAX_PLANES)
+        die_input(r, "too many planes for this program (64)");
+    trailing_material(r);
+    s->plane_point[s->plane_count] = p;
+    s->plane_normal[s->plane_count++] = normalize(n);
+}
+
+static void light_line(reader *r, scene *s)
+{
+    char *w = word(r);
+    if (w == NULL || strcmp(w, "point") != 0)
+        die_input(r, "expected 'light point X Y Z' (this program reads only "
+                     "point lights)");
+    if (!s->has_light) {
+        s->light = vector(r, "the light's position");
+        s->has_light = 1;
+    }
+}
+
+static char *read_whole(const char *path, size_t *size)
+{
+    FILE *in = fopen(path, "rb");
+    char *text = NULL;
+    size_t cap = 0, n = 0;
+    if (in == NULL) {
+        fprintf(stderr, "embree-rays: %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
+    for (;;) {
+        size_t got;
+        if (cap - n < 65536) {
+            char *grown = realloc(text, cap = 2 * cap + 65536 + 1);
+            if (grown == NULL) {
+                fprintf(stderr, "embree-rays: out of memory\n");
+                exit(1);
+            }
+            text = grown;
+        }
+        got = fread(text + n, 1, cap - n - 1, in);
+        n += got;
+        if (got == 0)
+            break;
+    }
+    if (ferror(in)) {
+        fprintf(stderr, "embree-rays: %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
+    fclose(in);
+    text[n] = '\0';
+    *size = n;
+    return text;
+}
+
+static void read_scene(const char *path, scene *s)
+{
+    size_t size;
+    char *text = read_whole(path, &size), *line = text;
+    reader r;
+    r.path = path;
+    r.line = 0;
+    memset(s, 0, sizeof *s);
+    s->width = 640;
+    s->height = 480;
+    s->fov = 90;
+    s->look_at = v3(0, 0, 1);
+    s->up = v3(0, 1, 0);
+    while (line < text + size) {
+        char *end = memchr(line, '\n', (size_t)(text + size - line)), *w;
+        if (end == NULL)
+            end = text + size;
+        *end = '\0';
+        r.line++;
+        r.p = line;
+        line = end + 1;
+        if ((w = word(&r)) == NULL)
+            continue;
+        if (strcmp(w, "sphere") == 0)
+            sphere_line(&r, s);
+        else if (strcmp(w, "camera") == 0)
+            camera_line(&r, s);
+        else if (strcmp(w, "plane") == 0)
+            plane_line(&r, s);
+        else if (strcmp(w, "light") == 0)
+            light_line(&r, s);
+        else if (strcmp(w, "shade") != 0 && strcmp(w, "background") != 0 &&
+                 strcmp(w, "ambient") != 0 && strcmp(w, "material") != 0 &&
+                 strcmp(w, "samples") != 0 && strcmp(w, "depth") != 0)
+            die_input(&r, "unknown keyword; expected camera, light, sphere, "
+                          "plane (or shade, background, ambient, material, "
+                          "samples, depth, which are read past)");
+    }
+    free(text);
+}
+
+static camera make_camera(const scene *s)
+{
+    camera c;
+    c.origin = s->origin;
+    c.focal = (double)s->width / (2.0 * tan(s->fov * 3.14159265358979323846 /
+                                              360.0));
+    c.right = v3(1, 0, 0);
+    c.up = v3(0, 1, 0);
+    c.forward = v3(0, 0, 1);
+    if (s->aimed) {
+        vec3 f = sub(s->look_at, s->origin), right;
+        if (dot(f, f) == 0) {
+            fprintf(stderr, "embree-rays: the look-at point equals the "
+                            "camera origin\n");
+            exit(2);
+        }
+        f = normalize(f);
+        right = cross(s->up, f);
+        if (!(sqrt(dot(right, right)) > 1e-12 * sqrt(dot(s->up, s->up)))) {
+            fprintf(stderr, "embree-rays: the up vector is parallel to the "
+                            "view direction\n");
+            exit(2);
+        }
+        c.forward = f;
+        c.right = normalize(right);
+        c.up = cross(f, c.right);
+    }
+    return c;
+}
+
+/* rayo_camera_ray: the direction through pixel (i, j). */
+static vec3 pixel_direction(const camera *c, const scene *s, unsigned i,
+                            unsigned j)
+{
+    double x = (double)i - (double)(s->width / 2);
+    double y = (double)j - (double)(s->height / 2);
+    return normalize(add(add(scale(c->right, x), scale(c->up, -y)),
+                         scale(c->forward, c->focal)));
+}
+
+/* ---- Embree ---- */
+
+static void embree_error(void *user, enum RTCError code, const char *text)
+{
+    (void)user;
+    fprintf(stderr, "embree-rays: Embree error %d: %s\n", (int)code,
+            text ? text : "");
+    exit(1);
+}
+
+static RTCScene build(RTCDevice device, const scene *s, const camera *cam)
+{
+    RTCScene es = rtcNewScene(device);
+    size_t k;
+    if (s->sphere_count > 0) {
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+        float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                           RTC_FORMAT_FLOAT4,
+                                           4 * sizeof(float), s->sphere_count);
+        memcpy(v, s->spheres, s->sphere_count * 4 * sizeof(float));
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(es, g);
+        rtcReleaseGeometry(g);
+    }
+    for (k = 0; k < s->plane_count; k++) {
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
+        vec3 n = s->plane_normal[k];
+        /* The camera's foot on the plane, and the camera's right (else
+         * any direction) in the plane. */
+        vec3 foot = sub(cam->origin,
+                        scale(n, dot(sub(cam->origin, s->plane_point[k]), n)));
+        vec3 u = sub(cam->right, scale(n, dot(cam->right, n)));
+        vec3 w, corner[4];
+        float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                           RTC_FORMAT_FLOAT3,
+                                           3 * sizeof(float), 4);
+        unsigned *q = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
+                                              RTC_FORMAT_UINT4,
+                                              4 * sizeof(unsigned), 1);
+        int c;
+        if (!(dot(u, u) > 1e-12))
+            u = cross(n, fabs(n.x) < 0.9 ? v3(1, 0, 0) : v3(0, 1, 0));
+        u = normalize(u);
+        w = cross(n, u);
+        u = scale(u, PLANE_HALF_SIZE);
+        w = scale(w, PLANE_HALF_SIZE);
+        /* Embree splits a quad v0 v1 v2 v3 along v1-v3, where float
+         * rounding of so large triangles lets rays through: that seam is
+         * laid along the camera's right through its foot, out of view. */
+        corner[0] = sub(foot, w);
+        corner[1] = add(foot, u);
+        corner[2] = add(foot, w);
+        corner[3] = sub(foot, u);
+        for (c = 0; c < 4; c++) {
+            v[3 * c] = (float)corner[c].x;
+            v[3 * c + 1] = (float)corner[c].y;
+            v[3 * c + 2] = (float)corner[c].z;
+            q[c] = (unsigned)c;
+        }
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(es, g);
+        rtcReleaseGeometry(g);
+    }
+    rtcCommitScene(es);
+    return es;
+}
+
+typedef struct pass {
+    unsigned long long rays, hits, lit;
+} pass;
+
+typedef struct job {
+    const scene *s;
+    camera cam;
+    RTCScene es;
+    int shadow, packet;
+    unsigned char *mask; /* w x h, 1 where the primary ray hit; or NULL */
+} job;
+
+/* The shadow ray's start past the hit point, against self-hits: rayo
+ * skips the object hit itself; with floats, an offset relative to the
+ * point's size does that. */
+static float shadow_offset(float x, float y, float z)
+{
+    float m = fabsf(x);
+    if (fabsf(y) > m)
+        m = fabsf(y);
+    if (fabsf(z) > m)
+        m = fabsf(z);
+    return 1e-4f * (1.0f + m);
+}
+
+/* Where a hit (primary direction d, geometric normal ng, point p) sends a
+ * shadow ray: 1 and the ray's direction and length, or 0 when the lit
+ * side faces away (rayo's Li.N <= 0 test). */
+static int shadow_ray(const job *jb, const float p[3], const float d[3],
+                      const float ng[3], float dir[3], float *length)
+{
+    float n[3], l[3], len, facing;
+    int c;
+    facing = ng[0] * d[0] + ng[1] * d[1] + ng[2] * d[2];
+    for (c = 0; c < 3; c++)
+        n[c] = facing > 0 ? -ng[c] : ng[c];
+    l[0] = (float)jb->s->light.x - p[0];
+    l[1] = (float)jb->s->light.y - p[1];
+    l[2] = (float)jb->s->light.z - p[2];
+    len = sqrtf(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    if (!(len > 0))
+        return 0;
+    for (c = 0; c < 3; c++)
+        dir[c] = l[c] / len;
+    if (!(dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2] > 0))
+        return 0;
+    *length = len;
+    return 1;
+}
+
+static void trace_single(const job *jb, pass *out)
+{
+    const scene *s = jb->s;
+    struct RTCIntersectContext context;
+    unsigned i, j;
+    rtcInitIntersectContext(&context);
+    for (j = 0; j < s->height; j++)
+        for (i = 0; i < s->width; i++) {
+            vec3 d = pixel_direction(&jb->cam, s, i, j);
+            struct RTCRayHit rh;
+            int hit;
+            rh.ray.org_x = (float)jb->cam.origin.x;
+            rh.ray.org_y = (float)jb->cam.origin.y;
+            rh.ray.org_z = (float)jb->cam.origin.z;
+            rh.ray.dir_x = (float)d.x;
+            rh.ray.dir_y = (float)d.y;
+            rh.ray.dir_z = (float)d.z;
+            rh.ray.tnear = 0.0f;
+            rh.ray.tfar = INFINITY;
+            rh.ray.time = 0.0f;
+            rh.ray.mask = 0xFFFFFFFFu;
+            rh.ray.id = 0;
+            rh.ray.flags = 0;
+            out->rays++;
+            if (!jb->shadow) {
+                rtcOccluded1(jb->es, &context, &rh.ray);
+                hit = rh.ray.tfar < 0;
+            } else {
+                rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+                rtcIntersect1(jb->es, &context, &rh);
+                hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+            }
+            if (jb->mask != NULL)
+                jb->mask[(size_t)j * s->width + i] = (unsigned char)hit;
+            if (!hit)
+                continue;
+            out->hits++;
+            if (jb->shadow && jb->s->has_light) {
+                float p[3], dir[3], ng[3], len;
+                float dd[3];
+                dd[0] = rh.ray.dir_x;
+                dd[1] = rh.ray.dir_y;
+                dd[2] = rh.ray.dir_z;
+                p[0] = rh.ray.org_x + rh.ray.tfar * dd[0];
+                p[1] = rh.ray.org_y + rh.ray.tfar * dd[1];
+                p[2] = rh.ray.org_z + rh.ray.tfar * dd[2];
+                ng[0] = rh.hit.Ng_x;
+                ng[1] = rh.hit.Ng_y;
+                ng[2] = rh.hit.Ng_z;
+                if (shadow_ray(jb, p, dd, ng, dir, &len)) {
+                    struct RTCRay sr;
+                    sr.org_x = p[0];
+                    sr.org_y = p[1];
+                    sr.org_z = p[2];
+                    sr.dir_x = dir[0];
+                    sr.dir_y = dir[1];
+                    sr.dir_z = dir[2];
+                    sr.tnear = shadow_offset(p[0], p[1], p[2]);
+                    sr.tfar = len;
+                    sr.time = 0.0f;
+                    sr.mask = 0xFFFFFFFFu;
+                    sr.id = 0;
+                    sr.flags = 0;
+                    out->rays++;
+                    rtcOccluded1(jb->es, &context, &sr);
+                    if (sr.tfar >= 0)
+                        out->lit++;
+                }
+            }
+        }
+}
+
+/* 4x4 tiles of pixels, one 16-ray packet each (lanes off past the edge). */
+static void trace_packets(const job *jb, pass *out)
+{
+    const scene *s = jb->s;
+    struct RTCIntersectContext coherent, incoherent;
+    unsigned ti, tj;
+    rtcInitIntersectContext(&coherent);
+    coherent.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcInitIntersectContext(&incoherent);
+    for (tj = 0; tj < s->height; tj += 4)
+        for (ti = 0; ti < s->width; ti += 4) {
+            struct RTCRayHit16 rh;
+            struct RTCRay16 sr;
+            /* The valid masks must be aligned like the packets. */
+            _Alignas(64) int valid[16];
+            _Alignas(64) int svalid[16];
+            int k, any_shadow = 0;
+            for (k = 0; k < 16; k++) {
+                unsigned i = ti + (unsigned)(k & 3), j = tj + (unsigned)(k >> 2);
+                vec3 d;
+                valid[k] = i < s->width && j < s->height ? -1 : 0;
+                d = valid[k] ? pixel_direction(&jb->cam, s, i, j) : v3(0, 0, 1);
+                rh.ray.org_x[k] = (float)jb->cam.origin.x;
+                rh.ray.org_y[k] = (float)jb->cam.origin.y;
+                rh.ray.org_z[k] = (float)jb->cam.origin.z;
+                rh.ray.dir_x[k] = (float)d.x;
+                rh.ray.dir_y[k] = (float)d.y;
+                rh.ray.dir_z[k] = (float)d.z;
+                rh.ray.tnear[k] = 0.0f;
+                rh.ray.tfar[k] = INFINITY;
+                rh.ray.time[k] = 0.0f;
+                rh.ray.mask[k] = 0xFFFFFFFFu;
+                rh.ray.id[k] = (unsigned)k;
+                rh.ray.flags[k] = 0;
+                rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+                if (valid[k])
+                    out->rays++;
+            }
+            if (!jb->shadow)
+                rtcOccluded16(valid, jb->es, &coherent, &rh.ray);
+            else
+                rtcIntersect16(valid, jb->es, &coherent, &rh);
+            for (k = 0; k < 16; k++) {
+                int hit;
+                svalid[k] = 0;
+                if (!valid[k])
+                    continue;
+                hit = jb->shadow ? rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID
+                                 : rh.ray.tfar[k] < 0;
+                if (jb->mask != NULL)
+                    jb->mask[(size_t)(tj + (unsigned)(k >> 2)) * s->width +
+                             ti + (unsigned)(k & 3)] = (unsigned char)hit;
+                if (!hit)
+                    continue;
+                out->hits++;
+                if (jb->shadow && s->has_light) {
+                    float p[3], dd[3], ng[3], dir[3], len;
+                    dd[0] = rh.ray.dir_x[k];
+                    dd[1] = rh.ray.dir_y[k];
+                    dd[2] = rh.ray.dir_z[k];
+                    p[0] = rh.ray.org_x[k] + rh.ray.tfar[k] * dd[0];
+                    p[1] = rh.ray.org_y[k] + rh.ray.tfar[k] * dd[1];
+                    p[2] = rh.ray.org_z[k] + rh.ray.tfar[k] * dd[2];
+                    ng[0] = rh.hit.Ng_x[k];
+                    ng[1] = rh.hit.Ng_y[k];
+                    ng[2] = rh.hit.Ng_z[k];
+                    if (shadow_ray(jb, p, dd, ng, dir, &len)) {
+                        svalid[k] = -1;
+                        any_shadow = 1;
+                        sr.org_x[k] = p[0];
+                        sr.org_y[k] = p[1];
+                        sr.org_z[k] = p[2];
+                        sr.dir_x[k] = dir[0];
+                        sr.dir_y[k] = dir[1];
+                        sr.dir_z[k] = dir[2];
+                        sr.tnear[k] = shadow_offset(p[0], p[1], p[2]);
+                        sr.tfar[k] = len;
+                        sr.time[k] = 0.0f;
+                        sr.mask[k] = 0xFFFFFFFFu;
+                        sr.id[k] = (unsigned)k;
+                        sr.flags[k] = 0;
+                        out->rays++;
+                    }
+                }
+            }
+            if (!any_shadow)
+                continue;
+            rtcOccluded16(svalid, jb->es, &incoherent, &sr);
+            for (k = 0; k < 16; k++)
+                if (svalid[k] && sr.tfar[k] >= 0)
+                    out->lit++;
+        }
+}
+
+static void write_pbm(const char *path, const scene *s,
+                      const unsigned char *mask)
+{
+    FILE *out = fopen(path, "wb");
+    unsigned i, j;
+    if (out == NULL) {
+        fprintf(stderr, "embree-rays: %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
+    fprintf(out, "P4\n%u %u\n", s->width, s->height);
+    for (j = 0; j < s->height; j++) {
+        unsigned char byte = 0;
+        for (i = 0; i < s->width; i++) {
+            if (mask[(size_t)j * s->width + i])
+                byte |= (unsigned char)(0x80u >> (i & 7));
+            if ((i & 7) == 7 || i + 1 == s->width) {
+                fputc(byte, out);
+                byte = 0;
+            }
+        }
+    }
+    if (fclose(out) != 0) {
+        fprintf(stderr, "embree-rays: %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
+}
+
+static void usage(void)
+{
+    fprintf(stderr, "usage: embree-rays SCENE [--mode occlusion|shadow] "
+                    "[--packet 1|16] [--threads N] [--repeat N] "
+                    "[--pbm FILE]\n");
+    exit(2);
+}
+
+int main(int argc, char **argv)
+{
+    const char *path = NULL, *pbm = NULL;
+    int threads = 0, repeat = 1, r, a;
+    char config[64];
+    scene s;
+    job jb;
+    pass best;
+    double start, read_s, build_s, best_s = -1;
+    RTCDevice device;
+    memset(&jb, 0, sizeof jb);
+    jb.packet = 1;
+    for (a = 1; a < argc; a++) {
+        if (strcmp(argv[a], "--mode") == 0 && a + 1 < argc) {
+            a++;
+            if (strcmp(argv[a], "occlusion") == 0)
+                jb.shadow = 0;
+            else if (strcmp(argv[a], "shadow") == 0)
+                jb.shadow = 1;
+            else
+                usage();
+        } else if (strcmp(argv[a], "--packet") == 0 && a + 1 < argc) {
+            jb.packet = atoi(argv[++a]);
+            if (jb.packet != 1 && jb.packet != 16)
+                usage();
+        } else if (strcmp(argv[a], "--threads") == 0 && a + 1 < argc) {
+            threads = atoi(argv[++a]);
+            if (threads < 0)
+                usage();
+        } else if (strcmp(argv[a], "--repeat") == 0 && a + 1 < argc) {
+            repeat = atoi(argv[++a]);
+            if (repeat < 1)
+                usage();
+        } else if (strcmp(argv[a], "--pbm") == 0 && a + 1 < argc) {
+            pbm = argv[++a];
+        } else if (argv[a][0] != '-' && path == NULL) {
+            path = argv[a];
+        } else {
+            usage();
+        }
+    }
+    if (path == NULL)
+        usage();
+    if (threads > 0)
+        snprintf(config, sizeof config, "threads=%d", threads);
+    else
+        config[0] = '\0';
+
+    start = wall_now();
+    read_scene(path, &s);
+    read_s = wall_now() - start;
+    device = rtcNewDevice(config);
+    if (device == NULL) {
+        fprintf(stderr, "embree-rays: rtcNewDevice failed (%d)\n",
+                (int)rtcGetDeviceError(NULL));
+        return 1;
+    }
+    rtcSetDeviceErrorFunction(device, embree_error, NULL);
+    start = wall_now();
+    jb.s = &s;
+    jb.cam = make_camera(&s);
+    jb.es = build(device, &s, &jb.cam);
+    build_s = wall_now() - start;
+    if (pbm != NULL) {
+        jb.mask = calloc((size_t)s.width * s.height, 1);
+        if (jb.mask == NULL) {
+            fprintf(stderr, "embree-rays: out of memory\n");
+            return 1;
+        }
+    }
+    memset(&best, 0, sizeof best);
+    for (r = 0; r < repeat; r++) {
+        pass p;
+        double t;
+        memset(&p, 0, sizeof p);
+        start = cpu_now();
+        if (jb.packet == 16)
+            trace_packets(&jb, &p);
+        else
+            trace_single(&jb, &p);
+        t = cpu_now() - start;
+        if (best_s < 0 || t < best_s)
+            best_s = t;
+        best = p;
+    }
+    printf("scene %s\nsize %ux%u\nspheres %lu\nplanes %lu\n", path, s.width,
+           s.height, (unsigned long)s.sphere_count,
+           (unsigned long)s.plane_count);
+    printf("mode %s\npacket %d\nthreads %d\n",
+           jb.shadow ? "shadow" : "occlusion", jb.packet, threads);
+    printf("read_s %.6f\nbuild_s %.6f\nsetup_s %.6f\n", read_s, build_s,
+           read_s + build_s);
+    printf("rays %llu\nrays_s %.6f\nns_per_ray %.3f\n", best.rays, best_s,
+           best.rays ? best_s * 1e9 / (double)best.rays : 0.0);
+    printf("hits %llu\nlit %llu\n", best.hits, best.lit);
+    if (pbm != NULL)
+        write_pbm(pbm, &s, jb.mask);
+    free(jb.mask);
+    free(s.spheres);
+    rtcReleaseScene(jb.es);
+    rtcReleaseDevice(device);
+    return 0;
+}
