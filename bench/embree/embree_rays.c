@@ -22,7 +22,9 @@
  *              follows mirror reflections; this does not).
  * Rays go one at a time (rtcIntersect1/rtcOccluded1) or in 16-ray
  * packets of 4x4 pixels (--packet 16), always on the calling thread;
- * --threads sets Embree's device threads, which build the hierarchy.
+ * --threads sets Embree's device threads, which build the hierarchy
+ * (0, the default: every CPU); --repeat N casts them N times (0: none,
+ * setup alone) and reports the best pass.
  *
  *   embree-rays SCENE [--mode occlusion|shadow] [--packet 1|16]
  *               [--threads N] [--repeat N] [--pbm FILE]
@@ -718,7 +720,7 @@ int main(int argc, char **argv)
                 usage();
         } else if (strcmp(argv[a], "--repeat") == 0 && a + 1 < argc) {
             repeat = atoi(argv[++a]);
-            if (repeat < 1)
+            if (repeat < 0)
                 usage();
         } else if (strcmp(argv[a], "--pbm") == 0 && a + 1 < argc) {
             pbm = argv[++a];
@@ -779,6 +781,8 @@ int main(int argc, char **argv)
            jb.shadow ? "shadow" : "occlusion", jb.packet, threads);
     printf("read_s %.6f\nbuild_s %.6f\nsetup_s %.6f\n", read_s, build_s,
            read_s + build_s);
+    if (best_s < 0)
+        best_s = 0;
     printf("rays %llu\nrays_s %.6f\nns_per_ray %.3f\n", best.rays, best_s,
            best.rays ? best_s * 1e9 / (double)best.rays : 0.0);
     printf("hits %llu\nlit %llu\n", best.hits, best.lit);
