@@ -15,6 +15,9 @@
  * hierarchy) is rayo's render at -W 1 -H 1 against Embree's own timer
  * around its read and build; per ray is rayo's whole process less its
  * one-thread setup, over the rays Embree counts for the same frame.
+ * Embree's rows put the ground plane in its scene as a quad; the "plane
+ * first" rows test it in the program before Embree's hierarchy, as rayo
+ * tests its unbounded planes before its own (per ray figures only).
  * The runs of all rows are interleaved, each the best of --repeat.
  * Without the Embree program (no libembree-dev when it was built) or
  * without `povray`, their rows and targets say "skipped".
@@ -46,7 +49,8 @@ typedef struct row {
 enum {
     RAYO_HIT, RAYO_PHONG, RAYO_PHONG_J2, RAYO_SETUP_1, RAYO_SETUP_ALL,
     EMBREE_OCCLUSION, EMBREE_OCCLUSION_16, EMBREE_SHADOW, EMBREE_SHADOW_16,
-    EMBREE_SETUP_ALL, POVRAY, ROW_COUNT
+    EMBREE_SETUP_ALL, EMBREE_FIRST_OCCLUSION, EMBREE_FIRST_OCCLUSION_16,
+    EMBREE_FIRST_SHADOW, EMBREE_FIRST_SHADOW_16, POVRAY, ROW_COUNT
 };
 
 #define RAYO_FIELD "\"$RAYO\" render \"$BENCH_TMP/field.scene\" --raw "
@@ -63,6 +67,10 @@ static const char *const commands[ROW_COUNT] = {
     EMBREE "--mode shadow --threads 1",
     EMBREE "--mode shadow --packet 16 --threads 1",
     EMBREE "--threads 0 --repeat 0",
+    EMBREE "--planes first --mode occlusion --threads 1",
+    EMBREE "--planes first --mode occlusion --packet 16 --threads 1",
+    EMBREE "--planes first --mode shadow --threads 1",
+    EMBREE "--planes first --mode shadow --packet 16 --threads 1",
     "povray +I\"$BENCH_TMP/field.pov\" +O\"$BENCH_TMP/field-pov.png\" "
     "+W1920 +H1080 -D +WT1 -A +FN -GA File_Gamma=1.0 2>/dev/null",
 };
@@ -217,7 +225,7 @@ void bench_peers(bench_table *table)
                                 NULL, 0, NULL) >= 0;
     for (i = 0; i < ROW_COUNT; i++) {
         rows[i].command = commands[i];
-        rows[i].captures = i >= EMBREE_OCCLUSION && i <= EMBREE_SETUP_ALL;
+        rows[i].captures = i >= EMBREE_OCCLUSION && i <= EMBREE_FIRST_SHADOW_16;
         rows[i].wall = rows[i].cpu = rows[i].rays_s = rows[i].setup_s = -1;
         rows[i].output[0] = '\0';
         rows[i].failed = (rows[i].captures && !embree) ||
@@ -278,8 +286,22 @@ void bench_peers(bench_table *table)
               "peers: Embree primary + shadow, per ray",
               embree_ns_per_ray(&rows[EMBREE_SHADOW]), "ns", embree);
     add_value(table, "peers_embree_shadow16_ns",
-              "peers: Embree primary + shadow, 16-ray packets, per ray",
+              "peers: Embree primary + shadow, packets, per ray",
               embree_ns_per_ray(&rows[EMBREE_SHADOW_16]), "ns", embree);
+    /* The same with the plane tested first, outside Embree (rayo's way). */
+    add_value(table, "peers_embree_first_occlusion_ns",
+              "peers: Embree, plane first: occlusion, per ray",
+              embree_ns_per_ray(&rows[EMBREE_FIRST_OCCLUSION]), "ns", embree);
+    add_value(table, "peers_embree_first_occlusion16_ns",
+              "peers: Embree, plane first: occlusion, packets",
+              embree_ns_per_ray(&rows[EMBREE_FIRST_OCCLUSION_16]), "ns",
+              embree);
+    add_value(table, "peers_embree_first_shadow_ns",
+              "peers: Embree, plane first: + shadow, per ray",
+              embree_ns_per_ray(&rows[EMBREE_FIRST_SHADOW]), "ns", embree);
+    add_value(table, "peers_embree_first_shadow16_ns",
+              "peers: Embree, plane first: + shadow, packets",
+              embree_ns_per_ray(&rows[EMBREE_FIRST_SHADOW_16]), "ns", embree);
     add_value(table, "peers_hit_per_ray_ratio",
               "peers: per ray, rayo hit / Embree single rays",
               ratio(bench_value(table, "peers_rayo_hit_ns"),

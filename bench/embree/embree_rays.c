@@ -22,12 +22,18 @@
  *              follows mirror reflections; this does not).
  * Rays go one at a time (rtcIntersect1/rtcOccluded1) or in 16-ray
  * packets of 4x4 pixels (--packet 16), always on the calling thread;
+ * --planes first tests the planes in the program, before Embree's
+ * hierarchy and without it (rayo keeps its unbounded planes outside its
+ * hierarchy and tests them first: a primary ray's occlusion query that
+ * meets the ground is then one plane test); the default puts each plane
+ * in Embree's scene with the spheres, the way Embree is meant to be used.
  * --threads sets Embree's device threads, which build the hierarchy
  * (0, the default: every CPU); --repeat N casts them N times (0: none,
  * setup alone) and reports the best pass.
  *
  *   embree-rays SCENE [--mode occlusion|shadow] [--packet 1|16]
- *               [--threads N] [--repeat N] [--pbm FILE]
+ *               [--threads N] [--repeat N] [--planes bvh|first]
+ *               [--pbm FILE]
  *
  * It prints "key value" lines: read_s, build_s, setup_s (wall seconds),
  * rays (cast in one pass), rays_s (processor seconds of the best pass),
@@ -379,7 +385,8 @@ static void embree_error(void *user, enum RTCError code, const char *text)
     exit(1);
 }
 
-static RTCScene build(RTCDevice device, const scene *s, const camera *cam)
+static RTCScene build(RTCDevice device, const scene *s, const camera *cam,
+                      int planes_first)
 {
     RTCScene es = rtcNewScene(device);
     size_t k;
@@ -393,7 +400,7 @@ static RTCScene build(RTCDevice device, const scene *s, const camera *cam)
         rtcAttachGeometry(es, g);
         rtcReleaseGeometry(g);
     }
-    for (k = 0; k < s->plane_count; k++) {
+    for (k = 0; planes_first == 0 && k < s->plane_count; k++) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
         vec3 n = s->plane_normal[k];
         /* The camera's foot on the plane, and the camera's right (else
@@ -444,7 +451,8 @@ typedef struct job {
     const scene *s;
     camera cam;
     RTCScene es;
-    int shadow, packet;
+    int shadow, packet, planes_first;
+    float plane_n[MAX_PLANES][3], plane_d[MAX_PLANES]; /* n.x = d */
     unsigned char *mask; /* w x h, 1 where the primary ray hit; or NULL */
 } job;
 
@@ -459,6 +467,29 @@ static float shadow_offset(float x, float y, float z)
     if (fabsf(z) > m)
         m = fabsf(z);
     return 1e-4f * (1.0f + m);
+}
+
+/* --planes first: the nearest plane along the ray within (tnear, tfar),
+ * tested before Embree's hierarchy, as rayo tests its unbounded planes
+ * before its own: 1 with *t and *k, or 0. */
+static int nearest_plane(const job *jb, const float o[3], const float d[3],
+                         float tnear, float tfar, float *t, size_t *k)
+{
+    size_t i;
+    int found = 0;
+    for (i = 0; i < jb->s->plane_count; i++) {
+        const float *n = jb->plane_n[i];
+        float den = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
+        float ti = (jb->plane_d[i] - (n[0] * o[0] + n[1] * o[1] +
+                                      n[2] * o[2])) / den;
+        if (den != 0 && ti > tnear && ti < tfar) {
+            tfar = ti;
+            *t = ti;
+            *k = i;
+            found = 1;
+        }
+    }
+    return found;
 }
 
 /* Where a hit (primary direction d, geometric normal ng, point p) sends a
@@ -496,7 +527,9 @@ static void trace_single(const job *jb, pass *out)
         for (i = 0; i < s->width; i++) {
             vec3 d = pixel_direction(&jb->cam, s, i, j);
             struct RTCRayHit rh;
-            int hit;
+            int hit, plane;
+            float plane_t = 0;
+            size_t plane_k = 0;
             rh.ray.org_x = (float)jb->cam.origin.x;
             rh.ray.org_y = (float)jb->cam.origin.y;
             rh.ray.org_z = (float)jb->cam.origin.z;
@@ -510,14 +543,38 @@ static void trace_single(const job *jb, pass *out)
             rh.ray.id = 0;
             rh.ray.flags = 0;
             out->rays++;
+            plane = 0;
+            if (jb->planes_first) {
+                float o[3], dd[3];
+                o[0] = rh.ray.org_x;
+                o[1] = rh.ray.org_y;
+                o[2] = rh.ray.org_z;
+                dd[0] = rh.ray.dir_x;
+                dd[1] = rh.ray.dir_y;
+                dd[2] = rh.ray.dir_z;
+                plane = nearest_plane(jb, o, dd, 0.0f, INFINITY, &plane_t,
+                                      &plane_k);
+                if (plane)
+                    rh.ray.tfar = plane_t;
+            }
             if (!jb->shadow) {
-                rtcOccluded1(jb->es, &context, &rh.ray);
-                hit = rh.ray.tfar < 0;
+                if (plane) {
+                    hit = 1;
+                } else {
+                    rtcOccluded1(jb->es, &context, &rh.ray);
+                    hit = rh.ray.tfar < 0;
+                }
             } else {
                 rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
                 rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
                 rtcIntersect1(jb->es, &context, &rh);
                 hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+                if (!hit && plane) {
+                    hit = 1;
+                    rh.hit.Ng_x = jb->plane_n[plane_k][0];
+                    rh.hit.Ng_y = jb->plane_n[plane_k][1];
+                    rh.hit.Ng_z = jb->plane_n[plane_k][2];
+                }
             }
             if (jb->mask != NULL)
                 jb->mask[(size_t)j * s->width + i] = (unsigned char)hit;
@@ -551,6 +608,10 @@ static void trace_single(const job *jb, pass *out)
                     sr.id = 0;
                     sr.flags = 0;
                     out->rays++;
+                    if (jb->planes_first &&
+                        nearest_plane(jb, p, dir, sr.tnear, sr.tfar,
+                                      &plane_t, &plane_k))
+                        continue;
                     rtcOccluded1(jb->es, &context, &sr);
                     if (sr.tfar >= 0)
                         out->lit++;
@@ -575,7 +636,10 @@ static void trace_packets(const job *jb, pass *out)
             /* The valid masks must be aligned like the packets. */
             _Alignas(64) int valid[16];
             _Alignas(64) int svalid[16];
-            int k, any_shadow = 0;
+            _Alignas(64) int query[16];
+            int k, any_shadow = 0, any_query = 0, plane[16];
+            size_t plane_k[16];
+            float plane_t = 0;
             for (k = 0; k < 16; k++) {
                 unsigned i = ti + (unsigned)(k & 3), j = tj + (unsigned)(k >> 2);
                 vec3 d;
@@ -597,11 +661,30 @@ static void trace_packets(const job *jb, pass *out)
                 rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
                 if (valid[k])
                     out->rays++;
+                plane[k] = 0;
+                query[k] = valid[k];
+                if (valid[k] && jb->planes_first) {
+                    float o[3], dd[3];
+                    o[0] = rh.ray.org_x[k];
+                    o[1] = rh.ray.org_y[k];
+                    o[2] = rh.ray.org_z[k];
+                    dd[0] = rh.ray.dir_x[k];
+                    dd[1] = rh.ray.dir_y[k];
+                    dd[2] = rh.ray.dir_z[k];
+                    plane[k] = nearest_plane(jb, o, dd, 0.0f, INFINITY,
+                                             &plane_t, &plane_k[k]);
+                    if (plane[k]) {
+                        rh.ray.tfar[k] = plane_t;
+                        if (!jb->shadow)
+                            query[k] = 0;
+                    }
+                }
+                any_query |= query[k];
             }
-            if (!jb->shadow)
-                rtcOccluded16(valid, jb->es, &coherent, &rh.ray);
-            else
-                rtcIntersect16(valid, jb->es, &coherent, &rh);
+            if (any_query && !jb->shadow)
+                rtcOccluded16(query, jb->es, &coherent, &rh.ray);
+            else if (any_query)
+                rtcIntersect16(query, jb->es, &coherent, &rh);
             for (k = 0; k < 16; k++) {
                 int hit;
                 svalid[k] = 0;
@@ -609,6 +692,12 @@ static void trace_packets(const job *jb, pass *out)
                     continue;
                 hit = jb->shadow ? rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID
                                  : rh.ray.tfar[k] < 0;
+                if (!hit && plane[k]) {
+                    hit = 1;
+                    rh.hit.Ng_x[k] = jb->plane_n[plane_k[k]][0];
+                    rh.hit.Ng_y[k] = jb->plane_n[plane_k[k]][1];
+                    rh.hit.Ng_z[k] = jb->plane_n[plane_k[k]][2];
+                }
                 if (jb->mask != NULL)
                     jb->mask[(size_t)(tj + (unsigned)(k >> 2)) * s->width +
                              ti + (unsigned)(k & 3)] = (unsigned char)hit;
@@ -628,7 +717,6 @@ static void trace_packets(const job *jb, pass *out)
                     ng[2] = rh.hit.Ng_z[k];
                     if (shadow_ray(jb, p, dd, ng, dir, &len)) {
                         svalid[k] = -1;
-                        any_shadow = 1;
                         sr.org_x[k] = p[0];
                         sr.org_y[k] = p[1];
                         sr.org_z[k] = p[2];
@@ -642,6 +730,13 @@ static void trace_packets(const job *jb, pass *out)
                         sr.id[k] = (unsigned)k;
                         sr.flags[k] = 0;
                         out->rays++;
+                        if (jb->planes_first &&
+                            nearest_plane(jb, p, dir, sr.tnear[k], len,
+                                          &plane_t, &plane_k[k])) {
+                            svalid[k] = 0; /* in the plane's shadow */
+                            continue;
+                        }
+                        any_shadow = 1;
                     }
                 }
             }
@@ -685,7 +780,7 @@ static void usage(void)
 {
     fprintf(stderr, "usage: embree-rays SCENE [--mode occlusion|shadow] "
                     "[--packet 1|16] [--threads N] [--repeat N] "
-                    "[--pbm FILE]\n");
+                    "[--planes bvh|first] [--pbm FILE]\n");
     exit(2);
 }
 
@@ -722,6 +817,14 @@ int main(int argc, char **argv)
             repeat = atoi(argv[++a]);
             if (repeat < 0)
                 usage();
+        } else if (strcmp(argv[a], "--planes") == 0 && a + 1 < argc) {
+            a++;
+            if (strcmp(argv[a], "first") == 0)
+                jb.planes_first = 1;
+            else if (strcmp(argv[a], "bvh") == 0)
+                jb.planes_first = 0;
+            else
+                usage();
         } else if (strcmp(argv[a], "--pbm") == 0 && a + 1 < argc) {
             pbm = argv[++a];
         } else if (argv[a][0] != '-' && path == NULL) {
@@ -750,7 +853,14 @@ int main(int argc, char **argv)
     start = wall_now();
     jb.s = &s;
     jb.cam = make_camera(&s);
-    jb.es = build(device, &s, &jb.cam);
+    for (a = 0; (size_t)a < s.plane_count; a++) {
+        vec3 n = s.plane_normal[a];
+        jb.plane_n[a][0] = (float)n.x;
+        jb.plane_n[a][1] = (float)n.y;
+        jb.plane_n[a][2] = (float)n.z;
+        jb.plane_d[a] = (float)dot(n, s.plane_point[a]);
+    }
+    jb.es = build(device, &s, &jb.cam, jb.planes_first);
     build_s = wall_now() - start;
     if (pbm != NULL) {
         jb.mask = calloc((size_t)s.width * s.height, 1);
@@ -777,8 +887,9 @@ int main(int argc, char **argv)
     printf("scene %s\nsize %ux%u\nspheres %lu\nplanes %lu\n", path, s.width,
            s.height, (unsigned long)s.sphere_count,
            (unsigned long)s.plane_count);
-    printf("mode %s\npacket %d\nthreads %d\n",
-           jb.shadow ? "shadow" : "occlusion", jb.packet, threads);
+    printf("mode %s\npacket %d\nthreads %d\nplanes %s\n",
+           jb.shadow ? "shadow" : "occlusion", jb.packet, threads,
+           jb.planes_first ? "first" : "bvh");
     printf("read_s %.6f\nbuild_s %.6f\nsetup_s %.6f\n", read_s, build_s,
            read_s + build_s);
     if (best_s < 0)
