@@ -169,6 +169,11 @@ $(EMBREE_RAYS): bench/embree/embree_rays.c | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $< $(EMBREE_LIBS) -lm
 
+# `make check` builds it too where it can, for tests/cli/peers.t.
+ifneq ($(wildcard $(EMBREE_HEADER)),)
+check check-valgrind: $(EMBREE_RAYS)
+endif
+
 bench: $(RAYO) $(BENCH_BIN) | $(BUILD)/.deps-bench
 	@if [ -f $(EMBREE_HEADER) ]; then $(MAKE) --no-print-directory \
 	    $(EMBREE_RAYS); else rm -f $(EMBREE_RAYS); echo "bench: no" \

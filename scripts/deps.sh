@@ -63,7 +63,8 @@ fi
 optional=""
 if [ "$profile" = bench ]; then
     command -v python3 >/dev/null 2>&1 || optional="$optional python3"
-    [ -f /usr/include/embree3/rtcore.h ] || optional="$optional libembree-dev"
+    [ -f "${RAYO_EMBREE_HEADER:-/usr/include/embree3/rtcore.h}" ] ||
+        optional="$optional libembree-dev"
     command -v povray >/dev/null 2>&1 || optional="$optional povray"
 fi
 [ -z "$sets" ] && [ -z "$optional" ] && exit 0
