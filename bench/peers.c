@@ -71,8 +71,8 @@ static const char *const commands[ROW_COUNT] = {
     EMBREE "--planes first --mode occlusion --packet 16 --threads 1",
     EMBREE "--planes first --mode shadow --threads 1",
     EMBREE "--planes first --mode shadow --packet 16 --threads 1",
-    "povray +I\"$BENCH_TMP/field.pov\" +O\"$BENCH_TMP/field-pov.png\" "
-    "+W1920 +H1080 -D +WT1 -A +FN -GA File_Gamma=1.0 2>/dev/null",
+    ("povray +I\"$BENCH_TMP/field.pov\" +O\"$BENCH_TMP/field-pov.png\" "
+     "+W1920 +H1080 -D +WT1 -A +FN -GA File_Gamma=1.0 2>/dev/null"),
 };
 
 /* The value after "key " at the start of a line of text; -1 if none. */
