@@ -76,7 +76,7 @@ for tool in cc make pkg-config; do
 done
 printf '#!/bin/sh\necho 0\n' >"$bin/id"
 : >"$APT_CALLS"
-export RAYO_EMBREE_HEADER=$TMP/no/rtcore.h
+export RAYO_EMBREE_HEADER="$TMP/no/rtcore.h"
 status=0
 PATH=$bin RAYO_DEPS_LOG=$TMP/deps.log sh "$deps" bench >"$TMP/out" 2>"$TMP/err" || status=$?
 is "$status:$(sed -n 2p "$TMP/err")" "0:rayo: installing the bench's peers: python3 libembree-dev povray" \

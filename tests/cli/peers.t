@@ -146,7 +146,7 @@ EOF
         # shellcheck disable=SC2086 # options, one word each
         "$embree" "$TMP/tiny.scene" --mode shadow $args >"$TMP/e.out"
         got="$(value hits "$TMP/e.out") $(value lit "$TMP/e.out") $(value rays "$TMP/e.out")"
-        # shellcheck disable=SC2046 # six numbers
+        # shellcheck disable=SC2046,SC2086 # six numbers
         set -- $(cat "$TMP/brute") $got
         [ "$1" = "$4" ] && [ $(($2 - $5)) -le 2 ] && [ $(($5 - $2)) -le 2 ] &&
             [ $(($3 - $6)) -le 2 ] && [ $(($6 - $3)) -le 2 ]
