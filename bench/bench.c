@@ -91,10 +91,10 @@ void bench_target(bench_table *table, const char *label, double value,
 void bench_target_skipped(bench_table *table, const char *label,
                           double limit, int at_most)
 {
+    size_t before = table->target_count;
     bench_target(table, label, -1, limit, at_most);
-    if (table->target_count > 0 &&
-        strcmp(table->targets[table->target_count - 1].label, label) == 0)
-        table->targets[table->target_count - 1].skipped = 1;
+    if (table->target_count > before)
+        table->targets[before].skipped = 1;
 }
 
 double bench_value(const bench_table *table, const char *key)
