@@ -222,7 +222,8 @@ int main(int argc, char **argv)
             rows = argv[++i];
         else {
             fprintf(stderr, "usage: %s [--json FILE] [--repeat N] [--only "
-                            "seed|large|bvh|commands|compare|peers] [--rows FILE]\n",
+                            "seed|large|bvh|commands|compare|peers] "
+                            "[--rows FILE]\n",
                     argv[0]);
             return 2;
         }

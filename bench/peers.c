@@ -43,15 +43,28 @@ typedef struct row {
     int captures;           /* its standard output is "key value" lines */
     double wall, cpu;       /* best of the runs; -1 when one failed */
     double rays_s, setup_s; /* the best of the program's own timers */
+    double read_s, build_s;
     char output[CAPTURE_BYTES];
     int failed;
 } row;
 
 enum {
-    RAYO_HIT, RAYO_PHONG, RAYO_PHONG_J2, RAYO_SETUP_1, RAYO_SETUP_ALL,
-    EMBREE_OCCLUSION, EMBREE_OCCLUSION_16, EMBREE_SHADOW, EMBREE_SHADOW_16,
-    EMBREE_SETUP_ALL, EMBREE_FIRST_OCCLUSION, EMBREE_FIRST_OCCLUSION_16,
-    EMBREE_FIRST_SHADOW, EMBREE_FIRST_SHADOW_16, POVRAY, ROW_COUNT
+    RAYO_HIT,
+    RAYO_PHONG,
+    RAYO_PHONG_J2,
+    RAYO_SETUP_1,
+    RAYO_SETUP_ALL,
+    EMBREE_OCCLUSION,
+    EMBREE_OCCLUSION_16,
+    EMBREE_SHADOW,
+    EMBREE_SHADOW_16,
+    EMBREE_SETUP_ALL,
+    EMBREE_FIRST_OCCLUSION,
+    EMBREE_FIRST_OCCLUSION_16,
+    EMBREE_FIRST_SHADOW,
+    EMBREE_FIRST_SHADOW_16,
+    POVRAY,
+    ROW_COUNT
 };
 
 #define RAYO_FIELD "\"$RAYO\" render \"$BENCH_TMP/field.scene\" --raw "
@@ -117,6 +130,8 @@ static void run_once(row *r)
             memcpy(r->output, output, sizeof output);
         r->rays_s = bench_best(r->rays_s, rays_s);
         r->setup_s = bench_best(r->setup_s, setup_s);
+        r->read_s = bench_best(r->read_s, output_value(output, "read_s"));
+        r->build_s = bench_best(r->build_s, output_value(output, "build_s"));
     }
 }
 
@@ -182,8 +197,7 @@ static void add_target(bench_table *table, const char *label, double value,
 }
 
 /* Nanoseconds per ray of rayo's render after setup (processor time). */
-static double rayo_ns_per_ray(const row *render, const row *setup,
-                              double rays)
+static double rayo_ns_per_ray(const row *render, const row *setup, double rays)
 {
     if (render->cpu < 0 || setup->cpu < 0 || !(rays > 0))
         return -1;
@@ -205,13 +219,15 @@ void bench_peers(bench_table *table)
     long black;
 
     printf("peers: field_scene.py, 100000 spheres, %dx%d, one point light; "
-           "processor time unless wall\n", FIELD_WIDTH, FIELD_HEIGHT);
+           "processor time unless wall\n",
+           FIELD_WIDTH, FIELD_HEIGHT);
     fflush(stdout);
-    if (bench_run_measured("python3 \"$RAYO_SOURCE/bench/field_scene.py\" "
-                           "--size 1920x1080 > \"$BENCH_TMP/field.scene\" && "
-                           RAYO_FIELD "--shade hit --format pbm -o "
-                           "\"$BENCH_TMP/field-hit.pbm\"",
-                           NULL, 0, NULL) < 0) {
+    if (bench_run_measured(
+            "python3 \"$RAYO_SOURCE/bench/field_scene.py\" "
+            "--size 1920x1080 > \"$BENCH_TMP/field.scene\" && " RAYO_FIELD
+            "--shade hit --format pbm -o "
+            "\"$BENCH_TMP/field-hit.pbm\"",
+            NULL, 0, NULL) < 0) {
         bench_add(table, "peers_error", "peers: writing the field scene", -1,
                   "failed");
         return;
@@ -226,11 +242,13 @@ void bench_peers(bench_table *table)
                                 NULL, 0, NULL) >= 0;
     for (i = 0; i < ROW_COUNT; i++) {
         rows[i].command = commands[i];
-        rows[i].captures = i >= EMBREE_OCCLUSION && i <= EMBREE_FIRST_SHADOW_16;
+        rows[i].captures =
+            i >= EMBREE_OCCLUSION && i <= EMBREE_FIRST_SHADOW_16;
         rows[i].wall = rows[i].cpu = rows[i].rays_s = rows[i].setup_s = -1;
+        rows[i].read_s = rows[i].build_s = -1;
         rows[i].output[0] = '\0';
-        rows[i].failed = (rows[i].captures && !embree) ||
-                         (i == POVRAY && !povray);
+        rows[i].failed =
+            (rows[i].captures && !embree) || (i == POVRAY && !povray);
     }
     /* Twice --repeat rounds (rayo's per ray is a difference of two
      * figures, which noise hits twice); POV-Ray, seconds a run, in the
@@ -243,8 +261,8 @@ void bench_peers(bench_table *table)
     add_ms(table, "peers_rayo_hit_s", "peers: rayo --shade hit, -j 1",
            rows[RAYO_HIT].cpu, 1);
     add_ms(table, "peers_embree_occlusion_s",
-           "peers: Embree occlusion rays, 1 thread", rows[EMBREE_OCCLUSION].cpu,
-           embree);
+           "peers: Embree occlusion rays, 1 thread",
+           rows[EMBREE_OCCLUSION].cpu, embree);
     add_ms(table, "peers_rayo_phong_s", "peers: rayo phong, -j 1",
            rows[RAYO_PHONG].cpu, 1);
     add_ms(table, "peers_embree_shadow_s",
@@ -260,20 +278,27 @@ void bench_peers(bench_table *table)
     add_ms(table, "peers_embree_setup_s",
            "peers: Embree read + build, all threads, wall",
            rows[EMBREE_SETUP_ALL].setup_s, embree);
+    add_ms(table, "peers_embree_read_s",
+           "peers:   of which reading the file (1 thread)",
+           rows[EMBREE_SETUP_ALL].read_s, embree);
+    add_ms(table, "peers_embree_build_s",
+           "peers:   and Embree's build, all threads",
+           rows[EMBREE_SETUP_ALL].build_s, embree);
     add_ms(table, "peers_embree_setup_1_s",
            "peers: Embree read + build, 1 thread, wall",
            rows[EMBREE_OCCLUSION].setup_s, embree);
-    add_ms(table, "peers_rayo_phong_j1_wall_s", "peers: rayo phong, -j 1, wall",
-           rows[RAYO_PHONG].wall, 1);
-    add_ms(table, "peers_rayo_phong_j2_wall_s", "peers: rayo phong, -j 2, wall",
-           rows[RAYO_PHONG_J2].wall, 1);
+    add_ms(table, "peers_rayo_phong_j1_wall_s",
+           "peers: rayo phong, -j 1, wall", rows[RAYO_PHONG].wall, 1);
+    add_ms(table, "peers_rayo_phong_j2_wall_s",
+           "peers: rayo phong, -j 2, wall", rows[RAYO_PHONG_J2].wall, 1);
 
     /* Per ray after setup: rayo's primary rays are the pixels; its phong
      * rays are counted as Embree counts them (rayo also reflects). */
     shadow_rays = rows[EMBREE_SHADOW].failed
                       ? -1
                       : output_value(rows[EMBREE_SHADOW].output, "rays");
-    add_value(table, "peers_rayo_hit_ns", "peers: rayo hit, per ray after setup",
+    add_value(table, "peers_rayo_hit_ns",
+              "peers: rayo hit, per ray after setup",
               rayo_ns_per_ray(&rows[RAYO_HIT], &rows[RAYO_SETUP_1], primary),
               "ns", 1);
     add_value(table, "peers_embree_occlusion_ns",
@@ -282,11 +307,10 @@ void bench_peers(bench_table *table)
     add_value(table, "peers_embree_occlusion16_ns",
               "peers: Embree occlusion, 16-ray packets, per ray",
               embree_ns_per_ray(&rows[EMBREE_OCCLUSION_16]), "ns", embree);
-    add_value(table, "peers_rayo_phong_ns",
-              "peers: rayo phong, per ray after setup",
-              rayo_ns_per_ray(&rows[RAYO_PHONG], &rows[RAYO_SETUP_1],
-                              shadow_rays),
-              "ns", embree);
+    add_value(
+        table, "peers_rayo_phong_ns", "peers: rayo phong, per ray after setup",
+        rayo_ns_per_ray(&rows[RAYO_PHONG], &rows[RAYO_SETUP_1], shadow_rays),
+        "ns", embree);
     add_value(table, "peers_embree_shadow_ns",
               "peers: Embree primary + shadow, per ray",
               embree_ns_per_ray(&rows[EMBREE_SHADOW]), "ns", embree);
@@ -354,9 +378,10 @@ void bench_peers(bench_table *table)
     add_target(table, "peers: phong, rayo / Embree primary + shadow",
                ratio(rows[RAYO_PHONG].cpu, rows[EMBREE_SHADOW].cpu), 1.2, 1,
                embree);
-    add_target(table, "peers: setup, rayo / Embree read + build (wall)",
-               ratio(rows[RAYO_SETUP_ALL].wall, rows[EMBREE_SETUP_ALL].setup_s),
-               1.0, 1, embree);
+    add_target(
+        table, "peers: setup, rayo / Embree read + build (wall)",
+        ratio(rows[RAYO_SETUP_ALL].wall, rows[EMBREE_SETUP_ALL].setup_s), 1.0,
+        1, embree);
     add_target(table, "peers: phong speed-up, -j 1 / -j 2 (wall)",
                ratio(rows[RAYO_PHONG].wall, rows[RAYO_PHONG_J2].wall), 1.8, 0,
                1);

@@ -186,16 +186,17 @@ double bench_run_measured(const char *command, char *capture,
         _exit(127);
     }
     if (capture != NULL) {
-        ssize_t got;
-        char sink[4096];
+        char sink[4096]; /* what does not fit, read and dropped */
         close(fds[1]);
-        while ((got = read(fds[0], used + 1 < capture_size ? capture + used
-                                                          : sink,
-                           used + 1 < capture_size
-                               ? capture_size - 1 - used
-                               : sizeof sink)) > 0)
-            if (used + 1 < capture_size)
+        for (;;) {
+            int fits = used + 1 < capture_size;
+            ssize_t got = read(fds[0], fits ? capture + used : sink,
+                               fits ? capture_size - 1 - used : sizeof sink);
+            if (got <= 0)
+                break;
+            if (fits)
                 used += (size_t)got;
+        }
         close(fds[0]);
         capture[used] = '\0';
     }

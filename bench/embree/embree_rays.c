@@ -87,16 +87,31 @@ static vec3 v3(double x, double y, double z)
     v.z = z;
     return v;
 }
-static vec3 add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static vec3 sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
-static vec3 scale(vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
-static double dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static vec3 add(vec3 a, vec3 b)
+{
+    return v3(a.x + b.x, a.y + b.y, a.z + b.z);
+}
+static vec3 sub(vec3 a, vec3 b)
+{
+    return v3(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+static vec3 scale(vec3 a, double s)
+{
+    return v3(a.x * s, a.y * s, a.z * s);
+}
+static double dot(vec3 a, vec3 b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 static vec3 cross(vec3 a, vec3 b)
 {
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z,
               a.x * b.y - a.y * b.x);
 }
-static vec3 normalize(vec3 a) { return scale(a, 1.0 / sqrt(dot(a, a))); }
+static vec3 normalize(vec3 a)
+{
+    return scale(a, 1.0 / sqrt(dot(a, a)));
+}
 
 static double wall_now(void)
 {
@@ -116,7 +131,7 @@ static double cpu_now(void)
 
 typedef struct reader {
     const char *path;
-    char *p;      /* the current position in the line */
+    char *p; /* the current position in the line */
     unsigned line;
 } reader;
 
@@ -148,8 +163,10 @@ static double number(reader *r, const char *what)
     double value;
     char message[128];
     if (w == NULL) {
-        snprintf(message, sizeof message, "expected %s, found the end of "
-                                          "the line", what);
+        snprintf(message, sizeof message,
+                 "expected %s, found the end of "
+                 "the line",
+                 what);
         die_input(r, message);
     }
     errno = 0;
@@ -186,10 +203,11 @@ static void camera_line(reader *r, scene *s)
     char *w;
     while ((w = word(r)) != NULL) {
         if (strcmp(w, "size") == 0) {
-            double width = number(r, "a width"), height = number(r, "a height");
+            double width = number(r, "a width"),
+                   height = number(r, "a height");
             if (!(width >= 1 && width <= 65536 && height >= 1 &&
-                  height <= 65536) || width != floor(width) ||
-                height != floor(height))
+                  height <= 65536) ||
+                width != floor(width) || height != floor(height))
                 die_input(r, "expected a size of 1 to 65536 pixels each way");
             s->width = (unsigned)width;
             s->height = (unsigned)height;
@@ -339,8 +357,8 @@ static camera make_camera(const scene *s)
 {
     camera c;
     c.origin = s->origin;
-    c.focal = (double)s->width / (2.0 * tan(s->fov * 3.14159265358979323846 /
-                                              360.0));
+    c.focal = (double)s->width /
+              (2.0 * tan(s->fov * 3.14159265358979323846 / 360.0));
     c.right = v3(1, 0, 0);
     c.up = v3(0, 1, 0);
     c.forward = v3(0, 0, 1);
@@ -409,12 +427,12 @@ static RTCScene build(RTCDevice device, const scene *s, const camera *cam,
                         scale(n, dot(sub(cam->origin, s->plane_point[k]), n)));
         vec3 u = sub(cam->right, scale(n, dot(cam->right, n)));
         vec3 w, corner[4];
-        float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                           RTC_FORMAT_FLOAT3,
-                                           3 * sizeof(float), 4);
-        unsigned *q = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
-                                              RTC_FORMAT_UINT4,
-                                              4 * sizeof(unsigned), 1);
+        float *v =
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                    RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4);
+        unsigned *q =
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
+                                    RTC_FORMAT_UINT4, 4 * sizeof(unsigned), 1);
         int c;
         if (!(dot(u, u) > 1e-12))
             u = cross(n, fabs(n.x) < 0.9 ? v3(1, 0, 0) : v3(0, 1, 0));
@@ -480,8 +498,8 @@ static int nearest_plane(const job *jb, const float o[3], const float d[3],
     for (i = 0; i < jb->s->plane_count; i++) {
         const float *n = jb->plane_n[i];
         float den = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
-        float ti = (jb->plane_d[i] - (n[0] * o[0] + n[1] * o[1] +
-                                      n[2] * o[2])) / den;
+        float ti =
+            (jb->plane_d[i] - (n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) / den;
         if (den != 0 && ti > tnear && ti < tfar) {
             tfar = ti;
             *t = ti;
@@ -609,8 +627,8 @@ static void trace_single(const job *jb, pass *out)
                     sr.flags = 0;
                     out->rays++;
                     if (jb->planes_first &&
-                        nearest_plane(jb, p, dir, sr.tnear, sr.tfar,
-                                      &plane_t, &plane_k))
+                        nearest_plane(jb, p, dir, sr.tnear, sr.tfar, &plane_t,
+                                      &plane_k))
                         continue;
                     rtcOccluded1(jb->es, &context, &sr);
                     if (sr.tfar >= 0)
@@ -641,10 +659,12 @@ static void trace_packets(const job *jb, pass *out)
             size_t plane_k[16];
             float plane_t = 0;
             for (k = 0; k < 16; k++) {
-                unsigned i = ti + (unsigned)(k & 3), j = tj + (unsigned)(k >> 2);
+                unsigned i = ti + (unsigned)(k & 3),
+                         j = tj + (unsigned)(k >> 2);
                 vec3 d;
                 valid[k] = i < s->width && j < s->height ? -1 : 0;
-                d = valid[k] ? pixel_direction(&jb->cam, s, i, j) : v3(0, 0, 1);
+                d = valid[k] ? pixel_direction(&jb->cam, s, i, j)
+                             : v3(0, 0, 1);
                 rh.ray.org_x[k] = (float)jb->cam.origin.x;
                 rh.ray.org_y[k] = (float)jb->cam.origin.y;
                 rh.ray.org_z[k] = (float)jb->cam.origin.z;
