@@ -164,10 +164,11 @@ $(BENCH_BIN): $(BENCH_SRC) bench/bench.h $(LIB)
 EMBREE_HEADER ?= /usr/include/embree3/rtcore.h
 EMBREE_LIBS ?= -lembree3
 EMBREE_RAYS := $(BUILD)/bench/embree-rays
+EMBREE_SRC := $(sort $(wildcard bench/embree/*.c))
 
-$(EMBREE_RAYS): bench/embree/embree_rays.c | $(BUILD)/.deps-build
+$(EMBREE_RAYS): $(EMBREE_SRC) bench/embree/scene.h | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $< $(EMBREE_LIBS) -lm
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(EMBREE_SRC) $(EMBREE_LIBS) -lm
 
 # `make check` builds it too where it can, for tests/cli/peers.t.
 ifneq ($(wildcard $(EMBREE_HEADER)),)
