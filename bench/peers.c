@@ -104,6 +104,13 @@ static double output_value(const char *text, const char *key)
     return -1;
 }
 
+/* A row that failed once has no figures. */
+static void fail_row(row *r)
+{
+    r->failed = 1;
+    r->wall = r->cpu = r->rays_s = r->setup_s = r->read_s = r->build_s = -1;
+}
+
 static void run_once(row *r)
 {
     double cpu = -1, wall;
@@ -113,8 +120,7 @@ static void run_once(row *r)
     wall = bench_run_measured(r->command, r->captures ? output : NULL,
                               sizeof output, &cpu);
     if (wall < 0) {
-        r->failed = 1;
-        r->wall = r->cpu = -1;
+        fail_row(r);
         return;
     }
     r->wall = bench_best(r->wall, wall);
@@ -123,7 +129,7 @@ static void run_once(row *r)
         double rays_s = output_value(output, "rays_s");
         double setup_s = output_value(output, "setup_s");
         if (rays_s < 0 || setup_s < 0) {
-            r->failed = 1;
+            fail_row(r);
             return;
         }
         if (r->rays_s < 0 || rays_s < r->rays_s)
