@@ -3,7 +3,7 @@
 #   make                 build/rayo and build/librayo.a
 #   make check           every test, run by prove (TAP)
 #   make run             render the assignment's sphere to esfera.pbm and esfera.png
-#   make bench           benchmarks (bench/)
+#   make bench           benchmarks (bench/; BENCH_ARGS="--only peers")
 #   make check-sanitize  every test under ASan and UBSan (clang)
 #   make check-valgrind  the command tests under valgrind memcheck
 #   make fuzz            libFuzzer targets (fuzz/; docs/robustness.md)
@@ -64,6 +64,9 @@ $(BUILD)/.deps-build:
 	@mkdir -p $(dir $@) && touch $@
 $(BUILD)/.deps-check:
 	@scripts/deps.sh check
+	@mkdir -p $(dir $@) && touch $@
+$(BUILD)/.deps-bench:
+	@scripts/deps.sh bench
 	@mkdir -p $(dir $@) && touch $@
 
 $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps-build
@@ -154,9 +157,31 @@ $(BENCH_BIN): $(BENCH_SRC) bench/bench.h $(LIB)
 	$(CC) $(ALL_CFLAGS) -Ibench $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) \
 	    $(LDLIBS)
 
-bench: $(RAYO) $(BENCH_BIN)
+# The peers' rows (bench/peers.c, docs/performance.md "Against Embree and
+# POV-Ray") run $(BUILD)/bench/embree-rays, built only where Embree 3's
+# header is (Debian's libembree-dev, no .pc file); rayo never links it.
+# `make bench BENCH_ARGS="--only peers"` runs those rows alone.
+EMBREE_HEADER ?= /usr/include/embree3/rtcore.h
+EMBREE_LIBS ?= -lembree3
+EMBREE_RAYS := $(BUILD)/bench/embree-rays
+EMBREE_SRC := $(sort $(wildcard bench/embree/*.c))
+
+$(EMBREE_RAYS): $(EMBREE_SRC) bench/embree/scene.h | $(BUILD)/.deps-build
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(EMBREE_SRC) $(EMBREE_LIBS) -lm
+
+# `make check` builds it too where it can, for tests/cli/peers.t.
+ifneq ($(wildcard $(EMBREE_HEADER)),)
+check check-valgrind: $(EMBREE_RAYS)
+endif
+
+bench: $(RAYO) $(BENCH_BIN) | $(BUILD)/.deps-bench
+	@if [ -f $(EMBREE_HEADER) ]; then $(MAKE) --no-print-directory \
+	    $(EMBREE_RAYS); else rm -f $(EMBREE_RAYS); echo "bench: no" \
+	    "$(EMBREE_HEADER) (libembree-dev): the Embree rows say skipped"; fi
 	RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
-	RAYO_SOURCE=$(CURDIR) $(BENCH_BIN) --json $(BUILD)/bench.json
+	RAYO_SOURCE=$(CURDIR) $(BENCH_BIN) --json $(BUILD)/bench.json \
+	    $(BENCH_ARGS)
 
 # The command tests with every rayo run under valgrind memcheck.
 check-valgrind: all $(UNIT_BIN)

@@ -3,7 +3,8 @@
  * (figures, then targets with pass or FAIL) and writes it as JSON.
  *
  *   rayo-bench [--json FILE] [--repeat N]
- *              [--only seed|large|bvh|commands|compare] [--rows FILE]
+ *              [--only seed|large|bvh|commands|compare|peers]
+ *              [--rows FILE]
  *
  * $RAYO names the `rayo` command for the rows that run it (peak memory,
  * bench/commands.tsv).  Every figure is the best of N runs (default 3;
@@ -29,8 +30,8 @@
 
 #include "bench.h"
 
-#define MAX_FIGURES 128
-#define MAX_TARGETS 32
+#define MAX_FIGURES 192
+#define MAX_TARGETS 48
 
 typedef struct figure {
     char key[64], label[128], unit[16];
@@ -40,7 +41,7 @@ typedef struct figure {
 typedef struct target {
     char label[128];
     double value, limit;
-    int at_most;
+    int at_most, skipped;
 } target;
 
 struct bench_table {
@@ -66,7 +67,10 @@ void bench_add(bench_table *table, const char *key, const char *label,
     copy(f->label, sizeof f->label, label);
     copy(f->unit, sizeof f->unit, unit);
     f->value = value;
-    printf("  %-52s %12.3f %s\n", label, value, unit);
+    if (strcmp(unit, "skipped") == 0)
+        printf("  %-52s %12s\n", label, unit);
+    else
+        printf("  %-52s %12.3f %s\n", label, value, unit);
     fflush(stdout);
 }
 
@@ -81,6 +85,16 @@ void bench_target(bench_table *table, const char *label, double value,
     t->value = value;
     t->limit = limit;
     t->at_most = at_most;
+    t->skipped = 0;
+}
+
+void bench_target_skipped(bench_table *table, const char *label,
+                          double limit, int at_most)
+{
+    size_t before = table->target_count;
+    bench_target(table, label, -1, limit, at_most);
+    if (table->target_count > before)
+        table->targets[before].skipped = 1;
 }
 
 double bench_value(const bench_table *table, const char *key)
@@ -118,9 +132,13 @@ static void print_targets(const bench_table *table)
     printf("\ntargets (ratios from the figures above):\n");
     for (i = 0; i < table->target_count; i++) {
         const target *t = &table->targets[i];
-        printf("  %-52s %9.3f  %s %-7g %s\n", t->label, t->value,
-               t->at_most ? "<=" : ">=", t->limit,
-               target_met(t) ? "pass" : "FAIL");
+        if (t->skipped)
+            printf("  %-52s %9s  %s %-7g %s\n", t->label, "", t->at_most ?
+                   "<=" : ">=", t->limit, "skipped");
+        else
+            printf("  %-52s %9.3f  %s %-7g %s\n", t->label, t->value,
+                   t->at_most ? "<=" : ">=", t->limit,
+                   target_met(t) ? "pass" : "FAIL");
     }
 }
 
@@ -172,7 +190,8 @@ static void write_json(const bench_table *table, const char *path)
         json_string(out, t->label);
         fprintf(out, ", \"value\": %.6g, \"%s\": %g, \"met\": %s}%s\n",
                 t->value, t->at_most ? "at_most" : "at_least", t->limit,
-                target_met(t) ? "true" : "false",
+                t->skipped ? "null, \"skipped\": true"
+                           : target_met(t) ? "true" : "false",
                 i + 1 < table->target_count ? "," : "");
     }
     fprintf(out, "  ]\n}\n");
@@ -203,7 +222,8 @@ int main(int argc, char **argv)
             rows = argv[++i];
         else {
             fprintf(stderr, "usage: %s [--json FILE] [--repeat N] [--only "
-                            "seed|large|bvh|commands|compare] [--rows FILE]\n",
+                            "seed|large|bvh|commands|compare|peers] "
+                            "[--rows FILE]\n",
                     argv[0]);
             return 2;
         }
@@ -225,6 +245,8 @@ int main(int argc, char **argv)
         bench_commands(&table, rows);
     if (wants(only, "compare") && rayo != NULL)
         bench_compare_noise(&table);
+    if (wants(only, "peers") && rayo != NULL)
+        bench_peers(&table);
     print_targets(&table);
     if (json != NULL) {
         write_json(&table, json);

@@ -26,7 +26,8 @@ double bench_now(void);
  * measured yet, or failed): the best-of-N every figure takes. */
 double bench_best(double a, double b);
 
-/* Adds a measured figure (label as printed; key as in the JSON). */
+/* Adds a measured figure (label as printed; key as in the JSON); unit
+ * "skipped" (value -1) for one that needs a tool this machine lacks. */
 void bench_add(bench_table *table, const char *key, const char *label,
                double value, const char *unit);
 
@@ -36,6 +37,11 @@ void bench_add(bench_table *table, const char *key, const char *label,
  */
 void bench_target(bench_table *table, const char *label, double value,
                   double limit, int at_most);
+
+/* A target that could not be judged here (a tool missing): printed as
+ * "skipped", neither pass nor FAIL. */
+void bench_target_skipped(bench_table *table, const char *label,
+                          double limit, int at_most);
 
 /* The value of the figure with this key; -1 when there is none. */
 double bench_value(const bench_table *table, const char *key);
@@ -61,6 +67,16 @@ double bench_run_child(char *const argv[], const char *command,
                        long *max_rss_kib);
 
 /*
+ * Runs `sh -c command`, its standard output on /dev/null or, with capture
+ * not NULL, read into capture (NUL-terminated, cut at capture_size - 1
+ * bytes); returns the wall time in seconds, or a negative number when
+ * the child fails, and puts the child's processor time (user + system,
+ * its waited-for descendants included) in *cpu_seconds.
+ */
+double bench_run_measured(const char *command, char *capture,
+                          size_t capture_size, double *cpu_seconds);
+
+/*
  * The job `rayo render` does, in process (render_job.c): the frame
  * rendered through a writer of format (plain or raw) into out, which is
  * then committed, or aborted on a failure.  0, or -1.
@@ -70,12 +86,14 @@ int bench_render_into(rayo_output *out, const rayo_camera *camera,
                       const rayo_render_options *options, rayo_format format,
                       int plain);
 
-/* The rows: seed.c, large.c, bvh.c, commands.c, compare_noise.c. */
+/* The rows: seed.c, large.c, bvh.c, commands.c, compare_noise.c,
+ * peers.c. */
 void bench_seed(bench_table *table);
 void bench_large(bench_table *table, const char *rayo);
 void bench_bvh(bench_table *table);
 void bench_commands(bench_table *table, const char *rows_file);
 void bench_compare_noise(bench_table *table);
+void bench_peers(bench_table *table);
 
 /* The median time a new thread takes to start running on an idle CPU
  * (thread_start.c), seconds; -1 when no thread could be created. */

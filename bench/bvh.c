@@ -175,7 +175,8 @@ static double ratio(double a, double b)
  * ratio as a target. */
 static void bvh_compare(bench_table *table, const rayo_scene *few,
                         const rayo_scene *many, bvh_view view,
-                        rayo_shade_mode shade, const char *name, int repeats)
+                        rayo_shade_mode shade, const char *name, double limit,
+                        int repeats)
 {
     char key[64], label[128];
     double f = frame_ns_per_pixel(few, view, shade, repeats);
@@ -187,7 +188,7 @@ static void bvh_compare(bench_table *table, const rayo_scene *few,
     snprintf(label, sizeof label, "bvh: %s, 100000 spheres", name);
     bench_add(table, key, label, m, "ns/px");
     snprintf(label, sizeof label, "bvh: %s per pixel, 100000 / 10", name);
-    bench_target(table, label, ratio(m, f), 2.0, 1);
+    bench_target(table, label, ratio(m, f), limit, 1);
 }
 
 /* 10 against 100,000 spheres, whole frames on one thread. */
@@ -203,12 +204,13 @@ static void bvh_frames(bench_table *table, int repeats)
     }
     bench_add(table, "bvh_build_100k", "bvh: build, 100000 spheres", build,
               "s");
-    bvh_compare(table, few, many, BVH_LEVEL, RAYO_SHADE_HIT, "hit_level",
+    bvh_compare(table, few, many, BVH_LEVEL, RAYO_SHADE_HIT, "hit_level", 2.0,
                 repeats);
     bvh_compare(table, few, many, BVH_LEVEL, RAYO_SHADE_PHONG, "phong_level",
-                repeats);
+                2.0, repeats);
+    /* Issue 17: the field from above within 1.5x of 10 spheres. */
     bvh_compare(table, few, many, BVH_ABOVE, RAYO_SHADE_PHONG, "phong_above",
-                repeats);
+                1.5, repeats);
     rayo_scene_free(few);
     rayo_scene_free(many);
 }

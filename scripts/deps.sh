@@ -7,6 +7,12 @@
 #   scripts/deps.sh check   also the Netpbm tools the tests cross-check with,
 #                           prove (perl), jq and python3, which read
 #                           their JSON, and bubblewrap, grade's sandbox
+#   scripts/deps.sh bench   build's, and for `make bench`'s rows against
+#                           Embree and POV-Ray (bench/peers.c) python3,
+#                           libembree-dev and povray: optional, so
+#                           without them (not root, no such package)
+#                           it says so and succeeds, and those rows say
+#                           skipped
 #
 # It installs with apt-get only when something is missing, and only as
 # root; otherwise it names the command to run and fails.  It never
@@ -19,9 +25,9 @@
 set -eu
 profile=${1:-build}
 case $profile in
-build | check) ;;
+build | check | bench) ;;
 *)
-    echo "deps.sh: '$profile': expected build or check" >&2
+    echo "deps.sh: '$profile': expected build, check or bench" >&2
     exit 2
     ;;
 esac
@@ -54,14 +60,30 @@ if [ "$profile" = check ]; then
     command -v bwrap >/dev/null 2>&1 || sandbox=" bubblewrap"
     add_set "the grader's sandbox" "$sandbox"
 fi
-[ -z "$sets" ] && exit 0
+optional=""
+if [ "$profile" = bench ]; then
+    command -v python3 >/dev/null 2>&1 || optional="$optional python3"
+    [ -f "${RAYO_EMBREE_HEADER:-/usr/include/embree3/rtcore.h}" ] ||
+        optional="$optional libembree-dev"
+    command -v povray >/dev/null 2>&1 || optional="$optional povray"
+fi
+[ -z "$sets" ] && [ -z "$optional" ] && exit 0
 need=$(printf '%s' "$sets" | sed 's/^[^:]*://' | tr '\n' ' ' | sed 's/  */ /g; s/ $//')
 
+# without_optional REASON: the optional packages are left out, saying so.
+without_optional() {
+    [ -n "$optional" ] && echo "rayo: the bench's rows against Embree and" \
+        "POV-Ray will say skipped ($1); to have them: apt-get install -y$optional" >&2
+    [ -z "$sets" ] && exit 0
+    optional=""
+}
 if ! command -v apt-get >/dev/null 2>&1; then
+    without_optional "no apt-get"
     echo "rayo needs:$need (install them with your system's package manager)" >&2
     exit 1
 fi
 if [ "$(id -u)" != 0 ]; then
+    without_optional "not root"
     echo "rayo needs:$need; run: sudo apt-get install -y$need" >&2
     exit 1
 fi
@@ -96,3 +118,12 @@ printf '%s' "$sets" | while IFS=: read -r label packages; do
     # shellcheck disable=SC2086 # one word a package
     apt install -y --no-install-recommends $packages
 done
+if [ -n "$optional" ]; then
+    echo "rayo: installing the bench's peers:$optional" >&2
+    echo "+ apt-get install$optional" >>"$log"
+    # shellcheck disable=SC2086 # one word a package
+    apt-get -o DPkg::Lock::Timeout="$timeout" install -y \
+        --no-install-recommends $optional >>"$log" 2>&1 ||
+        echo "rayo: apt-get could not install$optional ($log); the bench's" \
+            "rows against Embree and POV-Ray will say skipped" >&2
+fi

@@ -66,4 +66,32 @@ printf '#!/bin/sh\necho 1000\n' >"$bin/id"
 status=0
 PATH=$bin sh "$deps" build >"$TMP/out" 2>"$TMP/err" || status=$?
 is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config libpng-dev; run: sudo apt-get install -y gcc libc6-dev make pkg-config libpng-dev" "not root: names the command"
+
+# bench: the peers' packages (python3, libembree-dev, povray) are
+# optional.  With the build's tools present (stand-ins), a root machine
+# installs them; when it cannot, or is not root, it says so and succeeds.
+for tool in cc make pkg-config; do
+    printf '#!/bin/sh\nexit 0\n' >"$bin/$tool"
+    chmod +x "$bin/$tool"
+done
+printf '#!/bin/sh\necho 0\n' >"$bin/id"
+: >"$APT_CALLS"
+export RAYO_EMBREE_HEADER="$TMP/no/rtcore.h"
+status=0
+PATH=$bin RAYO_DEPS_LOG=$TMP/deps.log sh "$deps" bench >"$TMP/out" 2>"$TMP/err" || status=$?
+is "$status:$(sed -n 2p "$TMP/err")" "0:rayo: installing the bench's peers: python3 libembree-dev povray" \
+    "bench, root: installs the peers' packages"
+grep -q "install -y --no-install-recommends python3 libembree-dev povray" "$APT_CALLS"
+ok $? "  in one apt-get install"
+out=$(PATH=$bin sh "$deps" build 2>&1)
+is "$?:$out" "0:" "  build: they are not its business"
+status=0
+APT_FAIL=install PATH=$bin RAYO_DEPS_LOG=$TMP/deps.log sh "$deps" bench >"$TMP/out" 2>"$TMP/err" || status=$?
+is "$status:$(tail -n 1 "$TMP/err")" "0:rayo: apt-get could not install python3 libembree-dev povray ($TMP/deps.log); the bench's rows against Embree and POV-Ray will say skipped" \
+    "bench, apt-get fails: said, exit 0"
+printf '#!/bin/sh\necho 1000\n' >"$bin/id"
+status=0
+PATH=$bin sh "$deps" bench >"$TMP/out" 2>"$TMP/err" || status=$?
+is "$status:$(cat "$TMP/err")" "0:rayo: the bench's rows against Embree and POV-Ray will say skipped (not root); to have them: apt-get install -y python3 libembree-dev povray" \
+    "bench, not root: names the command, exit 0"
 done_testing
