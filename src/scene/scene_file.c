@@ -18,6 +18,7 @@
 
 #include "rayo/limits.h"
 #include "scene_lexer.h"
+#include "scene_number.h"
 
 typedef struct material_name {
     char text[RAYO_SCENE_MAX_NAME + 1];
@@ -72,41 +73,66 @@ static rayo_status need_word(parser *p, scene_word *word, const char *what)
 
 static int word_to_double(const scene_word *word, double *value)
 {
-    char buffer[64];
-    char *end;
-    if (word->length == 0 || word->length >= sizeof buffer)
-        return 0;
-    memcpy(buffer, word->text, word->length);
-    buffer[word->length] = '\0';
-    if (strspn(buffer, "0123456789+-.eE") < word->length)
-        return 0; /* decimal only: no hex, inf or nan spellings */
-    *value = strtod(buffer, &end);
-    return *end == '\0' && end != buffer && isfinite(*value);
+    return scene_number_read(word->text, word->length, value);
+}
+
+/*
+ * What a number stands for, in messages: "the sphere's radius", or with
+ * axis set "the x of the sphere's centre".  Written out only when a
+ * message needs it: formatting it for every number was a tenth of
+ * reading a large scene.
+ */
+typedef struct number_name {
+    const char *what;
+    char axis; /* 'x', 'y', 'z', or 0 */
+} number_name;
+
+static const char *number_name_text(const number_name *name, char *buffer,
+                                    size_t size)
+{
+    if (name->axis == 0)
+        return name->what;
+    snprintf(buffer, size, "the %c of %s", name->axis, name->what);
+    return buffer;
+}
+
+static rayo_status read_number(parser *p, const number_name *name,
+                               double *value, size_t *column)
+{
+    scene_word word;
+    char text[WORD_SHOW + 32], label[160], what[128];
+    size_t at = scene_lexer_column(&p->lx);
+    if (!scene_lexer_word(&p->lx, &word)) {
+        snprintf(label, sizeof label, "%s (a number)",
+                 number_name_text(name, what, sizeof what));
+        return scene_lexer_fail(&p->lx, at, RAYO_ERR_FORMAT,
+                                "%s; expected %s",
+                                found(&word, 0, text, sizeof text), label);
+    }
+    if (column != NULL)
+        *column = word.column;
+    if (!word_to_double(&word, value))
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                "%s; expected %s (a finite decimal number)",
+                                found(&word, 1, text, sizeof text),
+                                number_name_text(name, what, sizeof what));
+    if (fabs(*value) > RAYO_SCENE_MAX_NUMBER)
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_LIMIT,
+                                "%s is out of range; expected %s between "
+                                "-1e12 and 1e12",
+                                quoted(&word, text, sizeof text),
+                                number_name_text(name, what, sizeof what));
+    return RAYO_OK;
 }
 
 /* One number; what names it ("the sphere's radius"). */
 static rayo_status need_number(parser *p, const char *what, double *value,
                                size_t *column)
 {
-    scene_word word;
-    char text[WORD_SHOW + 32], label[160];
-    rayo_status status;
-    snprintf(label, sizeof label, "%s (a number)", what);
-    status = need_word(p, &word, label);
-    if (status != RAYO_OK)
-        return status;
-    if (column != NULL)
-        *column = word.column;
-    if (!word_to_double(&word, value))
-        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
-                                "%s; expected %s (a finite decimal number)",
-                                found(&word, 1, text, sizeof text), what);
-    if (fabs(*value) > RAYO_SCENE_MAX_NUMBER)
-        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_LIMIT,
-                                "%s is out of range; expected %s between "
-                                "-1e12 and 1e12",
-                                quoted(&word, text, sizeof text), what);
-    return RAYO_OK;
+    number_name name;
+    name.what = what;
+    name.axis = 0;
+    return read_number(p, &name, value, column);
 }
 
 /* Three numbers: the x, y and z of what ("the sphere's centre"). */
@@ -117,10 +143,11 @@ static rayo_status need_vector(parser *p, const char *what, rayo_vec3 *v,
     double c[3];
     int i;
     for (i = 0; i < 3; i++) {
-        char label[128];
+        number_name name;
         rayo_status status;
-        snprintf(label, sizeof label, "the %c of %s", axes[i], what);
-        status = need_number(p, label, &c[i], i == 0 ? column : NULL);
+        name.what = what;
+        name.axis = axes[i];
+        status = read_number(p, &name, &c[i], i == 0 ? column : NULL);
         if (status != RAYO_OK)
             return status;
     }
