@@ -1,39 +1,99 @@
 /*
- * bvh_build.c - building the bounding volume hierarchy (bvh.h).
+ * bvh_build.c - building the bounding volume hierarchy (bvh.h), on one
+ * thread or several, always into the same tree.
  *
- * Top-down.  A node's primitives are sorted into BINS bins (as many as
- * it has primitives, when fewer) by their box centres along each axis in
- * turn, and the split between bins that minimises the surface area
- * heuristic
+ * Top-down.  The boxes are first copied once into a packed array of
+ * items (float boxes rounded outward, 32 bytes each, with the
+ * primitive's number), which is what every level reads and what the
+ * partition permutes: one stream of memory, no indirection.  A node's
+ * items are sorted into BINS bins (as many as it has primitives, when
+ * fewer) along all three axes in one pass, by their box centres (twice
+ * the centre, lo + hi in float: the same order), and the split between
+ * bins that minimises the surface area heuristic
  *     cost = 1 + (A_left N_left + A_right N_right) / A_node
- * is taken when it beats making a leaf (cost N).  Nodes whose centres all
- * coincide, and nodes deeper than BVH_SAH_DEPTH_LIMIT, are cut in two
- * halves instead, so the depth stays below BVH_SAH_DEPTH_LIMIT + 32 for
- * any input and a fixed traversal stack suffices.  Nodes are
- * preallocated (a tree with leaves of at least one primitive has at most
- * 2n - 1 nodes); their float bounds are rounded outward (bvh_impl.h).
+ * is taken when it beats making a leaf (cost N).  The bins give each
+ * child's bounds; the partition, which reads each item once, gives each
+ * child's centre bounds, so no node scans its items twice.  Nodes whose
+ * centres all coincide, and nodes deeper than BVH_SAH_DEPTH_LIMIT, are
+ * cut in two halves instead, so the depth stays below
+ * BVH_SAH_DEPTH_LIMIT + 32 for any input and a fixed traversal stack
+ * suffices.  Node bounds are the items' float bounds, which are the
+ * double boxes rounded outward (rounding is monotonic, so the rounded
+ * union is the union of the rounded boxes; bvh_impl.h).
+ *
+ * Threads: every decision at a node depends on that node's items alone,
+ * so the tree does not depend on who builds what.  With more than one
+ * thread, a node's right child of at least SPAWN_MIN primitives becomes
+ * a task for any thread (its items are its own range of the item array),
+ * while the thread that split the node goes on with the left child.  Each
+ * task writes its nodes in its own array, in the order one thread would
+ * have made them; when all are done the arrays are stitched into the
+ * order a single thread makes (each task's nodes inserted where the
+ * serial build would have started that subtree), so the node array and
+ * the primitive order are the same bytes for any number of threads
+ * (tests/unit/t_bvh_build.c).  When a thread cannot be started its
+ * share is built by the others; with none, by the caller.
  */
 #include "bvh_impl.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define BINS 16
 #define MAX_LEAF 8
+/* Right children this large become tasks for other threads. */
+#define SPAWN_MIN 1024
+/* A placeholder node: its subtree is task number `first`. */
+#define NODE_TASK UINT32_MAX
+
+/* One primitive: its box as floats rounded outward, its number. */
+typedef struct item {
+    float lo[3];
+    uint32_t index; /* into the caller's boxes and ids */
+    float hi[3];
+    float unused;
+} item;
+
+typedef struct fbox {
+    float lo[3], hi[3];
+} fbox;
+
+struct builder;
+
+/* A subtree built by one thread into its own node array. */
+typedef struct task {
+    size_t begin, end;  /* its items */
+    unsigned depth;     /* of its root */
+    fbox bounds, centres;
+    bvh_node *nodes;    /* nodes[0] is the root; pairs from 1 */
+    size_t count, capacity;
+    /* subtrees handed to other tasks: which, and before which of this
+     * task's nodes the serial build would have made theirs */
+    struct spawn {
+        uint32_t task;
+        uint32_t at;
+        uint32_t slot; /* its placeholder among this task's nodes */
+    } *spawns;
+    size_t spawn_count, spawn_capacity;
+    uint32_t *map; /* stitching: each node's place in the final array */
+} task;
 
 typedef struct builder {
-    const rayo_box *boxes;
-    uint32_t *order; /* indices into boxes, permuted as nodes split */
-    bvh_node *nodes;
-    size_t node_count;
+    item *items;
+    unsigned threads;
+    pthread_mutex_t lock;
+    pthread_cond_t changed;
+    task **tasks;               /* every task, by number */
+    size_t task_count, task_capacity;
+    uint32_t *pending;          /* tasks not yet started (a stack) */
+    size_t pending_count;
+    size_t busy;                /* tasks being built */
+    int failed;                 /* out of memory somewhere */
 } builder;
 
-typedef struct bin {
-    rayo_box box;
-    size_t count;
-} bin;
-
-static void box_empty(rayo_box *b)
+static void fbox_empty(fbox *b)
 {
     int a;
     for (a = 0; a < 3; a++) {
@@ -43,26 +103,21 @@ static void box_empty(rayo_box *b)
 }
 
 /* Written as selections so that compilers make them min and max
- * instructions; a NaN in other changes nothing. */
-static void box_grow(rayo_box *b, const rayo_box *other)
+ * instructions; a NaN in lo or hi changes nothing. */
+static void fbox_grow(fbox *b, const float *lo, const float *hi)
 {
     int a;
     for (a = 0; a < 3; a++) {
-        b->lo[a] = other->lo[a] < b->lo[a] ? other->lo[a] : b->lo[a];
-        b->hi[a] = other->hi[a] > b->hi[a] ? other->hi[a] : b->hi[a];
+        b->lo[a] = lo[a] < b->lo[a] ? lo[a] : b->lo[a];
+        b->hi[a] = hi[a] > b->hi[a] ? hi[a] : b->hi[a];
     }
 }
 
-static double box_area(const rayo_box *b)
+static double fbox_area(const fbox *b)
 {
-    double dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1],
-           dz = b->hi[2] - b->lo[2];
+    double dx = (double)b->hi[0] - b->lo[0], dy = (double)b->hi[1] - b->lo[1],
+           dz = (double)b->hi[2] - b->lo[2];
     return 2.0 * (dx * dy + dy * dz + dz * dx);
-}
-
-static double centre(const rayo_box *b, int axis)
-{
-    return 0.5 * b->lo[axis] + 0.5 * b->hi[axis];
 }
 
 void rayo_box_pad(rayo_box *box)
@@ -94,171 +149,463 @@ static float float_above(double v)
     return f;
 }
 
-/* How one node's centres are sorted into bins along one axis. */
+/* How one node's centres are sorted into bins along each axis. */
 typedef struct binning {
-    int axis;
-    size_t count;   /* bins: BINS, or fewer for a node of few primitives */
-    double lo;      /* the lowest centre */
-    double scale;   /* bins per unit of length */
+    size_t count;      /* bins: BINS, or fewer for a node of few items */
+    float lo[3];       /* the lowest centre (lo + hi) */
+    float scale[3];    /* bins per unit; 0 on an axis not binned */
+    float top;         /* count - 1 */
+    int axes;          /* how many axes have a positive, finite extent */
 } binning;
 
-static binning binning_make(int axis, double lo, double extent,
-                            size_t primitives)
+static void binning_make(binning *g, const fbox *centres, size_t items)
 {
-    binning g;
-    g.axis = axis;
-    g.count = primitives < BINS ? (primitives < 2 ? 2 : primitives) : BINS;
-    g.lo = lo;
-    g.scale = (double)g.count / extent;
-    return g;
-}
-
-/* The bin of a box, by its centre. */
-static size_t bin_of(const binning *g, const rayo_box *box)
-{
-    double f = (centre(box, g->axis) - g->lo) * g->scale;
-    if (!(f >= 0.0))
-        return 0;
-    if (f >= (double)(g->count - 1))
-        return g->count - 1;
-    return (size_t)f;
-}
-
-typedef struct split {
-    binning along;   /* along.axis < 0: no useful split found */
-    size_t bin;      /* primitives in bins < bin go left */
-    double cost;
-} split;
-
-static void try_axis(const builder *b, size_t begin, size_t end,
-                     const binning *g, double area, split *best)
-{
-    bin bins[BINS];
-    rayo_box right_box[BINS];
-    size_t right_count[BINS];
-    rayo_box acc;
-    size_t i, n = 0;
-    for (i = 0; i < g->count; i++) {
-        box_empty(&bins[i].box);
-        bins[i].count = 0;
-    }
-    for (i = begin; i < end; i++) {
-        const rayo_box *box = &b->boxes[b->order[i]];
-        size_t k = bin_of(g, box);
-        box_grow(&bins[k].box, box);
-        bins[k].count++;
-    }
-    box_empty(&acc);
-    for (i = g->count; i-- > 1;) {
-        box_grow(&acc, &bins[i].box);
-        n += bins[i].count;
-        right_box[i] = acc;
-        right_count[i] = n;
-    }
-    box_empty(&acc);
-    n = 0;
-    for (i = 1; i < g->count; i++) {
-        double cost;
-        box_grow(&acc, &bins[i - 1].box);
-        n += bins[i - 1].count;
-        if (n == 0 || right_count[i] == 0)
-            continue;
-        cost = 1.0 + (box_area(&acc) * (double)n +
-                      box_area(&right_box[i]) * (double)right_count[i]) /
-                         area;
-        if (cost < best->cost) {
-            best->cost = cost;
-            best->along = *g;
-            best->bin = i;
+    int a;
+    g->count = items < BINS ? (items < 2 ? 2 : items) : BINS;
+    g->top = (float)(g->count - 1);
+    g->axes = 0;
+    for (a = 0; a < 3; a++) {
+        float extent = centres->hi[a] - centres->lo[a];
+        g->lo[a] = centres->lo[a];
+        g->scale[a] = 0.0f;
+        if (extent > 0.0f && isfinite(extent)) {
+            g->scale[a] = (float)g->count / extent;
+            if (isfinite(g->scale[a]) && g->scale[a] > 0.0f)
+                g->axes++;
+            else
+                g->scale[a] = 0.0f;
         }
     }
 }
 
-/* Moves the primitives going left to the front; returns the boundary. */
-static size_t partition(builder *b, size_t begin, size_t end,
-                        const split *s)
+/* The bin of a centre along axis a; a NaN goes to bin 0. */
+static size_t bin_of(const binning *g, int a, float centre)
 {
+    float f = (centre - g->lo[a]) * g->scale[a];
+    f = f > 0.0f ? f : 0.0f;
+    f = f < g->top ? f : g->top;
+    return (size_t)f;
+}
+
+typedef struct split {
+    int axis;           /* < 0: no useful split found */
+    size_t bin;         /* items in bins < bin go left */
+    double cost;
+    fbox left, right;   /* the children's bounds */
+    size_t left_count;
+} split;
+
+typedef struct bin {
+    fbox box;
+    size_t count;
+} bin;
+
+/* Bins a node's items along every binned axis at once and finds the
+ * cheapest split; best->axis < 0 when there is none. */
+static void find_split(const builder *b, size_t begin, size_t end,
+                       const binning *g, double area, split *best)
+{
+    bin bins[3][BINS];
+    fbox right_box[BINS];
+    size_t right_count[BINS];
+    size_t i, k;
+    int a;
+    best->axis = -1;
+    best->bin = 0;
+    best->cost = INFINITY;
+    for (a = 0; a < 3; a++)
+        for (k = 0; k < g->count; k++) {
+            fbox_empty(&bins[a][k].box);
+            bins[a][k].count = 0;
+        }
+    for (i = begin; i < end; i++) {
+        const item *it = &b->items[i];
+        for (a = 0; a < 3; a++) {
+            if (g->scale[a] > 0.0f) {
+                bin *x = &bins[a][bin_of(g, a, it->lo[a] + it->hi[a])];
+                fbox_grow(&x->box, it->lo, it->hi);
+                x->count++;
+            }
+        }
+    }
+    for (a = 0; a < 3; a++) {
+        fbox acc;
+        size_t n = 0;
+        if (!(g->scale[a] > 0.0f))
+            continue;
+        fbox_empty(&acc);
+        for (k = g->count; k-- > 1;) {
+            fbox_grow(&acc, bins[a][k].box.lo, bins[a][k].box.hi);
+            n += bins[a][k].count;
+            right_box[k] = acc;
+            right_count[k] = n;
+        }
+        fbox_empty(&acc);
+        n = 0;
+        for (k = 1; k < g->count; k++) {
+            double cost;
+            fbox_grow(&acc, bins[a][k - 1].box.lo, bins[a][k - 1].box.hi);
+            n += bins[a][k - 1].count;
+            if (n == 0 || right_count[k] == 0)
+                continue;
+            cost = 1.0 + (fbox_area(&acc) * (double)n +
+                          fbox_area(&right_box[k]) * (double)right_count[k]) /
+                             area;
+            if (cost < best->cost) {
+                best->cost = cost;
+                best->axis = a;
+                best->bin = k;
+                best->left = acc;
+                best->right = right_box[k];
+                best->left_count = n;
+            }
+        }
+    }
+}
+
+/* Moves the items going left to the front, keeping the centre bounds of
+ * each side; returns the boundary. */
+static size_t partition(builder *b, size_t begin, size_t end,
+                        const binning *g, const split *s, fbox *left_c,
+                        fbox *right_c)
+{
+    item *items = b->items;
     size_t i = begin, j = end;
+    int a = s->axis;
+    fbox_empty(left_c);
+    fbox_empty(right_c);
     while (i < j) {
-        if (bin_of(&s->along, &b->boxes[b->order[i]]) < s->bin) {
+        float c[3];
+        int k;
+        for (k = 0; k < 3; k++)
+            c[k] = items[i].lo[k] + items[i].hi[k];
+        if (bin_of(g, a, c[a]) < s->bin) {
+            fbox_grow(left_c, c, c);
             i++;
         } else {
-            uint32_t tmp = b->order[i];
-            b->order[i] = b->order[--j];
-            b->order[j] = tmp;
+            item tmp = items[i];
+            fbox_grow(right_c, c, c);
+            items[i] = items[--j];
+            items[j] = tmp;
         }
     }
     return i;
 }
 
-static void make_leaf(bvh_node *node, size_t begin, size_t end)
+/* Bounds and centre bounds of items [begin, end). */
+static void measure(const builder *b, size_t begin, size_t end, fbox *bounds,
+                    fbox *centres)
 {
-    node->first = (uint32_t)begin;
-    node->count = (uint32_t)(end - begin);
+    size_t i;
+    fbox_empty(bounds);
+    fbox_empty(centres);
+    for (i = begin; i < end; i++) {
+        const item *it = &b->items[i];
+        float c[3];
+        int a;
+        for (a = 0; a < 3; a++)
+            c[a] = it->lo[a] + it->hi[a];
+        fbox_grow(bounds, it->lo, it->hi);
+        fbox_grow(centres, c, c);
+    }
 }
 
-static void build_node(builder *b, size_t index, size_t begin, size_t end,
-                       unsigned depth)
+/* A new pair of nodes in t; its first index, or 0 when out of memory. */
+static size_t add_pair(task *t)
 {
-    bvh_node *node = &b->nodes[index];
-    rayo_box bounds, centres;
+    if (t->count + 2 > t->capacity) {
+        size_t capacity = 2 * t->capacity + 2;
+        bvh_node *grown = realloc(t->nodes, capacity * sizeof *grown);
+        if (grown == NULL)
+            return 0;
+        t->nodes = grown;
+        t->capacity = capacity;
+    }
+    t->count += 2;
+    return t->count - 2;
+}
+
+static void set_bounds(bvh_node *node, const fbox *bounds)
+{
+    memcpy(node->bounds[0], bounds->lo, sizeof bounds->lo);
+    memcpy(node->bounds[1], bounds->hi, sizeof bounds->hi);
+}
+
+static int spawn(builder *b, task *parent, size_t local, size_t begin,
+                 size_t end, unsigned depth, const fbox *bounds,
+                 const fbox *centres, uint32_t *number);
+static int record_spawn(task *t, uint32_t number, size_t slot);
+
+/* Builds the node t->nodes[local] over items [begin, end); 0 when out of
+ * memory. */
+static int build_node(builder *b, task *t, size_t local, size_t begin,
+                      size_t end, unsigned depth, const fbox *bounds,
+                      const fbox *centres)
+{
+    size_t count = end - begin, mid = begin + count / 2, first;
+    fbox lb, rb, lc, rc;
     split best;
-    size_t i, count = end - begin, mid = begin + count / 2;
-    int a;
-    box_empty(&bounds);
-    box_empty(&centres);
-    for (i = begin; i < end; i++) {
-        const rayo_box *box = &b->boxes[b->order[i]];
-        rayo_box c;
-        for (a = 0; a < 3; a++)
-            c.lo[a] = c.hi[a] = centre(box, a);
-        box_grow(&bounds, box);
-        box_grow(&centres, &c);
-    }
-    for (a = 0; a < 3; a++) {
-        node->bounds[0][a] = float_below(bounds.lo[a]);
-        node->bounds[1][a] = float_above(bounds.hi[a]);
-    }
-    if (count == 1) {
-        make_leaf(node, begin, end);
-        return;
-    }
-    best.along.axis = -1;
-    best.bin = 0;
+    set_bounds(&t->nodes[local], bounds);
+    t->nodes[local].first = (uint32_t)begin;
+    t->nodes[local].count = (uint32_t)count;
+    if (count == 1)
+        return 1;
+    best.axis = -1;
     best.cost = INFINITY;
     if (depth < BVH_SAH_DEPTH_LIMIT) {
-        double area = box_area(&bounds);
-        for (a = 0; a < 3; a++) {
-            double extent = centres.hi[a] - centres.lo[a];
-            if (extent > 0.0 && isfinite(extent) && area > 0.0) {
-                binning g = binning_make(a, centres.lo[a], extent, count);
-                try_axis(b, begin, end, &g, area, &best);
-            }
+        double area = fbox_area(bounds);
+        binning g;
+        binning_make(&g, centres, count);
+        if (g.axes > 0 && area > 0.0)
+            find_split(b, begin, end, &g, area, &best);
+        if (count <= MAX_LEAF && !(best.cost < (double)count))
+            return 1; /* a leaf */
+        if (best.axis >= 0) {
+            mid = partition(b, begin, end, &g, &best, &lc, &rc);
+            lb = best.left;
+            rb = best.right;
         }
+    } else if (count <= MAX_LEAF) {
+        return 1;
     }
-    if (count <= MAX_LEAF && !(best.cost < (double)count)) {
-        make_leaf(node, begin, end);
-        return;
+    if (best.axis < 0) {
+        measure(b, begin, mid, &lb, &lc);
+        measure(b, mid, end, &rb, &rc);
     }
-    if (best.along.axis >= 0) {
-        size_t m = partition(b, begin, end, &best);
-        if (m > begin && m < end)
-            mid = m;
+    first = add_pair(t);
+    if (first == 0)
+        return 0;
+    t->nodes[local].first = (uint32_t)first;
+    t->nodes[local].count = 0;
+    if (b->threads > 1 && end - mid >= SPAWN_MIN) {
+        uint32_t number;
+        if (!spawn(b, t, first + 1, mid, end, depth + 1, &rb, &rc, &number))
+            return 0;
+        if (!build_node(b, t, first, begin, mid, depth + 1, &lb, &lc))
+            return 0;
+        /* the serial build would start the right subtree here; spawns
+         * are recorded in this order, so by `at`, deeper ones first */
+        return record_spawn(t, number, first + 1);
     }
-    node->first = (uint32_t)b->node_count;
-    node->count = 0;
-    b->node_count += 2;
-    build_node(b, node->first, begin, mid, depth + 1);
-    build_node(b, b->nodes[index].first + 1, mid, end, depth + 1);
+    return build_node(b, t, first, begin, mid, depth + 1, &lb, &lc) &&
+           build_node(b, t, first + 1, mid, end, depth + 1, &rb, &rc);
 }
 
-rayo_status rayo_bvh_build(rayo_bvh **result, const rayo_box *boxes,
-                           const uint32_t *ids, size_t count,
-                           rayo_error *err)
+static task *task_new(size_t begin, size_t end, unsigned depth,
+                      const fbox *bounds, const fbox *centres)
+{
+    task *t = calloc(1, sizeof *t);
+    if (t == NULL)
+        return NULL;
+    t->begin = begin;
+    t->end = end;
+    t->depth = depth;
+    t->bounds = *bounds;
+    t->centres = *centres;
+    t->capacity = 64;
+    t->nodes = malloc(t->capacity * sizeof *t->nodes);
+    if (t->nodes == NULL) {
+        free(t);
+        return NULL;
+    }
+    t->count = 1;
+    return t;
+}
+
+static void task_free(task *t)
+{
+    if (t == NULL)
+        return;
+    free(t->nodes);
+    free(t->spawns);
+    free(t->map);
+    free(t);
+}
+
+/* Hands the subtree at parent->nodes[local] to any thread as task
+ * *number; 0 when out of memory.  The parent's node becomes a
+ * placeholder. */
+static int spawn(builder *b, task *parent, size_t local, size_t begin,
+                 size_t end, unsigned depth, const fbox *bounds,
+                 const fbox *centres, uint32_t *number)
+{
+    task *t = task_new(begin, end, depth, bounds, centres);
+    int good = 1;
+    if (t == NULL)
+        return 0;
+    pthread_mutex_lock(&b->lock);
+    if (b->task_count == b->task_capacity) {
+        size_t capacity = 2 * b->task_capacity;
+        task **grown = realloc(b->tasks, capacity * sizeof *grown);
+        uint32_t *pending = NULL;
+        if (grown != NULL) {
+            b->tasks = grown;
+            pending = realloc(b->pending, capacity * sizeof *pending);
+        }
+        if (pending != NULL) {
+            b->pending = pending;
+            b->task_capacity = capacity;
+        } else {
+            good = 0;
+        }
+    }
+    if (good) {
+        *number = (uint32_t)b->task_count++;
+        b->tasks[*number] = t;
+        b->pending[b->pending_count++] = *number;
+        pthread_cond_signal(&b->changed);
+    }
+    pthread_mutex_unlock(&b->lock);
+    if (!good) {
+        task_free(t);
+        return 0;
+    }
+    parent->nodes[local].first = *number;
+    parent->nodes[local].count = NODE_TASK;
+    return 1;
+}
+
+/* Notes that task number's nodes go before t's next node; 0 when out of
+ * memory. */
+static int record_spawn(task *t, uint32_t number, size_t slot)
+{
+    if (t->spawn_count == t->spawn_capacity) {
+        size_t capacity = 2 * t->spawn_capacity + 4;
+        struct spawn *grown = realloc(t->spawns, capacity * sizeof *grown);
+        if (grown == NULL)
+            return 0;
+        t->spawns = grown;
+        t->spawn_capacity = capacity;
+    }
+    t->spawns[t->spawn_count].task = number;
+    t->spawns[t->spawn_count].at = (uint32_t)t->count;
+    t->spawns[t->spawn_count].slot = (uint32_t)slot;
+    t->spawn_count++;
+    return 1;
+}
+
+/* Builds tasks until none is left or running. */
+static void *worker(void *argument)
+{
+    builder *b = argument;
+    pthread_mutex_lock(&b->lock);
+    for (;;) {
+        task *t;
+        int good;
+        while (b->pending_count == 0 && b->busy > 0)
+            pthread_cond_wait(&b->changed, &b->lock);
+        if (b->pending_count == 0)
+            break;
+        t = b->tasks[b->pending[--b->pending_count]];
+        b->busy++;
+        good = !b->failed;
+        pthread_mutex_unlock(&b->lock);
+        if (good)
+            good = build_node(b, t, 0, t->begin, t->end, t->depth,
+                              &t->bounds, &t->centres);
+        pthread_mutex_lock(&b->lock);
+        if (!good)
+            b->failed = 1;
+        b->busy--;
+        if (b->busy == 0 && b->pending_count == 0)
+            pthread_cond_broadcast(&b->changed);
+    }
+    pthread_mutex_unlock(&b->lock);
+    return NULL;
+}
+
+/* Gives each node of task t, and of the tasks it spawned, its place in
+ * the final array: t's root goes to root, the rest in t's order, each
+ * spawned subtree's nodes where the serial build would have made them.
+ * 0 when out of memory. */
+static int place(builder *b, task *t, uint32_t root, uint32_t *next)
+{
+    size_t j, s = 0;
+    t->map = malloc(t->count * sizeof *t->map);
+    if (t->map == NULL)
+        return 0;
+    t->map[0] = root;
+    for (j = 1; j <= t->count; j++) {
+        while (s < t->spawn_count && t->spawns[s].at == j) {
+            /* its placeholder, made before `at`, is already placed */
+            task *child = b->tasks[t->spawns[s].task];
+            if (!place(b, child, t->map[t->spawns[s].slot], next))
+                return 0;
+            s++;
+        }
+        if (j < t->count)
+            t->map[j] = (*next)++;
+    }
+    return 1;
+}
+
+/* Copies task t's nodes (and its spawned tasks') to their places. */
+static void stitch(builder *b, const task *t, bvh_node *out)
+{
+    size_t j;
+    for (j = 0; j < t->count; j++) {
+        bvh_node node = t->nodes[j];
+        if (node.count == NODE_TASK) {
+            stitch(b, b->tasks[node.first], out);
+            continue;
+        }
+        if (node.count == 0)
+            node.first = t->map[node.first];
+        out[t->map[j]] = node;
+    }
+}
+
+/* How many threads: the caller's wish, else one. */
+static unsigned thread_count(unsigned threads, size_t count)
+{
+    if (threads < 1)
+        threads = 1;
+    if (threads > 64)
+        threads = 64;
+    if (count < 2 * SPAWN_MIN)
+        threads = 1;
+    return threads;
+}
+
+static rayo_status build_all(builder *b, task *root, size_t count,
+                             rayo_bvh *bvh)
+{
+    pthread_t helpers[64];
+    unsigned started = 0, i;
+    uint32_t next = 1;
+    b->tasks[0] = root;
+    b->task_count = 1;
+    b->pending[0] = 0;
+    b->pending_count = 1;
+    for (i = 1; i < b->threads; i++) {
+        if (pthread_create(&helpers[started], NULL, worker, b) != 0)
+            break;
+        started++;
+    }
+    worker(b);
+    for (i = 0; i < started; i++)
+        pthread_join(helpers[i], NULL);
+    if (b->failed || !place(b, root, 0, &next))
+        return RAYO_ERR_NOMEM;
+    bvh->node_count = next;
+    bvh->nodes = malloc(next * sizeof *bvh->nodes);
+    if (bvh->nodes == NULL)
+        return RAYO_ERR_NOMEM;
+    stitch(b, root, bvh->nodes);
+    (void)count;
+    return RAYO_OK;
+}
+
+rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
+                                   const uint32_t *ids, size_t count,
+                                   unsigned threads, rayo_error *err)
 {
     rayo_bvh *bvh;
     builder b;
-    size_t i, max_nodes = count ? 2 * count - 1 : 0;
+    task *root = NULL;
+    fbox bounds, centres;
+    rayo_status status = RAYO_ERR_NOMEM;
+    size_t i;
     *result = NULL;
     if (count > UINT32_MAX / 2)
         return rayo_error_set(err, RAYO_ERR_LIMIT,
@@ -273,29 +620,67 @@ rayo_status rayo_bvh_build(rayo_bvh **result, const rayo_box *boxes,
         *result = bvh;
         return RAYO_OK;
     }
+    memset(&b, 0, sizeof b);
+    b.threads = thread_count(threads, count);
     /* count <= UINT32_MAX / 2, so these products fit in size_t only if
      * checked: */
-    if (max_nodes > SIZE_MAX / sizeof *bvh->nodes ||
+    if (count > SIZE_MAX / sizeof *b.items ||
         count > SIZE_MAX / sizeof *bvh->prims) {
         free(bvh);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     }
-    bvh->nodes = malloc(max_nodes * sizeof *bvh->nodes);
+    b.items = malloc(count * sizeof *b.items);
     bvh->prims = malloc(count * sizeof *bvh->prims);
-    if (bvh->nodes == NULL || bvh->prims == NULL) {
+    b.task_capacity = 64;
+    b.tasks = calloc(b.task_capacity, sizeof *b.tasks);
+    b.pending = malloc(b.task_capacity * sizeof *b.pending);
+    if (b.items != NULL && bvh->prims != NULL && b.tasks != NULL &&
+        b.pending != NULL && pthread_mutex_init(&b.lock, NULL) == 0) {
+        if (pthread_cond_init(&b.changed, NULL) == 0) {
+            fbox_empty(&bounds);
+            fbox_empty(&centres);
+            for (i = 0; i < count; i++) {
+                item *it = &b.items[i];
+                float c[3];
+                int a;
+                for (a = 0; a < 3; a++) {
+                    it->lo[a] = float_below(boxes[i].lo[a]);
+                    it->hi[a] = float_above(boxes[i].hi[a]);
+                    c[a] = it->lo[a] + it->hi[a];
+                }
+                it->index = (uint32_t)i;
+                it->unused = 0.0f;
+                fbox_grow(&bounds, it->lo, it->hi);
+                fbox_grow(&centres, c, c);
+            }
+            root = task_new(0, count, 0, &bounds, &centres);
+            if (root != NULL)
+                status = build_all(&b, root, count, bvh);
+            pthread_cond_destroy(&b.changed);
+        }
+        pthread_mutex_destroy(&b.lock);
+    }
+    if (status == RAYO_OK)
+        for (i = 0; i < count; i++)
+            bvh->prims[i] = ids[b.items[i].index];
+    if (b.task_count == 0)
+        task_free(root);
+    for (i = 0; i < b.task_count; i++)
+        task_free(b.tasks[i]);
+    free(b.tasks);
+    free(b.pending);
+    free(b.items);
+    if (status != RAYO_OK) {
         rayo_bvh_free(bvh);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     }
-    for (i = 0; i < count; i++)
-        bvh->prims[i] = (uint32_t)i;
-    b.boxes = boxes;
-    b.order = bvh->prims;
-    b.nodes = bvh->nodes;
-    b.node_count = 1;
-    build_node(&b, 0, 0, count, 0);
-    for (i = 0; i < count; i++)
-        bvh->prims[i] = ids[bvh->prims[i]];
-    bvh->node_count = b.node_count;
     *result = bvh;
     return RAYO_OK;
+}
+
+rayo_status rayo_bvh_build(rayo_bvh **result, const rayo_box *boxes,
+                           const uint32_t *ids, size_t count,
+                           rayo_error *err)
+{
+    return rayo_bvh_build_threads(result, boxes, ids, count, 1, err);
 }
