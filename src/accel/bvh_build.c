@@ -35,6 +35,7 @@
  * share is built by the others; with none, by the caller.
  */
 #include "bvh_impl.h"
+#include "bvh_vec4.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -48,16 +49,13 @@
 /* A placeholder node: its subtree is task number `first`. */
 #define NODE_TASK UINT32_MAX
 
-/* One primitive: its box as floats rounded outward, its number. */
+/* One primitive's box as floats rounded outward; lane 3 is 0. */
 typedef struct item {
-    float lo[3];
-    uint32_t index; /* into the caller's boxes and ids */
-    float hi[3];
-    float unused;
+    float lo[4], hi[4];
 } item;
 
 typedef struct fbox {
-    float lo[3], hi[3];
+    float lo[4], hi[4];
 } fbox;
 
 struct builder;
@@ -82,6 +80,7 @@ typedef struct task {
 
 typedef struct builder {
     item *items;
+    uint32_t *index;            /* each item's primitive, permuted along */
     unsigned threads;
     pthread_mutex_t lock;
     pthread_cond_t changed;
@@ -93,31 +92,12 @@ typedef struct builder {
     int failed;                 /* out of memory somewhere */
 } builder;
 
-static void fbox_empty(fbox *b)
-{
-    int a;
-    for (a = 0; a < 3; a++) {
-        b->lo[a] = INFINITY;
-        b->hi[a] = -INFINITY;
-    }
-}
+static vec4f v4_infinity(void) { return v4_set1(INFINITY); }
 
-/* Written as selections so that compilers make them min and max
- * instructions; a NaN in lo or hi changes nothing. */
-static void fbox_grow(fbox *b, const float *lo, const float *hi)
+static void fbox_set(fbox *b, vec4f lo, vec4f hi)
 {
-    int a;
-    for (a = 0; a < 3; a++) {
-        b->lo[a] = lo[a] < b->lo[a] ? lo[a] : b->lo[a];
-        b->hi[a] = hi[a] > b->hi[a] ? hi[a] : b->hi[a];
-    }
-}
-
-static double fbox_area(const fbox *b)
-{
-    double dx = (double)b->hi[0] - b->lo[0], dy = (double)b->hi[1] - b->lo[1],
-           dz = (double)b->hi[2] - b->lo[2];
-    return 2.0 * (dx * dy + dy * dz + dz * dx);
+    v4_store(b->lo, lo);
+    v4_store(b->hi, hi);
 }
 
 void rayo_box_pad(rayo_box *box)
@@ -151,113 +131,118 @@ static float float_above(double v)
 
 /* How one node's centres are sorted into bins along each axis. */
 typedef struct binning {
-    size_t count;      /* bins: BINS, or fewer for a node of few items */
-    float lo[3];       /* the lowest centre (lo + hi) */
-    float scale[3];    /* bins per unit; 0 on an axis not binned */
-    float top;         /* count - 1 */
-    int axes;          /* how many axes have a positive, finite extent */
+    size_t count; /* bins: BINS, or fewer for a node of few items */
+    vec4f lo;     /* the lowest centre (lo + hi) on each axis */
+    vec4f scale;  /* bins per unit; 0 on an axis not binned, and lane 3 */
+    vec4f top;    /* count - 1 */
+    int binned[3];
+    int axes;     /* how many axes have a positive, finite extent */
 } binning;
 
 static void binning_make(binning *g, const fbox *centres, size_t items)
 {
+    float scale[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     int a;
     g->count = items < BINS ? (items < 2 ? 2 : items) : BINS;
-    g->top = (float)(g->count - 1);
+    g->top = v4_set1((float)(g->count - 1));
+    g->lo = v4_load(centres->lo);
     g->axes = 0;
     for (a = 0; a < 3; a++) {
         float extent = centres->hi[a] - centres->lo[a];
-        g->lo[a] = centres->lo[a];
-        g->scale[a] = 0.0f;
+        g->binned[a] = 0;
         if (extent > 0.0f && isfinite(extent)) {
-            g->scale[a] = (float)g->count / extent;
-            if (isfinite(g->scale[a]) && g->scale[a] > 0.0f)
+            float f = (float)g->count / extent;
+            if (isfinite(f) && f > 0.0f) {
+                scale[a] = f;
+                g->binned[a] = 1;
                 g->axes++;
-            else
-                g->scale[a] = 0.0f;
+            }
         }
     }
+    g->scale = v4_load(scale);
 }
 
-/* The bin of a centre along axis a; a NaN goes to bin 0. */
-static size_t bin_of(const binning *g, int a, float centre)
+/* The bins of a centre on each axis: (c - lo) scale clamped to [0, top]
+ * (a NaN goes to 0), truncated. */
+static void bins_of(const binning *g, vec4f centre, int32_t k[4])
 {
-    float f = (centre - g->lo[a]) * g->scale[a];
-    f = f > 0.0f ? f : 0.0f;
-    f = f < g->top ? f : g->top;
-    return (size_t)f;
+    vec4f f = v4_mul(v4_sub(centre, g->lo), g->scale);
+    f = v4_max(f, v4_set1(0.0f));
+    f = v4_min(f, g->top);
+    v4_to_int(f, k);
 }
 
 typedef struct split {
     int axis;           /* < 0: no useful split found */
-    size_t bin;         /* items in bins < bin go left */
+    int32_t bin;        /* items in bins < bin go left */
     double cost;
     fbox left, right;   /* the children's bounds */
-    size_t left_count;
 } split;
 
-typedef struct bin {
-    fbox box;
-    size_t count;
-} bin;
-
 /* Bins a node's items along every binned axis at once and finds the
- * cheapest split; best->axis < 0 when there is none. */
+ * cheapest split; best->axis < 0 when there is none.  area: half the
+ * node's surface area. */
 static void find_split(const builder *b, size_t begin, size_t end,
                        const binning *g, double area, split *best)
 {
-    bin bins[3][BINS];
-    fbox right_box[BINS];
-    size_t right_count[BINS];
-    size_t i, k;
+    vec4f lo[3][BINS], hi[3][BINS], right_lo[BINS], right_hi[BINS];
+    size_t count[3][BINS], right_count[BINS];
+    float right_area[BINS];
+    vec4f inf = v4_infinity(), minus_inf = v4_set1(-INFINITY);
+    size_t i, k, bins = g->count;
     int a;
     best->axis = -1;
     best->bin = 0;
     best->cost = INFINITY;
     for (a = 0; a < 3; a++)
-        for (k = 0; k < g->count; k++) {
-            fbox_empty(&bins[a][k].box);
-            bins[a][k].count = 0;
+        for (k = 0; k < bins; k++) {
+            lo[a][k] = inf;
+            hi[a][k] = minus_inf;
+            count[a][k] = 0;
         }
     for (i = begin; i < end; i++) {
-        const item *it = &b->items[i];
+        vec4f l = v4_load(b->items[i].lo), h = v4_load(b->items[i].hi);
+        int32_t at[4];
+        bins_of(g, v4_add(l, h), at);
         for (a = 0; a < 3; a++) {
-            if (g->scale[a] > 0.0f) {
-                bin *x = &bins[a][bin_of(g, a, it->lo[a] + it->hi[a])];
-                fbox_grow(&x->box, it->lo, it->hi);
-                x->count++;
-            }
+            lo[a][at[a]] = v4_min(l, lo[a][at[a]]);
+            hi[a][at[a]] = v4_max(h, hi[a][at[a]]);
+            count[a][at[a]]++;
         }
     }
     for (a = 0; a < 3; a++) {
-        fbox acc;
+        vec4f acc_lo = inf, acc_hi = minus_inf;
         size_t n = 0;
-        if (!(g->scale[a] > 0.0f))
+        if (!g->binned[a])
             continue;
-        fbox_empty(&acc);
-        for (k = g->count; k-- > 1;) {
-            fbox_grow(&acc, bins[a][k].box.lo, bins[a][k].box.hi);
-            n += bins[a][k].count;
-            right_box[k] = acc;
+        for (k = bins; k-- > 1;) {
+            acc_lo = v4_min(lo[a][k], acc_lo);
+            acc_hi = v4_max(hi[a][k], acc_hi);
+            n += count[a][k];
+            right_lo[k] = acc_lo;
+            right_hi[k] = acc_hi;
+            right_area[k] = v4_half_area(acc_lo, acc_hi);
             right_count[k] = n;
         }
-        fbox_empty(&acc);
+        acc_lo = inf;
+        acc_hi = minus_inf;
         n = 0;
-        for (k = 1; k < g->count; k++) {
+        for (k = 1; k < bins; k++) {
             double cost;
-            fbox_grow(&acc, bins[a][k - 1].box.lo, bins[a][k - 1].box.hi);
-            n += bins[a][k - 1].count;
+            acc_lo = v4_min(lo[a][k - 1], acc_lo);
+            acc_hi = v4_max(hi[a][k - 1], acc_hi);
+            n += count[a][k - 1];
             if (n == 0 || right_count[k] == 0)
                 continue;
-            cost = 1.0 + (fbox_area(&acc) * (double)n +
-                          fbox_area(&right_box[k]) * (double)right_count[k]) /
+            cost = 1.0 + ((double)v4_half_area(acc_lo, acc_hi) * (double)n +
+                          (double)right_area[k] * (double)right_count[k]) /
                              area;
             if (cost < best->cost) {
                 best->cost = cost;
                 best->axis = a;
-                best->bin = k;
-                best->left = acc;
-                best->right = right_box[k];
-                best->left_count = n;
+                best->bin = (int32_t)k;
+                fbox_set(&best->left, acc_lo, acc_hi);
+                fbox_set(&best->right, right_lo[k], right_hi[k]);
             }
         }
     }
@@ -270,25 +255,32 @@ static size_t partition(builder *b, size_t begin, size_t end,
                         fbox *right_c)
 {
     item *items = b->items;
+    uint32_t *index = b->index;
+    vec4f inf = v4_infinity(), minus_inf = v4_set1(-INFINITY);
+    vec4f l_lo = inf, l_hi = minus_inf, r_lo = inf, r_hi = minus_inf;
     size_t i = begin, j = end;
     int a = s->axis;
-    fbox_empty(left_c);
-    fbox_empty(right_c);
     while (i < j) {
-        float c[3];
-        int k;
-        for (k = 0; k < 3; k++)
-            c[k] = items[i].lo[k] + items[i].hi[k];
-        if (bin_of(g, a, c[a]) < s->bin) {
-            fbox_grow(left_c, c, c);
+        vec4f c = v4_add(v4_load(items[i].lo), v4_load(items[i].hi));
+        int32_t at[4];
+        bins_of(g, c, at);
+        if (at[a] < s->bin) {
+            l_lo = v4_min(c, l_lo);
+            l_hi = v4_max(c, l_hi);
             i++;
         } else {
             item tmp = items[i];
-            fbox_grow(right_c, c, c);
+            uint32_t t = index[i];
+            r_lo = v4_min(c, r_lo);
+            r_hi = v4_max(c, r_hi);
             items[i] = items[--j];
             items[j] = tmp;
+            index[i] = index[j];
+            index[j] = t;
         }
     }
+    fbox_set(left_c, l_lo, l_hi);
+    fbox_set(right_c, r_lo, r_hi);
     return i;
 }
 
@@ -296,18 +288,19 @@ static size_t partition(builder *b, size_t begin, size_t end,
 static void measure(const builder *b, size_t begin, size_t end, fbox *bounds,
                     fbox *centres)
 {
+    vec4f inf = v4_infinity(), minus_inf = v4_set1(-INFINITY);
+    vec4f b_lo = inf, b_hi = minus_inf, c_lo = inf, c_hi = minus_inf;
     size_t i;
-    fbox_empty(bounds);
-    fbox_empty(centres);
     for (i = begin; i < end; i++) {
-        const item *it = &b->items[i];
-        float c[3];
-        int a;
-        for (a = 0; a < 3; a++)
-            c[a] = it->lo[a] + it->hi[a];
-        fbox_grow(bounds, it->lo, it->hi);
-        fbox_grow(centres, c, c);
+        vec4f l = v4_load(b->items[i].lo), h = v4_load(b->items[i].hi);
+        vec4f c = v4_add(l, h);
+        b_lo = v4_min(l, b_lo);
+        b_hi = v4_max(h, b_hi);
+        c_lo = v4_min(c, c_lo);
+        c_hi = v4_max(c, c_hi);
     }
+    fbox_set(bounds, b_lo, b_hi);
+    fbox_set(centres, c_lo, c_hi);
 }
 
 /* A new pair of nodes in t; its first index, or 0 when out of memory. */
@@ -353,7 +346,7 @@ static int build_node(builder *b, task *t, size_t local, size_t begin,
     best.axis = -1;
     best.cost = INFINITY;
     if (depth < BVH_SAH_DEPTH_LIMIT) {
-        double area = fbox_area(bounds);
+        double area = v4_half_area(v4_load(bounds->lo), v4_load(bounds->hi));
         binning g;
         binning_make(&g, centres, count);
         if (g.axes > 0 && area > 0.0)
@@ -637,22 +630,18 @@ rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
     if (b.items != NULL && bvh->prims != NULL && b.tasks != NULL &&
         b.pending != NULL && pthread_mutex_init(&b.lock, NULL) == 0) {
         if (pthread_cond_init(&b.changed, NULL) == 0) {
-            fbox_empty(&bounds);
-            fbox_empty(&centres);
+            b.index = bvh->prims;
             for (i = 0; i < count; i++) {
                 item *it = &b.items[i];
-                float c[3];
                 int a;
                 for (a = 0; a < 3; a++) {
                     it->lo[a] = float_below(boxes[i].lo[a]);
                     it->hi[a] = float_above(boxes[i].hi[a]);
-                    c[a] = it->lo[a] + it->hi[a];
                 }
-                it->index = (uint32_t)i;
-                it->unused = 0.0f;
-                fbox_grow(&bounds, it->lo, it->hi);
-                fbox_grow(&centres, c, c);
+                it->lo[3] = it->hi[3] = 0.0f;
+                b.index[i] = (uint32_t)i;
             }
+            measure(&b, 0, count, &bounds, &centres);
             root = task_new(0, count, 0, &bounds, &centres);
             if (root != NULL)
                 status = build_all(&b, root, count, bvh);
@@ -662,7 +651,7 @@ rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
     }
     if (status == RAYO_OK)
         for (i = 0; i < count; i++)
-            bvh->prims[i] = ids[b.items[i].index];
+            bvh->prims[i] = ids[bvh->prims[i]];
     if (b.task_count == 0)
         task_free(root);
     for (i = 0; i < b.task_count; i++)
