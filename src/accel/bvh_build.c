@@ -60,11 +60,17 @@ typedef struct fbox {
 
 struct builder;
 
+/* A node to build: its items, where they are, its bounds. */
+typedef struct span {
+    size_t begin, end;
+    unsigned depth;
+    int side;           /* the item array holding them (builder) */
+    fbox bounds, centres;
+} span;
+
 /* A subtree built by one thread into its own node array. */
 typedef struct task {
-    size_t begin, end;  /* its items */
-    unsigned depth;     /* of its root */
-    fbox bounds, centres;
+    span root;
     bvh_node *nodes;    /* nodes[0] is the root; pairs from 1 */
     size_t count, capacity;
     /* subtrees handed to other tasks: which, and before which of this
@@ -78,9 +84,12 @@ typedef struct task {
     uint32_t *map; /* stitching: each node's place in the final array */
 } task;
 
+/* Items move between two arrays: a partition reads a node's items from
+ * one and writes its children's, in the same places, to the other. */
 typedef struct builder {
-    item *items;
-    uint32_t *index;            /* each item's primitive, permuted along */
+    item *items[2];
+    uint32_t *index[2];         /* each item's primitive, moved along */
+    uint32_t *prims;            /* leaves' primitives, in leaf order */
     unsigned threads;
     pthread_mutex_t lock;
     pthread_cond_t changed;
@@ -177,14 +186,16 @@ typedef struct split {
     int32_t bin;        /* items in bins < bin go left */
     double cost;
     fbox left, right;   /* the children's bounds */
+    size_t left_count;
 } split;
 
 /* Bins a node's items along every binned axis at once and finds the
  * cheapest split; best->axis < 0 when there is none.  area: half the
  * node's surface area. */
-static void find_split(const builder *b, size_t begin, size_t end,
-                       const binning *g, double area, split *best)
+static void find_split(const builder *b, const span *r, const binning *g,
+                       double area, split *best)
 {
+    const item *items = b->items[r->side];
     vec4f lo[3][BINS], hi[3][BINS], right_lo[BINS], right_hi[BINS];
     size_t count[3][BINS], right_count[BINS];
     float right_area[BINS];
@@ -200,8 +211,8 @@ static void find_split(const builder *b, size_t begin, size_t end,
             hi[a][k] = minus_inf;
             count[a][k] = 0;
         }
-    for (i = begin; i < end; i++) {
-        vec4f l = v4_load(b->items[i].lo), h = v4_load(b->items[i].hi);
+    for (i = r->begin; i < r->end; i++) {
+        vec4f l = v4_load(items[i].lo), h = v4_load(items[i].hi);
         int32_t at[4];
         bins_of(g, v4_add(l, h), at);
         for (a = 0; a < 3; a++) {
@@ -241,6 +252,7 @@ static void find_split(const builder *b, size_t begin, size_t end,
                 best->cost = cost;
                 best->axis = a;
                 best->bin = (int32_t)k;
+                best->left_count = n;
                 fbox_set(&best->left, acc_lo, acc_hi);
                 fbox_set(&best->right, right_lo[k], right_hi[k]);
             }
@@ -248,51 +260,54 @@ static void find_split(const builder *b, size_t begin, size_t end,
     }
 }
 
-/* Moves the items going left to the front, keeping the centre bounds of
- * each side; returns the boundary. */
-static size_t partition(builder *b, size_t begin, size_t end,
-                        const binning *g, const split *s, fbox *left_c,
-                        fbox *right_c)
+/* Writes the items going left, then the others, to the other item array
+ * (in their order: the partition is stable), keeping the centre bounds
+ * of each side; returns the boundary.  No branch on the side: which way
+ * an item goes is as good as random to a branch predictor. */
+static size_t partition(builder *b, const span *r, const binning *g,
+                        const split *s, fbox *left_c, fbox *right_c)
 {
-    item *items = b->items;
-    uint32_t *index = b->index;
-    vec4f inf = v4_infinity(), minus_inf = v4_set1(-INFINITY);
-    vec4f l_lo = inf, l_hi = minus_inf, r_lo = inf, r_hi = minus_inf;
-    size_t i = begin, j = end;
+    const item *from = b->items[r->side];
+    item *to = b->items[!r->side];
+    const uint32_t *from_index = b->index[r->side];
+    uint32_t *to_index = b->index[!r->side];
+    vec4f lo[2], hi[2];
+    size_t next[2], i;
     int a = s->axis;
-    while (i < j) {
-        vec4f c = v4_add(v4_load(items[i].lo), v4_load(items[i].hi));
+    lo[0] = lo[1] = v4_infinity();
+    hi[0] = hi[1] = v4_set1(-INFINITY);
+    next[0] = r->begin + s->left_count; /* [0]: right, [1]: left */
+    next[1] = r->begin;
+    for (i = r->begin; i < r->end; i++) {
+        vec4f l = v4_load(from[i].lo), h = v4_load(from[i].hi);
+        vec4f c = v4_add(l, h);
         int32_t at[4];
+        int left;
+        size_t d;
         bins_of(g, c, at);
-        if (at[a] < s->bin) {
-            l_lo = v4_min(c, l_lo);
-            l_hi = v4_max(c, l_hi);
-            i++;
-        } else {
-            item tmp = items[i];
-            uint32_t t = index[i];
-            r_lo = v4_min(c, r_lo);
-            r_hi = v4_max(c, r_hi);
-            items[i] = items[--j];
-            items[j] = tmp;
-            index[i] = index[j];
-            index[j] = t;
-        }
+        left = at[a] < s->bin;
+        d = next[left]++;
+        v4_store(to[d].lo, l);
+        v4_store(to[d].hi, h);
+        to_index[d] = from_index[i];
+        lo[left] = v4_min(c, lo[left]);
+        hi[left] = v4_max(c, hi[left]);
     }
-    fbox_set(left_c, l_lo, l_hi);
-    fbox_set(right_c, r_lo, r_hi);
-    return i;
+    fbox_set(left_c, lo[1], hi[1]);
+    fbox_set(right_c, lo[0], hi[0]);
+    return r->begin + s->left_count;
 }
 
 /* Bounds and centre bounds of items [begin, end). */
-static void measure(const builder *b, size_t begin, size_t end, fbox *bounds,
-                    fbox *centres)
+static void measure(const builder *b, int side, size_t begin, size_t end,
+                    fbox *bounds, fbox *centres)
 {
+    const item *items = b->items[side];
     vec4f inf = v4_infinity(), minus_inf = v4_set1(-INFINITY);
     vec4f b_lo = inf, b_hi = minus_inf, c_lo = inf, c_hi = minus_inf;
     size_t i;
     for (i = begin; i < end; i++) {
-        vec4f l = v4_load(b->items[i].lo), h = v4_load(b->items[i].hi);
+        vec4f l = v4_load(items[i].lo), h = v4_load(items[i].hi);
         vec4f c = v4_add(l, h);
         b_lo = v4_min(l, b_lo);
         b_hi = v4_max(h, b_hi);
@@ -324,77 +339,87 @@ static void set_bounds(bvh_node *node, const fbox *bounds)
     memcpy(node->bounds[1], bounds->hi, sizeof bounds->hi);
 }
 
-static int spawn(builder *b, task *parent, size_t local, size_t begin,
-                 size_t end, unsigned depth, const fbox *bounds,
-                 const fbox *centres, uint32_t *number);
+static int spawn(builder *b, task *parent, size_t local, const span *r,
+                 uint32_t *number);
 static int record_spawn(task *t, uint32_t number, size_t slot);
 
-/* Builds the node t->nodes[local] over items [begin, end); 0 when out of
- * memory. */
-static int build_node(builder *b, task *t, size_t local, size_t begin,
-                      size_t end, unsigned depth, const fbox *bounds,
-                      const fbox *centres)
+/* A leaf over r's items: their primitives to their final places. */
+static int make_leaf(builder *b, task *t, size_t local, const span *r)
 {
-    size_t count = end - begin, mid = begin + count / 2, first;
-    fbox lb, rb, lc, rc;
+    t->nodes[local].first = (uint32_t)r->begin;
+    t->nodes[local].count = (uint32_t)(r->end - r->begin);
+    if (r->side != 0)
+        memcpy(b->prims + r->begin, b->index[r->side] + r->begin,
+               (r->end - r->begin) * sizeof *b->prims);
+    return 1;
+}
+
+/* Builds the node t->nodes[local] over r; 0 when out of memory. */
+static int build_node(builder *b, task *t, size_t local, const span *r)
+{
+    size_t count = r->end - r->begin, first;
+    span left, right;
     split best;
-    set_bounds(&t->nodes[local], bounds);
-    t->nodes[local].first = (uint32_t)begin;
-    t->nodes[local].count = (uint32_t)count;
+    set_bounds(&t->nodes[local], &r->bounds);
     if (count == 1)
-        return 1;
+        return make_leaf(b, t, local, r);
     best.axis = -1;
     best.cost = INFINITY;
-    if (depth < BVH_SAH_DEPTH_LIMIT) {
-        double area = v4_half_area(v4_load(bounds->lo), v4_load(bounds->hi));
+    left.begin = r->begin;
+    left.end = right.begin = r->begin + count / 2;
+    right.end = r->end;
+    left.depth = right.depth = r->depth + 1;
+    left.side = right.side = r->side;
+    if (r->depth < BVH_SAH_DEPTH_LIMIT) {
+        double area =
+            v4_half_area(v4_load(r->bounds.lo), v4_load(r->bounds.hi));
         binning g;
-        binning_make(&g, centres, count);
+        binning_make(&g, &r->centres, count);
         if (g.axes > 0 && area > 0.0)
-            find_split(b, begin, end, &g, area, &best);
+            find_split(b, r, &g, area, &best);
         if (count <= MAX_LEAF && !(best.cost < (double)count))
-            return 1; /* a leaf */
+            return make_leaf(b, t, local, r);
         if (best.axis >= 0) {
-            mid = partition(b, begin, end, &g, &best, &lc, &rc);
-            lb = best.left;
-            rb = best.right;
+            left.end = right.begin =
+                partition(b, r, &g, &best, &left.centres, &right.centres);
+            left.side = right.side = !r->side;
+            left.bounds = best.left;
+            right.bounds = best.right;
         }
     } else if (count <= MAX_LEAF) {
-        return 1;
+        return make_leaf(b, t, local, r);
     }
-    if (best.axis < 0) {
-        measure(b, begin, mid, &lb, &lc);
-        measure(b, mid, end, &rb, &rc);
+    if (best.axis < 0) { /* halves, in place */
+        measure(b, r->side, left.begin, left.end, &left.bounds,
+                &left.centres);
+        measure(b, r->side, right.begin, right.end, &right.bounds,
+                &right.centres);
     }
     first = add_pair(t);
     if (first == 0)
         return 0;
     t->nodes[local].first = (uint32_t)first;
     t->nodes[local].count = 0;
-    if (b->threads > 1 && end - mid >= SPAWN_MIN) {
+    if (b->threads > 1 && right.end - right.begin >= SPAWN_MIN) {
         uint32_t number;
-        if (!spawn(b, t, first + 1, mid, end, depth + 1, &rb, &rc, &number))
+        if (!spawn(b, t, first + 1, &right, &number))
             return 0;
-        if (!build_node(b, t, first, begin, mid, depth + 1, &lb, &lc))
+        if (!build_node(b, t, first, &left))
             return 0;
         /* the serial build would start the right subtree here; spawns
          * are recorded in this order, so by `at`, deeper ones first */
         return record_spawn(t, number, first + 1);
     }
-    return build_node(b, t, first, begin, mid, depth + 1, &lb, &lc) &&
-           build_node(b, t, first + 1, mid, end, depth + 1, &rb, &rc);
+    return build_node(b, t, first, &left) &&
+           build_node(b, t, first + 1, &right);
 }
 
-static task *task_new(size_t begin, size_t end, unsigned depth,
-                      const fbox *bounds, const fbox *centres)
+static task *task_new(const span *r)
 {
     task *t = calloc(1, sizeof *t);
     if (t == NULL)
         return NULL;
-    t->begin = begin;
-    t->end = end;
-    t->depth = depth;
-    t->bounds = *bounds;
-    t->centres = *centres;
+    t->root = *r;
     t->capacity = 64;
     t->nodes = malloc(t->capacity * sizeof *t->nodes);
     if (t->nodes == NULL) {
@@ -418,11 +443,10 @@ static void task_free(task *t)
 /* Hands the subtree at parent->nodes[local] to any thread as task
  * *number; 0 when out of memory.  The parent's node becomes a
  * placeholder. */
-static int spawn(builder *b, task *parent, size_t local, size_t begin,
-                 size_t end, unsigned depth, const fbox *bounds,
-                 const fbox *centres, uint32_t *number)
+static int spawn(builder *b, task *parent, size_t local, const span *r,
+                 uint32_t *number)
 {
-    task *t = task_new(begin, end, depth, bounds, centres);
+    task *t = task_new(r);
     int good = 1;
     if (t == NULL)
         return 0;
@@ -494,8 +518,7 @@ static void *worker(void *argument)
         good = !b->failed;
         pthread_mutex_unlock(&b->lock);
         if (good)
-            good = build_node(b, t, 0, t->begin, t->end, t->depth,
-                              &t->bounds, &t->centres);
+            good = build_node(b, t, 0, &t->root);
         pthread_mutex_lock(&b->lock);
         if (!good)
             b->failed = 1;
@@ -560,8 +583,7 @@ static unsigned thread_count(unsigned threads, size_t count)
     return threads;
 }
 
-static rayo_status build_all(builder *b, task *root, size_t count,
-                             rayo_bvh *bvh)
+static rayo_status build_all(builder *b, task *root, rayo_bvh *bvh)
 {
     pthread_t helpers[64];
     unsigned started = 0, i;
@@ -585,7 +607,6 @@ static rayo_status build_all(builder *b, task *root, size_t count,
     if (bvh->nodes == NULL)
         return RAYO_ERR_NOMEM;
     stitch(b, root, bvh->nodes);
-    (void)count;
     return RAYO_OK;
 }
 
@@ -596,7 +617,7 @@ rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
     rayo_bvh *bvh;
     builder b;
     task *root = NULL;
-    fbox bounds, centres;
+    span all;
     rayo_status status = RAYO_ERR_NOMEM;
     size_t i;
     *result = NULL;
@@ -617,34 +638,40 @@ rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
     b.threads = thread_count(threads, count);
     /* count <= UINT32_MAX / 2, so these products fit in size_t only if
      * checked: */
-    if (count > SIZE_MAX / sizeof *b.items ||
+    if (count > SIZE_MAX / sizeof *b.items[0] ||
         count > SIZE_MAX / sizeof *bvh->prims) {
         free(bvh);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     }
-    b.items = malloc(count * sizeof *b.items);
-    bvh->prims = malloc(count * sizeof *bvh->prims);
+    b.items[0] = malloc(count * sizeof *b.items[0]);
+    b.items[1] = malloc(count * sizeof *b.items[1]);
+    b.index[1] = malloc(count * sizeof *b.index[1]);
+    b.prims = b.index[0] = bvh->prims = malloc(count * sizeof *bvh->prims);
     b.task_capacity = 64;
     b.tasks = calloc(b.task_capacity, sizeof *b.tasks);
     b.pending = malloc(b.task_capacity * sizeof *b.pending);
-    if (b.items != NULL && bvh->prims != NULL && b.tasks != NULL &&
-        b.pending != NULL && pthread_mutex_init(&b.lock, NULL) == 0) {
+    if (b.items[0] != NULL && b.items[1] != NULL && b.index[1] != NULL &&
+        bvh->prims != NULL && b.tasks != NULL && b.pending != NULL &&
+        pthread_mutex_init(&b.lock, NULL) == 0) {
         if (pthread_cond_init(&b.changed, NULL) == 0) {
-            b.index = bvh->prims;
             for (i = 0; i < count; i++) {
-                item *it = &b.items[i];
+                item *it = &b.items[0][i];
                 int a;
                 for (a = 0; a < 3; a++) {
                     it->lo[a] = float_below(boxes[i].lo[a]);
                     it->hi[a] = float_above(boxes[i].hi[a]);
                 }
                 it->lo[3] = it->hi[3] = 0.0f;
-                b.index[i] = (uint32_t)i;
+                b.index[0][i] = (uint32_t)i;
             }
-            measure(&b, 0, count, &bounds, &centres);
-            root = task_new(0, count, 0, &bounds, &centres);
+            all.begin = 0;
+            all.end = count;
+            all.depth = 0;
+            all.side = 0;
+            measure(&b, 0, 0, count, &all.bounds, &all.centres);
+            root = task_new(&all);
             if (root != NULL)
-                status = build_all(&b, root, count, bvh);
+                status = build_all(&b, root, bvh);
             pthread_cond_destroy(&b.changed);
         }
         pthread_mutex_destroy(&b.lock);
@@ -658,7 +685,9 @@ rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
         task_free(b.tasks[i]);
     free(b.tasks);
     free(b.pending);
-    free(b.items);
+    free(b.items[0]);
+    free(b.items[1]);
+    free(b.index[1]);
     if (status != RAYO_OK) {
         rayo_bvh_free(bvh);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
