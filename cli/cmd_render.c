@@ -467,7 +467,9 @@ int cli_render(int argc, char **argv)
     rayo_error_clear(&err);
     exit_status = parse_request(argc, argv, req);
     if (exit_status == CLI_EXIT_OK && req->scene_path != NULL &&
-        rayo_scene_file_load(&req->file, req->scene_path, &err) != RAYO_OK)
+        rayo_scene_file_load_threads(&req->file, req->scene_path,
+                                     (unsigned)req->threads,
+                                     &err) != RAYO_OK)
         exit_status = cli_unreadable(&err);
     if (exit_status == CLI_EXIT_OK)
         exit_status = choose_format(req, &write_options.format);

@@ -833,6 +833,14 @@ rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
                                   const char *text, size_t length,
                                   rayo_error *err)
 {
+    return rayo_scene_file_parse_threads(file, name, text, length, 0, err);
+}
+
+rayo_status rayo_scene_file_parse_threads(rayo_scene_file *file,
+                                          const char *name, const char *text,
+                                          size_t length, unsigned threads,
+                                          rayo_error *err)
+{
     parser p;
     rayo_status status;
     file_defaults(file);
@@ -843,7 +851,7 @@ rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
     if (status == RAYO_OK)
         status = parse_all(&p);
     if (status == RAYO_OK)
-        status = rayo_scene_prepare(file->scene, err);
+        status = rayo_scene_prepare_threads(file->scene, threads, err);
     free(p.names);
     free(p.slots);
     if (status != RAYO_OK)
