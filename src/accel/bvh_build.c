@@ -90,6 +90,8 @@ typedef struct builder {
     item *items[2];
     uint32_t *index[2];         /* each item's primitive, moved along */
     uint32_t *prims;            /* leaves' primitives, in leaf order */
+    rayo_bvh_box_fn box;        /* where the boxes come from */
+    const void *box_context;
     unsigned threads;
     pthread_mutex_t lock;
     pthread_cond_t changed;
@@ -420,7 +422,9 @@ static task *task_new(const span *r)
     if (t == NULL)
         return NULL;
     t->root = *r;
-    t->capacity = 64;
+    /* room for the whole subtree (2n - 1 nodes): pages the task does not
+     * reach are never touched, and the array never moves */
+    t->capacity = 2 * (r->end - r->begin);
     t->nodes = malloc(t->capacity * sizeof *t->nodes);
     if (t->nodes == NULL) {
         free(t);
@@ -600,7 +604,16 @@ static rayo_status build_all(builder *b, task *root, rayo_bvh *bvh)
     worker(b);
     for (i = 0; i < started; i++)
         pthread_join(helpers[i], NULL);
-    if (b->failed || !place(b, root, 0, &next))
+    if (b->failed)
+        return RAYO_ERR_NOMEM;
+    if (b->task_count == 1) { /* one task: its nodes are in final order */
+        bvh_node *shrunk = realloc(root->nodes, root->count * sizeof *shrunk);
+        bvh->nodes = shrunk ? shrunk : root->nodes;
+        bvh->node_count = root->count;
+        root->nodes = NULL;
+        return RAYO_OK;
+    }
+    if (!place(b, root, 0, &next))
         return RAYO_ERR_NOMEM;
     bvh->node_count = next;
     bvh->nodes = malloc(next * sizeof *bvh->nodes);
@@ -610,9 +623,72 @@ static rayo_status build_all(builder *b, task *root, rayo_bvh *bvh)
     return RAYO_OK;
 }
 
-rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
-                                   const uint32_t *ids, size_t count,
-                                   unsigned threads, rayo_error *err)
+/* One thread's share of turning boxes into items. */
+typedef struct convert_job {
+    builder *b;
+    size_t begin, end;
+    fbox bounds, centres; /* of its items */
+    pthread_t thread;
+} convert_job;
+
+static void *convert(void *argument)
+{
+    convert_job *job = argument;
+    builder *b = job->b;
+    size_t i;
+    for (i = job->begin; i < job->end; i++) {
+        item *it = &b->items[0][i];
+        rayo_box box;
+        int a;
+        b->box(b->box_context, i, &box);
+        for (a = 0; a < 3; a++) {
+            it->lo[a] = float_below(box.lo[a]);
+            it->hi[a] = float_above(box.hi[a]);
+        }
+        it->lo[3] = it->hi[3] = 0.0f;
+        b->index[0][i] = (uint32_t)i;
+    }
+    measure(b, 0, job->begin, job->end, &job->bounds, &job->centres);
+    return NULL;
+}
+
+/* Fills the items on up to b->threads threads and finds their bounds
+ * (unions are exact, so in any order the same). */
+static void convert_all(builder *b, size_t count, fbox *bounds, fbox *centres)
+{
+    convert_job jobs[64];
+    unsigned n = b->threads, i, started;
+    vec4f lo[2], hi[2];
+    for (i = 0; i < n; i++) {
+        jobs[i].b = b;
+        jobs[i].begin = count * i / n;
+        jobs[i].end = count * (i + 1) / n;
+    }
+    for (started = 1; started < n; started++)
+        if (pthread_create(&jobs[started].thread, NULL, convert,
+                           &jobs[started]) != 0)
+            break;
+    for (i = started; i < n; i++) /* threads that did not start */
+        convert(&jobs[i]);
+    convert(&jobs[0]);
+    for (i = 1; i < started; i++)
+        pthread_join(jobs[i].thread, NULL);
+    lo[0] = lo[1] = v4_infinity();
+    hi[0] = hi[1] = v4_set1(-INFINITY);
+    for (i = 0; i < n; i++) {
+        lo[0] = v4_min(v4_load(jobs[i].bounds.lo), lo[0]);
+        hi[0] = v4_max(v4_load(jobs[i].bounds.hi), hi[0]);
+        lo[1] = v4_min(v4_load(jobs[i].centres.lo), lo[1]);
+        hi[1] = v4_max(v4_load(jobs[i].centres.hi), hi[1]);
+    }
+    fbox_set(bounds, lo[0], hi[0]);
+    fbox_set(centres, lo[1], hi[1]);
+}
+
+rayo_status rayo_bvh_build_from(rayo_bvh **result, rayo_bvh_box_fn box,
+                                const void *context, const uint32_t *ids,
+                                size_t count, unsigned threads,
+                                rayo_error *err)
 {
     rayo_bvh *bvh;
     builder b;
@@ -636,10 +712,11 @@ rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
     }
     memset(&b, 0, sizeof b);
     b.threads = thread_count(threads, count);
+    b.box = box;
+    b.box_context = context;
     /* count <= UINT32_MAX / 2, so these products fit in size_t only if
      * checked: */
-    if (count > SIZE_MAX / sizeof *b.items[0] ||
-        count > SIZE_MAX / sizeof *bvh->prims) {
+    if (count > SIZE_MAX / 2 / sizeof *b.items[0]) {
         free(bvh);
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     }
@@ -654,21 +731,11 @@ rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
         bvh->prims != NULL && b.tasks != NULL && b.pending != NULL &&
         pthread_mutex_init(&b.lock, NULL) == 0) {
         if (pthread_cond_init(&b.changed, NULL) == 0) {
-            for (i = 0; i < count; i++) {
-                item *it = &b.items[0][i];
-                int a;
-                for (a = 0; a < 3; a++) {
-                    it->lo[a] = float_below(boxes[i].lo[a]);
-                    it->hi[a] = float_above(boxes[i].hi[a]);
-                }
-                it->lo[3] = it->hi[3] = 0.0f;
-                b.index[0][i] = (uint32_t)i;
-            }
             all.begin = 0;
             all.end = count;
             all.depth = 0;
             all.side = 0;
-            measure(&b, 0, 0, count, &all.bounds, &all.centres);
+            convert_all(&b, count, &all.bounds, &all.centres);
             root = task_new(&all);
             if (root != NULL)
                 status = build_all(&b, root, bvh);
@@ -694,6 +761,19 @@ rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
     }
     *result = bvh;
     return RAYO_OK;
+}
+
+static void box_from_array(const void *context, size_t i, rayo_box *box)
+{
+    *box = ((const rayo_box *)context)[i];
+}
+
+rayo_status rayo_bvh_build_threads(rayo_bvh **result, const rayo_box *boxes,
+                                   const uint32_t *ids, size_t count,
+                                   unsigned threads, rayo_error *err)
+{
+    return rayo_bvh_build_from(result, box_from_array, boxes, ids, count,
+                               threads, err);
 }
 
 rayo_status rayo_bvh_build(rayo_bvh **result, const rayo_box *boxes,

@@ -43,11 +43,21 @@ static rayo_box triangle_box(const rayo_triangle *t)
     return box;
 }
 
+/* The box of the hierarchy's primitive i: spheres, then triangles. */
+static void object_box(const void *context, size_t i, rayo_box *box)
+{
+    const rayo_scene *scene = context;
+    if (i < scene->sphere_count)
+        *box = sphere_box(&scene->spheres[i].shape);
+    else
+        *box = triangle_box(
+            &scene->triangles[i - scene->sphere_count].shape);
+}
+
 rayo_status rayo_scene_prepare_threads(rayo_scene *scene, unsigned threads,
                                        rayo_error *err)
 {
     size_t n = scene->sphere_count + scene->triangle_count, k = 0, i;
-    rayo_box *boxes;
     uint32_t *ids;
     rayo_bvh *bvh;
     rayo_status status;
@@ -58,27 +68,17 @@ rayo_status rayo_scene_prepare_threads(rayo_scene *scene, unsigned threads,
         scene->prepared = 1;
         return RAYO_OK;
     }
-    if (n > SIZE_MAX / sizeof *boxes)
+    if (n > SIZE_MAX / sizeof *ids)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
-    boxes = malloc(n ? n * sizeof *boxes : 1);
-    ids = malloc(n ? n * sizeof *ids : 1);
-    if (boxes == NULL || ids == NULL) {
-        free(boxes);
-        free(ids);
+    ids = malloc(n * sizeof *ids);
+    if (ids == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
-    }
-    for (i = 0; i < scene->sphere_count; i++, k++) {
-        boxes[k] = sphere_box(&scene->spheres[i].shape);
+    for (i = 0; i < scene->sphere_count; i++, k++)
         ids[k] = scene->spheres[i].object;
-    }
-    for (i = 0; i < scene->triangle_count; i++, k++) {
-        boxes[k] = triangle_box(&scene->triangles[i].shape);
+    for (i = 0; i < scene->triangle_count; i++, k++)
         ids[k] = scene->triangles[i].object;
-    }
-    status = rayo_bvh_build_threads(&bvh, boxes, ids, n,
-                                    threads ? threads : rayo_cpu_count(),
-                                    err);
-    free(boxes);
+    status = rayo_bvh_build_from(&bvh, object_box, scene, ids, n,
+                                 threads ? threads : rayo_cpu_count(), err);
     free(ids);
     if (status != RAYO_OK)
         return status;

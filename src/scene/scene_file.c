@@ -22,6 +22,7 @@
 
 typedef struct material_name {
     char text[RAYO_SCENE_MAX_NAME + 1];
+    size_t length;
     unsigned id;
     unsigned long line;
 } material_name;
@@ -534,7 +535,7 @@ static size_t *name_slot(const parser *p, const char *text, size_t length)
         if (p->slots[i] == 0)
             return &p->slots[i];
         m = &p->names[p->slots[i] - 1];
-        if (strlen(m->text) == length && memcmp(m->text, text, length) == 0)
+        if (m->length == length && memcmp(m->text, text, length) == 0)
             return &p->slots[i];
     }
 }
@@ -558,7 +559,7 @@ static int reserve_slot(parser *p)
     p->slot_capacity = capacity;
     for (i = 0; i < p->name_count; i++) {
         const material_name *m = &p->names[i];
-        *name_slot(p, m->text, strlen(m->text)) = i + 1;
+        *name_slot(p, m->text, m->length) = i + 1;
     }
     free(old);
     return 1;
@@ -596,6 +597,7 @@ static rayo_status remember_name(parser *p, const scene_word *word,
     m = &p->names[p->name_count++];
     memcpy(m->text, word->text, word->length);
     m->text[word->length] = '\0';
+    m->length = word->length;
     m->id = id;
     m->line = p->lx.line;
     *name_slot(p, m->text, word->length) = p->name_count;
@@ -795,6 +797,9 @@ static rayo_status parse_statement(parser *p)
     char text[WORD_SHOW + 32];
     size_t i;
     scene_lexer_word(&p->lx, &word);
+    /* objects first: a large scene is mostly their lines */
+    if (scene_word_is(&word, "sphere"))
+        return parse_sphere(p);
     for (i = 0; i < STATEMENT_COUNT; i++)
         if (scene_word_is(&word, statements[i].keyword))
             return statements[i].parse(p);
