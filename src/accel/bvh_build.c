@@ -37,6 +37,7 @@
 #include "bvh_impl.h"
 #include "bvh_vec4.h"
 
+#include <float.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdlib.h>
@@ -122,12 +123,28 @@ void rayo_box_pad(rayo_box *box)
     }
 }
 
+/* The float after f towards -infinity (down) or +infinity; f finite.
+ * Floats of one sign are ordered as their bit patterns. */
+static float float_step(float f, int down)
+{
+    uint32_t bits;
+    if (f == 0.0f)
+        return down ? -FLT_TRUE_MIN : FLT_TRUE_MIN;
+    memcpy(&bits, &f, sizeof bits);
+    if ((f > 0.0f) == !down)
+        bits++;
+    else
+        bits--;
+    memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
 /* The largest float <= v (-infinity below the float range). */
 static float float_below(double v)
 {
     float f = (float)v;
     if ((double)f > v)
-        f = nextafterf(f, -INFINITY);
+        f = isinf(f) ? -FLT_MAX : float_step(f, 1);
     return f;
 }
 
@@ -136,7 +153,7 @@ static float float_above(double v)
 {
     float f = (float)v;
     if ((double)f < v)
-        f = nextafterf(f, INFINITY);
+        f = isinf(f) ? FLT_MAX : float_step(f, 0);
     return f;
 }
 

@@ -130,39 +130,87 @@ static int eisel_lemire(uint64_t w, int q, int negative, double *value)
     return 1;
 }
 
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+/* Eight digits at a time (the first byte the lowest): 1 and their value
+ * when the eight bytes at p are all '0'-'9'.  Lemire's SWAR conversion:
+ * pairs, then quads, then the eight, by multiplications. */
+static int eight_digits(const char *p, uint64_t *value)
+{
+    uint64_t v;
+    memcpy(&v, p, sizeof v);
+    if ((((v + 0x4646464646464646u) | (v - 0x3030303030303030u)) &
+         0x8080808080808080u) != 0)
+        return 0;
+    v -= 0x3030303030303030u;
+    v = v * 10 + (v >> 8);
+    v = (((v & 0x000000ff000000ffu) * 0x000f424000000064u) +
+         (((v >> 16) & 0x000000ff000000ffu) * 0x0000271000000001u)) >>
+        32;
+    *value = (uint32_t)v;
+    return 1;
+}
+#else
+static int eight_digits(const char *p, uint64_t *value)
+{
+    (void)p;
+    (void)value;
+    return 0;
+}
+#endif
+
+/* Digits from *p up to end into *w (w * 10 + digit each, modulo 2^64);
+ * how many. */
+static size_t read_digits(const char **p, const char *end, uint64_t *w)
+{
+    const char *s = *p;
+    uint64_t eight;
+    while (end - s >= 8 && eight_digits(s, &eight)) {
+        *w = *w * 100000000u + eight;
+        s += 8;
+    }
+    while (s < end && *s >= '0' && *s <= '9') {
+        *w = *w * 10 + (uint64_t)(*s - '0');
+        s++;
+    }
+    eight = (uint64_t)(s - *p);
+    *p = s;
+    return (size_t)eight;
+}
+
 /*
  * The fast path: 1 with *value when the word is [+-]digits[.digits]
  * [(e|E)[+-]digits] (at least one mantissa digit) with at most 19
  * significant digits and a decimal exponent inside the table; 0 when it
- * cannot tell (the word may still be a number).
+ * cannot tell (the word may still be a number).  w gathers every digit
+ * modulo 2^64; leading zeros add nothing to it, so with at most 19
+ * significant digits it is exact.
  */
 static int read_fast(const char *s, size_t length, double *value)
 {
-    const char *end = s + length;
+    const char *end = s + length, *first;
     uint64_t w = 0;
-    int digits = 0, mantissa_digits = 0, negative = 0, q = 0;
+    size_t digits, fraction = 0;
+    int negative = 0;
     long exponent = 0;
     if (s < end && (*s == '+' || *s == '-'))
         negative = *s++ == '-';
-    for (; s < end && *s >= '0' && *s <= '9'; s++, mantissa_digits++) {
-        if (w == 0 && *s == '0')
-            continue; /* leading zeros are not significant */
-        if (++digits > 19)
-            return 0;
-        w = 10 * w + (uint64_t)(*s - '0');
-    }
+    first = s;
+    digits = read_digits(&s, end, &w);
     if (s < end && *s == '.') {
-        for (s++; s < end && *s >= '0' && *s <= '9'; s++, mantissa_digits++) {
-            q--;
-            if (w == 0 && *s == '0')
-                continue;
-            if (++digits > 19)
-                return 0;
-            w = 10 * w + (uint64_t)(*s - '0');
-        }
+        s++;
+        fraction = read_digits(&s, end, &w);
+        digits += fraction;
     }
-    if (mantissa_digits == 0)
+    if (digits == 0)
         return 0;
+    if (digits > 19) {
+        const char *z;
+        size_t zeros = 0;
+        for (z = first; z < s && (*z == '0' || *z == '.'); z++)
+            zeros += *z == '0';
+        if (digits - zeros > 19)
+            return 0;
+    }
     if (s < end && (*s == 'e' || *s == 'E')) {
         int exp_negative = 0, exp_digits = 0;
         s++;
@@ -182,7 +230,7 @@ static int read_fast(const char *s, size_t length, double *value)
         *value = negative ? -0.0 : 0.0;
         return 1;
     }
-    exponent += q;
+    exponent -= (long)fraction;
     if (exponent < POW5_LO || exponent > POW5_HI)
         return 0;
     return eisel_lemire(w, (int)exponent, negative, value);
