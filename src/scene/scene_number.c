@@ -78,14 +78,19 @@ static void multiply(uint64_t a, uint64_t b, uint64_t *high, uint64_t *low)
 #endif
 }
 
+/* w != 0 */
 static int leading_zeros(uint64_t w)
 {
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_clzll(w);
+#else
     int n = 0;
     while (!(w & 0x8000000000000000u)) {
         w <<= 1;
         n++;
     }
     return n;
+#endif
 }
 
 /*
@@ -160,7 +165,8 @@ static int eight_digits(const char *p, uint64_t *value)
 
 /* Digits from *p up to end into *w (w * 10 + digit each, modulo 2^64);
  * how many. */
-static size_t read_digits(const char **p, const char *end, uint64_t *w)
+static inline size_t read_digits(const char **p, const char *end,
+                                 uint64_t *w)
 {
     const char *s = *p;
     uint64_t eight;
