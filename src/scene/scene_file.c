@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "rayo/limits.h"
+#include "scene_file_split.h"
 #include "scene_lexer.h"
 #include "scene_number.h"
 
@@ -834,6 +835,74 @@ static rayo_status parse_all(parser *p)
     }
 }
 
+/* Reads the line at offset, numbered line, as parse_all does. */
+static rayo_status parse_line_at(parser *p, size_t offset,
+                                 unsigned long line)
+{
+    int more = 0;
+    rayo_status status;
+    p->lx.next_line = offset;
+    p->lx.line = line - 1;
+    status = scene_lexer_next_line(&p->lx, &more);
+    if (status != RAYO_OK || !more)
+        return status;
+    return parse_statement(p);
+}
+
+/* A sphere read ahead (scene_file_split.c): its material looked up and
+ * the sphere added now, in file order; 0 when either fails (the line is
+ * then read again, to say why). */
+static int add_read_sphere(parser *p, const split_line *l)
+{
+    unsigned id = 0;
+    rayo_error inner;
+    if (l->material != NULL) {
+        scene_word word;
+        material_name *m;
+        word.text = l->material;
+        word.length = l->material_length;
+        word.column = l->material_column;
+        m = find_name(p, &word);
+        if (m == NULL)
+            return 0;
+        id = m->id;
+    }
+    return rayo_scene_add_sphere_material(
+               p->file->scene,
+               rayo_vec3_make(l->center[0], l->center[1], l->center[2]),
+               l->radius, id, &inner) == RAYO_OK;
+}
+
+/*
+ * parse_all for a large file on several threads: the sphere lines read
+ * ahead in parts (scene_file_split.h), then every line taken in file
+ * order.  *done is 0 when the parts could not be made (out of memory);
+ * the caller then reads the file alone.
+ */
+static rayo_status parse_split(parser *p, unsigned threads, int *done)
+{
+    split_part *parts;
+    size_t count, i, j;
+    unsigned long base = 0;
+    rayo_status status = RAYO_OK;
+    *done = 0;
+    if (!scene_split_read(p->lx.name, p->lx.text, p->lx.length, threads,
+                          &parts, &count))
+        return RAYO_OK;
+    *done = 1;
+    for (i = 0; i < count && status == RAYO_OK; i++) {
+        const split_part *part = &parts[i];
+        for (j = 0; j < part->count && status == RAYO_OK; j++) {
+            const split_line *l = &part->lines[j];
+            if (!l->sphere || !add_read_sphere(p, l))
+                status = parse_line_at(p, l->offset, base + l->line);
+        }
+        base += part->line_count;
+    }
+    scene_split_free(parts, count);
+    return status;
+}
+
 rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
                                   const char *text, size_t length,
                                   rayo_error *err)
@@ -853,8 +922,14 @@ rayo_status rayo_scene_file_parse_threads(rayo_scene_file *file,
     p.file = file;
     scene_lexer_init(&p.lx, name, text, length, err);
     status = rayo_scene_create(&file->scene, err);
-    if (status == RAYO_OK)
-        status = parse_all(&p);
+    if (status == RAYO_OK) {
+        unsigned parts = threads ? threads : rayo_cpu_count();
+        int done = 0;
+        if (parts > 1 && length >= SCENE_SPLIT_MIN_BYTES)
+            status = parse_split(&p, parts, &done);
+        if (status == RAYO_OK && !done)
+            status = parse_all(&p);
+    }
     if (status == RAYO_OK)
         status = rayo_scene_prepare_threads(file->scene, threads, err);
     free(p.names);

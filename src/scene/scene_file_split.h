@@ -1,0 +1,53 @@
+/*
+ * scene_file_split.h - reading a large scene file's sphere lines on
+ * several threads, ahead of the parser (scene_file.c), which then takes
+ * the file's statements in order.  Private to the library.
+ *
+ * The text is cut into parts at line ends, one a thread.  Each part's
+ * lines with words become records, in order: a sphere line that reads
+ * cleanly (four numbers within the limits, a positive radius, nothing or
+ * "material NAME" after) carries its values; any other line (every other
+ * statement, and a sphere line with anything wrong in it) is only
+ * pointed at, for the parser to read as it always does.  A part stops at
+ * a line the lexer refuses (too long, a NUL byte): that line is its last
+ * record.  Nothing here reports an error; the parser, reading the lines
+ * pointed at, says exactly what it says reading the file alone.
+ */
+#ifndef RAYO_SCENE_FILE_SPLIT_H
+#define RAYO_SCENE_FILE_SPLIT_H
+
+#include <stddef.h>
+
+/* One line with words on it. */
+typedef struct split_line {
+    size_t offset;        /* where the line starts in the text */
+    unsigned long line;   /* its number within its part, from 1 */
+    int sphere;           /* 1: a clean sphere line, values below */
+    double center[3], radius;
+    const char *material; /* its material's name, NULL for none */
+    size_t material_length;
+    size_t material_column;
+} split_line;
+
+typedef struct split_part {
+    split_line *lines;
+    size_t count, capacity;
+    unsigned long line_count; /* lines in the part (for the next one's
+                                 numbers) */
+    int failed;               /* out of memory: read the file alone */
+} split_part;
+
+/* Files at least this long are split (when threads > 1). */
+#define SCENE_SPLIT_MIN_BYTES (1ul << 20)
+
+/*
+ * Cuts text into parts (at most `parts`, each ending after a newline but
+ * the last) and reads them on as many threads; *out gets the array and
+ * *count its length.  0 when out of memory (nothing to free then).
+ */
+int scene_split_read(const char *name, const char *text, size_t length,
+                     unsigned parts, split_part **out, size_t *count);
+
+void scene_split_free(split_part *parts, size_t count);
+
+#endif
