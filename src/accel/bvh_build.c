@@ -2,10 +2,11 @@
  * bvh_build.c - building the bounding volume hierarchy (bvh.h), on one
  * thread or several, always into the same tree.
  *
- * Top-down.  The boxes are first copied once into a packed array of
- * items (float boxes rounded outward, 32 bytes each, with the
- * primitive's number), which is what every level reads and what the
- * partition permutes: one stream of memory, no indirection.  A node's
+ * Top-down.  The boxes are first turned once into a packed array of
+ * items (float boxes rounded outward, 32 bytes each; the primitives'
+ * numbers in an array beside it), which is what every level reads and
+ * what the partitions move, between two such arrays: one stream of
+ * memory, no indirection.  A node's
  * items are sorted into BINS bins (as many as it has primitives, when
  * fewer) along all three axes in one pass, by their box centres (twice
  * the centre, lo + hi in float: the same order), and the split between
@@ -58,8 +59,6 @@ typedef struct item {
 typedef struct fbox {
     float lo[4], hi[4];
 } fbox;
-
-struct builder;
 
 /* A node to build: its items, where they are, its bounds. */
 typedef struct span {
@@ -139,12 +138,13 @@ static float float_step(float f, int down)
     return f;
 }
 
-/* The largest float <= v (-infinity below the float range). */
+/* The largest float <= v (-infinity below the float range; FLT_MAX
+ * above it, where v rounds to +infinity). */
 static float float_below(double v)
 {
     float f = (float)v;
     if ((double)f > v)
-        f = isinf(f) ? -FLT_MAX : float_step(f, 1);
+        f = isinf(f) ? FLT_MAX : float_step(f, 1);
     return f;
 }
 
@@ -153,7 +153,7 @@ static float float_above(double v)
 {
     float f = (float)v;
     if ((double)f < v)
-        f = isinf(f) ? FLT_MAX : float_step(f, 0);
+        f = isinf(f) ? -FLT_MAX : float_step(f, 0);
     return f;
 }
 

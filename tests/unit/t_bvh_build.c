@@ -197,8 +197,89 @@ static void check_layout(const char *name, layout kind, size_t n)
     free(ids);
 }
 
+/* Float rounding outward, the reference way (nextafterf). */
+static float ref_below(double v)
+{
+    float f = (float)v;
+    return (double)f > v ? nextafterf(f, -INFINITY) : f;
+}
+
+static float ref_above(double v)
+{
+    float f = (float)v;
+    return (double)f < v ? nextafterf(f, INFINITY) : f;
+}
+
+/* The root's float box must be the boxes' union rounded outward, as
+ * nextafterf rounds, for values beyond the float range, near its ends,
+ * in its subnormals and below them. */
+static void check_rounding(void)
+{
+    static const double magnitudes[] = {
+        1e39, 3.4028235677973366e38, 3.4028234663852886e38, 1e30, 1.5,
+        1e-38, 1e-40, 1.5e-45, 1e-46, 0.0};
+    uint64_t state = 17;
+    size_t m, n = 3000, i, pass;
+    rayo_box *boxes = malloc(n * sizeof *boxes);
+    uint32_t *ids = malloc(n * sizeof *ids);
+    int good = 1;
+    /* each magnitude twice: all positive, then either sign */
+    for (pass = 0; pass < 2 * sizeof magnitudes / sizeof magnitudes[0];
+         pass++) {
+        float lo[3], hi[3];
+        int a;
+        m = pass / 2;
+        if (boxes == NULL || ids == NULL)
+            break;
+        for (a = 0; a < 3; a++) {
+            lo[a] = INFINITY;
+            hi[a] = -INFINITY;
+        }
+        for (i = 0; i < n; i++) {
+            for (a = 0; a < 3; a++) {
+                double c = magnitudes[m] * (0.5 + unit(&state)) *
+                           (pass % 2 && (next64(&state) & 1) ? -1 : 1);
+                double w = magnitudes[m] * 0.01 * unit(&state);
+                float l, h;
+                boxes[i].lo[a] = c - w;
+                boxes[i].hi[a] = c + w;
+                l = ref_below(boxes[i].lo[a]);
+                h = ref_above(boxes[i].hi[a]);
+                lo[a] = l < lo[a] ? l : lo[a];
+                hi[a] = h > hi[a] ? h : hi[a];
+            }
+            ids[i] = (uint32_t)i;
+        }
+        {
+            unsigned threads;
+            for (threads = 1; threads <= 2; threads++) {
+                rayo_bvh *bvh;
+                rayo_error err;
+                if (rayo_bvh_build_threads(&bvh, boxes, ids, n, threads,
+                                           &err) != RAYO_OK) {
+                    good = 0;
+                    continue;
+                }
+                if (memcmp(bvh->nodes[0].bounds[0], lo, sizeof lo) != 0 ||
+                    memcmp(bvh->nodes[0].bounds[1], hi, sizeof hi) != 0) {
+                    good = 0;
+                    printf("# magnitude %g: root %g..%g, expected %g..%g\n",
+                           magnitudes[m], bvh->nodes[0].bounds[0][0],
+                           bvh->nodes[0].bounds[1][0], lo[0], hi[0]);
+                }
+                rayo_bvh_free(bvh);
+            }
+        }
+    }
+    ok(boxes != NULL && ids != NULL && good,
+       "the root's box: the union rounded outward as nextafterf rounds");
+    free(boxes);
+    free(ids);
+}
+
 int main(void)
 {
+    check_rounding();
     check_layout("field of 60000", FIELD, 60000);
     check_layout("cloud of 30000", CLOUD, 30000);
     check_layout("5000 boxes at one centre", SAME_CENTRE, 5000);
