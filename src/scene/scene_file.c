@@ -856,12 +856,12 @@ static int add_read_sphere(parser *p, const split_line *l)
 {
     unsigned id = 0;
     rayo_error inner;
-    if (l->material != NULL) {
+    if (l->material_length > 0) {
         scene_word word;
         material_name *m;
-        word.text = l->material;
+        word.text = p->lx.text + l->offset + l->material_at;
         word.length = l->material_length;
-        word.column = l->material_column;
+        word.column = l->material_at + 1;
         m = find_name(p, &word);
         if (m == NULL)
             return 0;
@@ -925,7 +925,8 @@ rayo_status rayo_scene_file_parse_threads(rayo_scene_file *file,
     if (status == RAYO_OK) {
         unsigned parts = threads ? threads : rayo_cpu_count();
         int done = 0;
-        if (parts > 1 && length >= SCENE_SPLIT_MIN_BYTES)
+        if (parts > 1 && length >= SCENE_SPLIT_MIN_BYTES &&
+            length <= RAYO_SCENE_MAX_BYTES)
             status = parse_split(&p, parts, &done);
         if (status == RAYO_OK && !done)
             status = parse_all(&p);

@@ -48,9 +48,9 @@ static split_line *add_line(split_part *part, const scene_lexer *lx)
     }
     l = &part->lines[part->count++];
     l->offset = lx->line_start;
-    l->line = lx->line;
+    l->line = (uint32_t)lx->line; /* a part holds fewer than 2^28 lines */
     l->sphere = 0;
-    l->material = NULL;
+    l->material_length = 0;
     return l;
 }
 
@@ -78,9 +78,9 @@ static int clean_sphere(scene_lexer *lx, split_line *l)
         return 1;
     if (!scene_word_is(&word, "material") || !scene_lexer_word(lx, &word))
         return 0;
-    l->material = word.text;
-    l->material_length = word.length;
-    l->material_column = word.column;
+    /* a line is at most RAYO_SCENE_MAX_LINE bytes */
+    l->material_at = (uint32_t)(word.column - 1);
+    l->material_length = (uint32_t)word.length;
     return !scene_lexer_more(lx);
 }
 
@@ -107,8 +107,6 @@ static void *read_part(void *argument)
         scene_lexer_word(&lx, &word);
         if (scene_word_is(&word, "sphere") && clean_sphere(&lx, l))
             l->sphere = 1;
-        else
-            l->material = NULL;
     }
     part->line_count = lx.line;
     return NULL;

@@ -17,16 +17,16 @@
 #define RAYO_SCENE_FILE_SPLIT_H
 
 #include <stddef.h>
+#include <stdint.h>
 
-/* One line with words on it. */
+/* One line with words on it (56 bytes: a file has many). */
 typedef struct split_line {
-    size_t offset;        /* where the line starts in the text */
-    unsigned long line;   /* its number within its part, from 1 */
-    int sphere;           /* 1: a clean sphere line, values below */
-    double center[3], radius;
-    const char *material; /* its material's name, NULL for none */
-    size_t material_length;
-    size_t material_column;
+    double center[3], radius; /* a clean sphere line's values */
+    size_t offset;            /* where the line starts in the text */
+    uint32_t line;            /* its number within its part, from 1 */
+    uint32_t sphere;          /* 1: a clean sphere line */
+    uint32_t material_at;     /* its material's name: from the line's */
+    uint32_t material_length; /* start, so long; 0: no material */
 } split_line;
 
 typedef struct split_part {
@@ -37,7 +37,8 @@ typedef struct split_part {
     int failed;               /* out of memory: read the file alone */
 } split_part;
 
-/* Files at least this long are split (when threads > 1). */
+/* Files at least this long (and at most RAYO_SCENE_MAX_BYTES, so line
+ * numbers fit 32 bits) are split, when threads > 1. */
 #define SCENE_SPLIT_MIN_BYTES (1ul << 20)
 
 /*
