@@ -873,34 +873,70 @@ static int add_read_sphere(parser *p, const split_line *l)
                l->radius, id, &inner) == RAYO_OK;
 }
 
+/* The lines of one window's parts, in order; base: the line number
+ * before the window, advanced past it. */
+static rayo_status take_parts(parser *p, const split_part *parts,
+                              size_t count, unsigned long *base)
+{
+    size_t i, j;
+    for (i = 0; i < count; i++) {
+        const split_part *part = &parts[i];
+        for (j = 0; j < part->count; j++) {
+            const split_line *l = &part->lines[j];
+            if (!l->sphere || !add_read_sphere(p, l)) {
+                rayo_status status =
+                    parse_line_at(p, l->offset, *base + l->line);
+                if (status != RAYO_OK)
+                    return status;
+            }
+        }
+        *base += part->line_count;
+    }
+    return RAYO_OK;
+}
+
 /*
- * parse_all for a large file on several threads: the sphere lines read
- * ahead in parts (scene_file_split.h), then every line taken in file
- * order.  *done is 0 when the parts could not be made (out of memory);
- * the caller then reads the file alone.
+ * parse_all for a large file on several threads: SCENE_SPLIT_WINDOW
+ * bytes at a time, the sphere lines read ahead in parts
+ * (scene_file_split.h), then every line taken in file order.  *done is
+ * 0 when nothing was read because the first parts could not be made
+ * (out of memory): the caller then reads the file alone.  Out of memory
+ * later, the rest is read alone from where the windows stopped.
  */
 static rayo_status parse_split(parser *p, unsigned threads, int *done)
 {
-    split_part *parts;
-    size_t count, i, j;
+    size_t from = 0, length = p->lx.length;
     unsigned long base = 0;
-    rayo_status status = RAYO_OK;
     *done = 0;
-    if (!scene_split_read(p->lx.name, p->lx.text, p->lx.length, threads,
-                          &parts, &count))
-        return RAYO_OK;
-    *done = 1;
-    for (i = 0; i < count && status == RAYO_OK; i++) {
-        const split_part *part = &parts[i];
-        for (j = 0; j < part->count && status == RAYO_OK; j++) {
-            const split_line *l = &part->lines[j];
-            if (!l->sphere || !add_read_sphere(p, l))
-                status = parse_line_at(p, l->offset, base + l->line);
+    while (from < length) {
+        split_part *parts;
+        size_t count, end = length;
+        rayo_status status;
+        if (length - from > SCENE_SPLIT_WINDOW) {
+            const char *nl = memchr(p->lx.text + from + SCENE_SPLIT_WINDOW,
+                                    '\n',
+                                    length - from - SCENE_SPLIT_WINDOW);
+            end = nl ? (size_t)(nl - p->lx.text) + 1 : length;
         }
-        base += part->line_count;
+        if (!scene_split_read(p->lx.name, p->lx.text, from, end, threads,
+                              &parts, &count)) {
+            if (from == 0)
+                return RAYO_OK;
+            /* the rest alone, as parse_all would go on */
+            p->lx.next_line = from;
+            p->lx.line = base;
+            *done = 0;
+            return RAYO_OK;
+        }
+        *done = 1;
+        status = take_parts(p, parts, count, &base);
+        scene_split_free(parts, count);
+        if (status != RAYO_OK)
+            return status;
+        from = end;
     }
-    scene_split_free(parts, count);
-    return status;
+    p->lx.next_line = length;
+    return RAYO_OK;
 }
 
 rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,

@@ -112,18 +112,20 @@ static void *read_part(void *argument)
     return NULL;
 }
 
-int scene_split_read(const char *name, const char *text, size_t length,
-                     unsigned parts, split_part **out, size_t *count)
+int scene_split_read(const char *name, const char *text, size_t from,
+                     size_t length, unsigned parts, split_part **out,
+                     size_t *count)
 {
     part_job jobs[64];
     split_part *result;
-    size_t begin = 0;
+    size_t begin = from;
     unsigned n = parts < 1 ? 1 : parts > 64 ? 64 : parts, i, started;
     result = calloc(n, sizeof *result);
     if (result == NULL)
         return 0;
     for (i = 0; i < n; i++) {
-        size_t end = i + 1 == n ? length : length / n * (i + 1);
+        size_t end =
+            i + 1 == n ? length : from + (length - from) / n * (i + 1);
         if (end < begin)
             end = begin;
         if (i + 1 < n) { /* just after the next newline */

@@ -41,13 +41,21 @@ typedef struct split_part {
  * numbers fit 32 bits) are split, when threads > 1. */
 #define SCENE_SPLIT_MIN_BYTES (1ul << 20)
 
+/* The parser splits a file this much at a time (each piece cut at a line
+ * end), so the records of a 256 MiB file of short lines never all exist
+ * at once: at most about 60 MB of them. */
+#define SCENE_SPLIT_WINDOW (16ul << 20)
+
 /*
- * Cuts text into parts (at most `parts`, each ending after a newline but
- * the last) and reads them on as many threads; *out gets the array and
- * *count its length.  0 when out of memory (nothing to free then).
+ * Cuts text[from, length) (from at a line's start) into parts (at most
+ * `parts`, each ending after a newline but the last) and reads them on
+ * as many threads; *out gets the array and *count its length.  Line
+ * numbers count from the first line at from.  0 when out of memory
+ * (nothing to free then).
  */
-int scene_split_read(const char *name, const char *text, size_t length,
-                     unsigned parts, split_part **out, size_t *count);
+int scene_split_read(const char *name, const char *text, size_t from,
+                     size_t length, unsigned parts, split_part **out,
+                     size_t *count);
 
 void scene_split_free(split_part *parts, size_t count);
 

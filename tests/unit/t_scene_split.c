@@ -13,7 +13,8 @@
  * the text is cut, of every kind (a bad number, an unknown material, a
  * material used before its line, a second camera, a NUL byte, a line too
  * long, a bad keyword): the status and the message (file, line, column)
- * must be the one-thread ones.
+ * must be the one-thread ones.  A text of over 16 MiB is read in two
+ * windows; errors either side of that cut too.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -56,8 +57,8 @@ static double unit(uint64_t *state)
     return (double)(next64(state) >> 11) / 9007199254740992.0;
 }
 
-/* About 1.5 MB of every kind of line. */
-static text make_scene(uint64_t seed)
+/* Every kind of line, about 62 bytes a line. */
+static text make_scene(uint64_t seed, int lines)
 {
     text t = {NULL, 0, 0};
     uint64_t s = seed;
@@ -65,7 +66,7 @@ static text make_scene(uint64_t seed)
     int i, materials = 0;
     add(&t, "# a large scene\ncamera size 64 48 fov 60 origin 0 1 -5\n");
     add(&t, "shade phong\nambient 0.1\nlight point 0 10 0 color 0.8\n");
-    for (i = 0; i < 24000; i++) {
+    for (i = 0; i < lines; i++) {
         unsigned k = (unsigned)(next64(&s) % 100);
         if (k < 2 || materials == 0) {
             snprintf(line, sizeof line,
@@ -224,7 +225,7 @@ static void check_error(const char *name, const text *t)
 
 int main(void)
 {
-    text t = make_scene(2026);
+    text t = make_scene(2026, 24000);
     static const char *const bad[] = {
         "sphere 1 2 x 4",
         "sphere 1 2 3 4 material nowhere",
@@ -244,6 +245,24 @@ int main(void)
 
     ok(t.length > SCENE_SPLIT_MIN_BYTES, "the text is over the threshold");
     check_same("mixed scene", &t);
+    {
+        /* more than one window (SCENE_SPLIT_WINDOW): errors either side
+         * of the cut */
+        text big = make_scene(7, 290000), u;
+        ok(big.length > SCENE_SPLIT_WINDOW + 100000, "a text of %lu bytes",
+           (unsigned long)big.length);
+        check_same("two windows", &big);
+        u = plant(&big, SCENE_SPLIT_WINDOW + 10, "sphere 1 2 3 4 material x");
+        check_error("just after the window's cut", &u);
+        free(u.data);
+        u = plant(&big, SCENE_SPLIT_WINDOW - 10, "camera fov 200");
+        check_error("just before the window's cut", &u);
+        free(u.data);
+        u = plant(&big, big.length - 5, "sphere 1 2 3");
+        check_error("the last line", &u);
+        free(u.data);
+        free(big.data);
+    }
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++)
         for (j = 0; j < sizeof where / sizeof where[0]; j++) {
             text u;
