@@ -8,7 +8,10 @@
  * they expected.  Errors from the scene itself (too many objects,
  * collinear triangle corners) are re-issued with the file, line and
  * column of the statement.  Splitting text into words is scene_lexer.c's
- * job; reading the file from disk is scene_file_load.c's.
+ * job, reading numbers scene_number.c's, reading the file from disk
+ * scene_file_load.c's; a large file's sphere lines are read ahead on
+ * several threads by scene_file_split.c, and taken here in file order
+ * (parse_split).
  */
 #include "rayo/scene_file.h"
 
