@@ -96,8 +96,9 @@ static void print_help(void)
         "Netpbm format)\n"
         "      --raw              raw Netpbm (P4-P6) instead of plain "
         "(P1-P3)\n"
-        "  -j, --threads N        rendering threads (default: one per "
-        "CPU)\n"
+        "  -j, --threads N        threads reading the scene, building its "
+        "hierarchy\n"
+        "                         and rendering (default: one per CPU)\n"
         "  -q, --quiet            no progress bar (otherwise drawn on a "
         "terminal's\n"
         "                         stderr for renders longer than a "
@@ -467,7 +468,9 @@ int cli_render(int argc, char **argv)
     rayo_error_clear(&err);
     exit_status = parse_request(argc, argv, req);
     if (exit_status == CLI_EXIT_OK && req->scene_path != NULL &&
-        rayo_scene_file_load(&req->file, req->scene_path, &err) != RAYO_OK)
+        rayo_scene_file_load_threads(&req->file, req->scene_path,
+                                     (unsigned)req->threads,
+                                     &err) != RAYO_OK)
         exit_status = cli_unreadable(&err);
     if (exit_status == CLI_EXIT_OK)
         exit_status = choose_format(req, &write_options.format);

@@ -168,6 +168,14 @@ const rayo_material *rayo_scene_material(const rayo_scene *scene,
  */
 rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err);
 
+/*
+ * The same on at most threads threads (0: one per CPU, as
+ * rayo_scene_prepare; 1: the caller's alone).  The hierarchy is the same
+ * for any number of threads, so renders are too.
+ */
+rayo_status rayo_scene_prepare_threads(rayo_scene *scene, unsigned threads,
+                                       rayo_error *err);
+
 /* 1 when rayo_scene_prepare ran after the last add. */
 int rayo_scene_is_prepared(const rayo_scene *scene);
 

@@ -63,6 +63,19 @@ rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
 rayo_status rayo_scene_file_load(rayo_scene_file *file, const char *path,
                                  rayo_error *err);
 
+/*
+ * The same two, reading and preparing on at most threads threads (0: one
+ * per CPU, as the two above; 1: the caller's alone).  The scene is the
+ * same for any number: the command passes its --threads.
+ */
+rayo_status rayo_scene_file_parse_threads(rayo_scene_file *file,
+                                          const char *name, const char *text,
+                                          size_t length, unsigned threads,
+                                          rayo_error *err);
+rayo_status rayo_scene_file_load_threads(rayo_scene_file *file,
+                                         const char *path, unsigned threads,
+                                         rayo_error *err);
+
 /* Frees the scene; safe on a zeroed or failed rayo_scene_file. */
 void rayo_scene_file_free(rayo_scene_file *file);
 

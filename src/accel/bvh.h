@@ -47,6 +47,27 @@ rayo_status rayo_bvh_build(rayo_bvh **bvh, const rayo_box *boxes,
                            const uint32_t *ids, size_t count,
                            rayo_error *err);
 
+/*
+ * The same on up to threads threads (0 or 1: the caller's alone).  The
+ * tree, its node array and its primitive order are the same for any
+ * number of threads (bvh_build.c says why).
+ */
+rayo_status rayo_bvh_build_threads(rayo_bvh **bvh, const rayo_box *boxes,
+                                   const uint32_t *ids, size_t count,
+                                   unsigned threads, rayo_error *err);
+
+/*
+ * The same with the boxes made on demand: box(context, i, &b) writes
+ * primitive i's box (padded), and may be called from any of the threads
+ * at once.  Saves the caller an array of boxes.
+ */
+typedef void (*rayo_bvh_box_fn)(const void *context, size_t i,
+                                rayo_box *box);
+rayo_status rayo_bvh_build_from(rayo_bvh **bvh, rayo_bvh_box_fn box,
+                                const void *context, const uint32_t *ids,
+                                size_t count, unsigned threads,
+                                rayo_error *err);
+
 void rayo_bvh_free(rayo_bvh *bvh);
 
 /* Grows a box outward by a relative margin that covers the rounding of

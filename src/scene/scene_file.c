@@ -8,7 +8,10 @@
  * they expected.  Errors from the scene itself (too many objects,
  * collinear triangle corners) are re-issued with the file, line and
  * column of the statement.  Splitting text into words is scene_lexer.c's
- * job; reading the file from disk is scene_file_load.c's.
+ * job, reading numbers scene_number.c's, reading the file from disk
+ * scene_file_load.c's; a large file's sphere lines are read ahead on
+ * several threads by scene_file_split.c, and taken here in file order
+ * (parse_split).
  */
 #include "rayo/scene_file.h"
 
@@ -17,10 +20,13 @@
 #include <string.h>
 
 #include "rayo/limits.h"
+#include "scene_file_split.h"
 #include "scene_lexer.h"
+#include "scene_number.h"
 
 typedef struct material_name {
     char text[RAYO_SCENE_MAX_NAME + 1];
+    size_t length;
     unsigned id;
     unsigned long line;
 } material_name;
@@ -72,41 +78,66 @@ static rayo_status need_word(parser *p, scene_word *word, const char *what)
 
 static int word_to_double(const scene_word *word, double *value)
 {
-    char buffer[64];
-    char *end;
-    if (word->length == 0 || word->length >= sizeof buffer)
-        return 0;
-    memcpy(buffer, word->text, word->length);
-    buffer[word->length] = '\0';
-    if (strspn(buffer, "0123456789+-.eE") < word->length)
-        return 0; /* decimal only: no hex, inf or nan spellings */
-    *value = strtod(buffer, &end);
-    return *end == '\0' && end != buffer && isfinite(*value);
+    return scene_number_read(word->text, word->length, value);
+}
+
+/*
+ * What a number stands for, in messages: "the sphere's radius", or with
+ * axis set "the x of the sphere's centre".  Written out only when a
+ * message needs it: formatting it for every number was a tenth of
+ * reading a large scene.
+ */
+typedef struct number_name {
+    const char *what;
+    char axis; /* 'x', 'y', 'z', or 0 */
+} number_name;
+
+static const char *number_name_text(const number_name *name, char *buffer,
+                                    size_t size)
+{
+    if (name->axis == 0)
+        return name->what;
+    snprintf(buffer, size, "the %c of %s", name->axis, name->what);
+    return buffer;
+}
+
+static rayo_status read_number(parser *p, const number_name *name,
+                               double *value, size_t *column)
+{
+    scene_word word;
+    char text[WORD_SHOW + 32], label[160], what[128];
+    size_t at = scene_lexer_column(&p->lx);
+    if (!scene_lexer_word(&p->lx, &word)) {
+        snprintf(label, sizeof label, "%s (a number)",
+                 number_name_text(name, what, sizeof what));
+        return scene_lexer_fail(&p->lx, at, RAYO_ERR_FORMAT,
+                                "%s; expected %s",
+                                found(&word, 0, text, sizeof text), label);
+    }
+    if (column != NULL)
+        *column = word.column;
+    if (!word_to_double(&word, value))
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                "%s; expected %s (a finite decimal number)",
+                                found(&word, 1, text, sizeof text),
+                                number_name_text(name, what, sizeof what));
+    if (fabs(*value) > RAYO_SCENE_MAX_NUMBER)
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_LIMIT,
+                                "%s is out of range; expected %s between "
+                                "-1e12 and 1e12",
+                                quoted(&word, text, sizeof text),
+                                number_name_text(name, what, sizeof what));
+    return RAYO_OK;
 }
 
 /* One number; what names it ("the sphere's radius"). */
 static rayo_status need_number(parser *p, const char *what, double *value,
                                size_t *column)
 {
-    scene_word word;
-    char text[WORD_SHOW + 32], label[160];
-    rayo_status status;
-    snprintf(label, sizeof label, "%s (a number)", what);
-    status = need_word(p, &word, label);
-    if (status != RAYO_OK)
-        return status;
-    if (column != NULL)
-        *column = word.column;
-    if (!word_to_double(&word, value))
-        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
-                                "%s; expected %s (a finite decimal number)",
-                                found(&word, 1, text, sizeof text), what);
-    if (fabs(*value) > RAYO_SCENE_MAX_NUMBER)
-        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_LIMIT,
-                                "%s is out of range; expected %s between "
-                                "-1e12 and 1e12",
-                                quoted(&word, text, sizeof text), what);
-    return RAYO_OK;
+    number_name name;
+    name.what = what;
+    name.axis = 0;
+    return read_number(p, &name, value, column);
 }
 
 /* Three numbers: the x, y and z of what ("the sphere's centre"). */
@@ -117,10 +148,11 @@ static rayo_status need_vector(parser *p, const char *what, rayo_vec3 *v,
     double c[3];
     int i;
     for (i = 0; i < 3; i++) {
-        char label[128];
+        number_name name;
         rayo_status status;
-        snprintf(label, sizeof label, "the %c of %s", axes[i], what);
-        status = need_number(p, label, &c[i], i == 0 ? column : NULL);
+        name.what = what;
+        name.axis = axes[i];
+        status = read_number(p, &name, &c[i], i == 0 ? column : NULL);
         if (status != RAYO_OK)
             return status;
     }
@@ -507,7 +539,7 @@ static size_t *name_slot(const parser *p, const char *text, size_t length)
         if (p->slots[i] == 0)
             return &p->slots[i];
         m = &p->names[p->slots[i] - 1];
-        if (strlen(m->text) == length && memcmp(m->text, text, length) == 0)
+        if (m->length == length && memcmp(m->text, text, length) == 0)
             return &p->slots[i];
     }
 }
@@ -531,7 +563,7 @@ static int reserve_slot(parser *p)
     p->slot_capacity = capacity;
     for (i = 0; i < p->name_count; i++) {
         const material_name *m = &p->names[i];
-        *name_slot(p, m->text, strlen(m->text)) = i + 1;
+        *name_slot(p, m->text, m->length) = i + 1;
     }
     free(old);
     return 1;
@@ -569,6 +601,7 @@ static rayo_status remember_name(parser *p, const scene_word *word,
     m = &p->names[p->name_count++];
     memcpy(m->text, word->text, word->length);
     m->text[word->length] = '\0';
+    m->length = word->length;
     m->id = id;
     m->line = p->lx.line;
     *name_slot(p, m->text, word->length) = p->name_count;
@@ -768,6 +801,9 @@ static rayo_status parse_statement(parser *p)
     char text[WORD_SHOW + 32];
     size_t i;
     scene_lexer_word(&p->lx, &word);
+    /* objects first: a large scene is mostly their lines */
+    if (scene_word_is(&word, "sphere"))
+        return parse_sphere(p);
     for (i = 0; i < STATEMENT_COUNT; i++)
         if (scene_word_is(&word, statements[i].keyword))
             return statements[i].parse(p);
@@ -802,9 +838,121 @@ static rayo_status parse_all(parser *p)
     }
 }
 
+/* Reads the line at offset, numbered line, as parse_all does. */
+static rayo_status parse_line_at(parser *p, size_t offset,
+                                 unsigned long line)
+{
+    int more = 0;
+    rayo_status status;
+    p->lx.next_line = offset;
+    p->lx.line = line - 1;
+    status = scene_lexer_next_line(&p->lx, &more);
+    if (status != RAYO_OK || !more)
+        return status;
+    return parse_statement(p);
+}
+
+/* A sphere read ahead (scene_file_split.c): its material looked up and
+ * the sphere added now, in file order; 0 when either fails (the line is
+ * then read again, to say why). */
+static int add_read_sphere(parser *p, const split_line *l)
+{
+    unsigned id = 0;
+    rayo_error inner;
+    if (l->material_length > 0) {
+        scene_word word;
+        material_name *m;
+        word.text = p->lx.text + l->offset + l->material_at;
+        word.length = l->material_length;
+        word.column = l->material_at + 1;
+        m = find_name(p, &word);
+        if (m == NULL)
+            return 0;
+        id = m->id;
+    }
+    return rayo_scene_add_sphere_material(
+               p->file->scene,
+               rayo_vec3_make(l->center[0], l->center[1], l->center[2]),
+               l->radius, id, &inner) == RAYO_OK;
+}
+
+/* The lines of one window's parts, in order; base: the line number
+ * before the window, advanced past it. */
+static rayo_status take_parts(parser *p, const split_part *parts,
+                              size_t count, unsigned long *base)
+{
+    size_t i, j;
+    for (i = 0; i < count; i++) {
+        const split_part *part = &parts[i];
+        for (j = 0; j < part->count; j++) {
+            const split_line *l = &part->lines[j];
+            if (!l->sphere || !add_read_sphere(p, l)) {
+                rayo_status status =
+                    parse_line_at(p, l->offset, *base + l->line);
+                if (status != RAYO_OK)
+                    return status;
+            }
+        }
+        *base += part->line_count;
+    }
+    return RAYO_OK;
+}
+
+/*
+ * parse_all for a large file on several threads: SCENE_SPLIT_WINDOW
+ * bytes at a time, the sphere lines read ahead in parts
+ * (scene_file_split.h), then every line taken in file order.  *done is
+ * 0 when nothing was read because the first parts could not be made
+ * (out of memory): the caller then reads the file alone.  Out of memory
+ * later, the rest is read alone from where the windows stopped.
+ */
+static rayo_status parse_split(parser *p, unsigned threads, int *done)
+{
+    size_t from = 0, length = p->lx.length;
+    unsigned long base = 0;
+    *done = 0;
+    while (from < length) {
+        split_part *parts;
+        size_t count, end = length;
+        rayo_status status;
+        if (length - from > SCENE_SPLIT_WINDOW) {
+            const char *nl = memchr(p->lx.text + from + SCENE_SPLIT_WINDOW,
+                                    '\n',
+                                    length - from - SCENE_SPLIT_WINDOW);
+            end = nl ? (size_t)(nl - p->lx.text) + 1 : length;
+        }
+        if (!scene_split_read(p->lx.name, p->lx.text, from, end, threads,
+                              &parts, &count)) {
+            if (from == 0)
+                return RAYO_OK;
+            /* the rest alone, as parse_all would go on */
+            p->lx.next_line = from;
+            p->lx.line = base;
+            *done = 0;
+            return RAYO_OK;
+        }
+        *done = 1;
+        status = take_parts(p, parts, count, &base);
+        scene_split_free(parts, count);
+        if (status != RAYO_OK)
+            return status;
+        from = end;
+    }
+    p->lx.next_line = length;
+    return RAYO_OK;
+}
+
 rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
                                   const char *text, size_t length,
                                   rayo_error *err)
+{
+    return rayo_scene_file_parse_threads(file, name, text, length, 0, err);
+}
+
+rayo_status rayo_scene_file_parse_threads(rayo_scene_file *file,
+                                          const char *name, const char *text,
+                                          size_t length, unsigned threads,
+                                          rayo_error *err)
 {
     parser p;
     rayo_status status;
@@ -813,10 +961,17 @@ rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
     p.file = file;
     scene_lexer_init(&p.lx, name, text, length, err);
     status = rayo_scene_create(&file->scene, err);
+    if (status == RAYO_OK) {
+        unsigned parts = threads ? threads : rayo_cpu_count();
+        int done = 0;
+        if (parts > 1 && length >= SCENE_SPLIT_MIN_BYTES &&
+            length <= RAYO_SCENE_MAX_BYTES)
+            status = parse_split(&p, parts, &done);
+        if (status == RAYO_OK && !done)
+            status = parse_all(&p);
+    }
     if (status == RAYO_OK)
-        status = parse_all(&p);
-    if (status == RAYO_OK)
-        status = rayo_scene_prepare(file->scene, err);
+        status = rayo_scene_prepare_threads(file->scene, threads, err);
     free(p.names);
     free(p.slots);
     if (status != RAYO_OK)

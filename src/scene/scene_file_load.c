@@ -82,6 +82,13 @@ static rayo_status read_all(FILE *in, const char *path, char **text,
 rayo_status rayo_scene_file_load(rayo_scene_file *file, const char *path,
                                  rayo_error *err)
 {
+    return rayo_scene_file_load_threads(file, path, 0, err);
+}
+
+rayo_status rayo_scene_file_load_threads(rayo_scene_file *file,
+                                         const char *path, unsigned threads,
+                                         rayo_error *err)
+{
     struct stat info;
     char *text = NULL;
     size_t length = 0;
@@ -102,7 +109,8 @@ rayo_status rayo_scene_file_load(rayo_scene_file *file, const char *path,
         fclose(in);
     if (status != RAYO_OK)
         return status;
-    status = rayo_scene_file_parse(file, name, text, length, err);
+    status = rayo_scene_file_parse_threads(file, name, text, length, threads,
+                                           err);
     free(text);
     return status;
 }

@@ -30,15 +30,19 @@ static int is_blank(char c)
     return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }
 
-/* Finds the end of the line starting at lx->next_line; checks its bytes. */
+/* Finds the end of the line starting at lx->next_line; checks its bytes.
+ * memchr, which looks at many bytes at a time, finds the newline, then
+ * the NUL byte, if any, before it: a tenth of reading a large scene went
+ * to looking at each byte twice here. */
 static rayo_status take_line(scene_lexer *lx)
 {
-    size_t start = lx->next_line, end = start;
-    while (end < lx->length && lx->text[end] != '\n') {
-        if (lx->text[end] == '\0')
-            break;
-        end++;
-    }
+    size_t start = lx->next_line, end;
+    const char *newline = memchr(lx->text + start, '\n', lx->length - start);
+    const char *nul;
+    end = newline ? (size_t)(newline - lx->text) : lx->length;
+    nul = memchr(lx->text + start, '\0', end - start);
+    if (nul != NULL)
+        end = (size_t)(nul - lx->text);
     lx->line++;
     lx->line_start = start;
     lx->line_end = end;
@@ -48,7 +52,7 @@ static rayo_status take_line(scene_lexer *lx)
                                 "line is longer than %u bytes; expected "
                                 "shorter lines",
                                 RAYO_SCENE_MAX_LINE);
-    if (end < lx->length && lx->text[end] == '\0')
+    if (nul != NULL)
         return scene_lexer_fail(lx, end - start + 1, RAYO_ERR_FORMAT,
                                 "found a NUL byte; expected text");
     lx->next_line = end < lx->length ? end + 1 : end;
@@ -88,15 +92,27 @@ size_t scene_lexer_column(scene_lexer *lx)
     return lx->pos - lx->line_start + 1;
 }
 
+/* Bytes that end a word: the blanks and '#'.  (A table: one look-up a
+ * byte instead of six comparisons.) */
+static int ends_word(unsigned char c)
+{
+    static const unsigned char table[256] = {
+        ['\t'] = 1, ['\v'] = 1, ['\f'] = 1, ['\r'] = 1, [' '] = 1, ['#'] = 1,
+    };
+    return table[c];
+}
+
 int scene_lexer_word(scene_lexer *lx, scene_word *word)
 {
-    size_t start;
+    size_t start, pos, end;
+    const char *text = lx->text;
     if (!scene_lexer_more(lx))
         return 0;
-    start = lx->pos;
-    while (lx->pos < lx->line_end && !is_blank(lx->text[lx->pos]) &&
-           lx->text[lx->pos] != '#')
-        lx->pos++;
+    start = pos = lx->pos;
+    end = lx->line_end;
+    while (pos < end && !ends_word((unsigned char)text[pos]))
+        pos++;
+    lx->pos = pos;
     word->text = lx->text + start;
     word->length = lx->pos - start;
     word->column = start - lx->line_start + 1;
@@ -105,8 +121,11 @@ int scene_lexer_word(scene_lexer *lx, scene_word *word)
 
 int scene_word_is(const scene_word *word, const char *keyword)
 {
-    size_t n = strlen(keyword);
-    return word->length == n && memcmp(word->text, keyword, n) == 0;
+    size_t i;
+    for (i = 0; i < word->length; i++)
+        if (word->text[i] != keyword[i]) /* keyword's NUL stops it */
+            return 0;
+    return keyword[i] == '\0';
 }
 
 const char *scene_word_show(const scene_word *word, char *buffer,
