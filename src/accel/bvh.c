@@ -13,6 +13,7 @@
  * "may hit", so culling is conservative.
  */
 #include "bvh_impl.h"
+#include "bvh_wide.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -26,6 +27,7 @@ void rayo_bvh_free(rayo_bvh *bvh)
 {
     if (bvh == NULL)
         return;
+    rayo_bvh_wide_free(bvh->wide);
     free(bvh->nodes);
     free(bvh->prims);
     free(bvh);

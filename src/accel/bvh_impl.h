@@ -31,6 +31,8 @@ struct rayo_bvh {
     bvh_node *nodes;
     size_t node_count;
     uint32_t *prims; /* primitive ids in leaf order */
+    struct bvh_wide *wide; /* the fast walks' copy (bvh_wide.h), or NULL;
+                              the builder's calloc leaves it NULL */
 };
 
 #endif

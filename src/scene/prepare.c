@@ -76,6 +76,7 @@ rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err)
     if (status != RAYO_OK)
         return status;
     scene->bvh = bvh;
+    rayo_scene_prepare_walks(scene);
     scene->prepared = 1;
     return RAYO_OK;
 }

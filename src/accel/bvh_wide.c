@@ -1,0 +1,310 @@
+/*
+ * bvh_wide.c - the hierarchy's 4-wide copy (bvh_wide.h): made from the
+ * binary tree once it is built, and the one setting that says which walk
+ * the queries take.
+ *
+ * The copy collapses the binary tree: a wide node starts from a binary
+ * interior node's two children and, while it has fewer than four,
+ * replaces its interior child of largest surface area by that child's
+ * two children.  Every box of the copy is a box of the binary tree,
+ * float for float, and every leaf is a binary leaf; only the interior
+ * boxes skipped by the collapse are no longer tested.  Since a binary
+ * child's box lies inside its parent's (the builder bounds each node by
+ * the union of its primitives' boxes, rounded outward), a ray that the
+ * binary walk would let into a leaf is let in by the wide walk too, and
+ * both then take the smallest (t, object) over the same candidates: the
+ * answers are the same bit for bit (bvh_wide_walk.h says why the lanes'
+ * arithmetic is the scalar one).
+ *
+ * The walk is chosen once per process, from RAYO_WALK (binary, sse2,
+ * avx2), else the fastest one the processor runs: AVX2 where
+ * __builtin_cpu_supports says so (the processor and the system's saving
+ * of its registers), SSE2 on any x86-64, the binary walk elsewhere.
+ */
+#include "bvh_packet.h"
+#include "bvh_wide_impl.h"
+#include "bvh_wide_isa.h"
+
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+static rayo_bvh_walk walk_in_use = RAYO_BVH_WALK_BINARY;
+static int packets_wanted = 1;
+static pthread_once_t walk_once = PTHREAD_ONCE_INIT;
+
+int rayo_bvh_walk_available(rayo_bvh_walk walk)
+{
+    switch (walk) {
+    case RAYO_BVH_WALK_BINARY:
+        return 1;
+    case RAYO_BVH_WALK_SSE2:
+        return bvh_wide_sse2_built();
+    case RAYO_BVH_WALK_AVX2:
+        return bvh_wide_avx2_runs();
+    }
+    return 0;
+}
+
+static rayo_bvh_walk best_available(rayo_bvh_walk walk)
+{
+    if (walk == RAYO_BVH_WALK_AVX2 &&
+        !rayo_bvh_walk_available(RAYO_BVH_WALK_AVX2))
+        walk = RAYO_BVH_WALK_SSE2;
+    if (walk == RAYO_BVH_WALK_SSE2 &&
+        !rayo_bvh_walk_available(RAYO_BVH_WALK_SSE2))
+        walk = RAYO_BVH_WALK_BINARY;
+    return walk;
+}
+
+static void walk_init(void)
+{
+    const char *name = getenv("RAYO_WALK");
+    rayo_bvh_walk walk = RAYO_BVH_WALK_AVX2;
+    if (name != NULL && strcmp(name, "binary") == 0)
+        walk = RAYO_BVH_WALK_BINARY;
+    else if (name != NULL && strcmp(name, "sse2") == 0)
+        walk = RAYO_BVH_WALK_SSE2;
+    walk_in_use = best_available(walk);
+    name = getenv("RAYO_PACKETS");
+    packets_wanted = !(name != NULL && strcmp(name, "0") == 0);
+}
+
+rayo_bvh_walk rayo_bvh_walk_current(void)
+{
+    pthread_once(&walk_once, walk_init);
+    return walk_in_use;
+}
+
+void rayo_bvh_walk_set(rayo_bvh_walk walk)
+{
+    pthread_once(&walk_once, walk_init);
+    walk_in_use = best_available(walk);
+}
+
+void rayo_bvh_packets_set(int on)
+{
+    pthread_once(&walk_once, walk_init);
+    packets_wanted = on != 0;
+}
+
+/* Packets are AVX2 code: they run with the AVX2 walk (so RAYO_WALK=sse2
+ * or binary runs no AVX2 at all, as on a processor without it). */
+int rayo_bvh_packets_on(const rayo_bvh *bvh)
+{
+    return bvh != NULL && bvh->wide != NULL && packets_wanted &&
+           walk_in_use == RAYO_BVH_WALK_AVX2 && bvh_packet_avx2_built();
+}
+
+const char *rayo_bvh_walk_name(rayo_bvh_walk walk)
+{
+    switch (walk) {
+    case RAYO_BVH_WALK_BINARY:
+        return "binary";
+    case RAYO_BVH_WALK_SSE2:
+        return "sse2";
+    case RAYO_BVH_WALK_AVX2:
+        return "avx2";
+    }
+    return "?";
+}
+
+void rayo_bvh_wide_free(struct bvh_wide *wide)
+{
+    if (wide == NULL)
+        return;
+    free(wide->nodes);
+    free(wide->cx);
+    free(wide->sphere);
+    free(wide);
+}
+
+static double node_area(const bvh_node *n)
+{
+    double d[3];
+    int a;
+    for (a = 0; a < 3; a++)
+        d[a] = (double)n->bounds[1][a] - (double)n->bounds[0][a];
+    return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+}
+
+typedef struct widener {
+    const rayo_bvh *bvh;
+    struct bvh_wide *wide;
+    rayo_bvh_sphere_fn sphere_of;
+    const void *context;
+} widener;
+
+/* The leaf's spheres into the arrays; its count, with BVH_WIDE_MIXED
+ * when one of its primitives is not a sphere. */
+static uint16_t copy_leaf(widener *w, const bvh_node *leaf)
+{
+    struct bvh_wide *wide = w->wide;
+    uint16_t count = (uint16_t)leaf->count;
+    uint32_t k;
+    for (k = 0; k < leaf->count; k++) {
+        uint32_t at = leaf->first + k;
+        rayo_sphere s;
+        if (!w->sphere_of(w->context, w->bvh->prims[at], &s)) {
+            count |= BVH_WIDE_MIXED;
+            continue;
+        }
+        wide->cx[at] = s.center.x;
+        wide->cy[at] = s.center.y;
+        wide->cz[at] = s.center.z;
+        wide->rr[at] = s.radius * s.radius;
+        wide->sphere[at] = 1;
+    }
+    return count;
+}
+
+/* Makes the wide node for binary node `binary` (interior, or the root
+ * leaf of a one-leaf tree); returns its index. */
+static uint32_t widen_node(widener *w, uint32_t binary)
+{
+    const bvh_node *nodes = w->bvh->nodes;
+    struct bvh_wide *wide = w->wide;
+    uint32_t index = (uint32_t)wide->node_count++, kids[BVH_WIDE_LANES];
+    bvh_wide_node *out = &wide->nodes[index];
+    unsigned count = 0, k;
+    int a, side;
+    if (nodes[binary].count) {
+        kids[count++] = binary;
+    } else {
+        kids[count++] = nodes[binary].first;
+        kids[count++] = nodes[binary].first + 1;
+    }
+    while (count < BVH_WIDE_LANES) {
+        unsigned pick = BVH_WIDE_LANES;
+        double best = -1.0;
+        for (k = 0; k < count; k++) {
+            const bvh_node *n = &nodes[kids[k]];
+            double area = n->count ? -1.0 : node_area(n);
+            if (!n->count && area > best) {
+                best = area;
+                pick = k;
+            }
+        }
+        if (pick == BVH_WIDE_LANES)
+            break;
+        kids[count++] = nodes[kids[pick]].first + 1;
+        kids[pick] = nodes[kids[pick]].first;
+    }
+    memset(out, 0, sizeof *out);
+    for (k = 0; k < BVH_WIDE_LANES; k++)
+        for (a = 0; a < 3; a++) {
+            /* Empty lanes: a box no ray enters (and `lanes` leaves them
+             * out anyway). */
+            out->box[0][a][k] = INFINITY;
+            out->box[1][a][k] = -INFINITY;
+        }
+    out->lanes = (1u << count) - 1;
+    out->lane_count = count;
+    for (k = 0; k < count; k++) {
+        const bvh_node *n = &nodes[kids[k]];
+        for (side = 0; side < 2; side++)
+            for (a = 0; a < 3; a++)
+                out->box[side][a][k] = n->bounds[side][a];
+    }
+    for (k = 0; k < count; k++) {
+        const bvh_node *n = &nodes[kids[k]];
+        uint32_t child;
+        uint16_t leaf_count = 0;
+        if (n->count) {
+            child = n->first;
+            leaf_count = copy_leaf(w, n);
+        } else {
+            child = widen_node(w, kids[k]);
+        }
+        /* (the array is preallocated: recursion moves nothing) */
+        wide->nodes[index].child[k] = child;
+        wide->nodes[index].count[k] = leaf_count;
+    }
+    return index;
+}
+
+rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_of,
+                           const void *context)
+{
+    struct bvh_wide *wide;
+    size_t prims = 0, i, capacity;
+    widener w;
+    rayo_bvh_wide_free(bvh->wide);
+    bvh->wide = NULL;
+    (void)rayo_bvh_walk_current(); /* the queries read walk_in_use */
+    if (bvh->node_count == 0)
+        return RAYO_OK;
+    /* A wide node takes at least one binary interior node, and a tree of
+     * n nodes has (n - 1) / 2 of them (one wide node for a lone leaf). */
+    capacity = bvh->node_count / 2 + 1;
+    for (i = 0; i < bvh->node_count; i++)
+        prims += bvh->nodes[i].count;
+    if (capacity > SIZE_MAX / sizeof *wide->nodes ||
+        prims > SIZE_MAX / 4 / sizeof *wide->cx - BVH_WIDE_LANES)
+        return RAYO_ERR_NOMEM;
+    wide = calloc(1, sizeof *wide);
+    if (wide == NULL)
+        return RAYO_ERR_NOMEM;
+    /* 64-byte aligned: a node is two whole cache lines. */
+    wide->nodes = aligned_alloc(64, capacity * sizeof *wide->nodes);
+    wide->cx = calloc(4 * (prims + BVH_WIDE_LANES), sizeof *wide->cx);
+    wide->sphere = calloc(prims + BVH_WIDE_LANES, 1);
+    if (wide->nodes == NULL || wide->cx == NULL || wide->sphere == NULL) {
+        rayo_bvh_wide_free(wide);
+        return RAYO_ERR_NOMEM;
+    }
+    wide->cy = wide->cx + (prims + BVH_WIDE_LANES);
+    wide->cz = wide->cy + (prims + BVH_WIDE_LANES);
+    wide->rr = wide->cz + (prims + BVH_WIDE_LANES);
+    wide->ids = bvh->prims;
+    w.bvh = bvh;
+    w.wide = wide;
+    w.sphere_of = sphere_of;
+    w.context = context;
+    widen_node(&w, 0);
+    bvh->wide = wide;
+    return RAYO_OK;
+}
+
+int rayo_bvh_wide_nearest(const rayo_bvh *bvh, const rayo_ray *ray,
+                          double t_min, double t_max, rayo_bvh_prim_fn test,
+                          const void *context, double *best_t,
+                          uint32_t *best_id, rayo_bvh_cost *cost)
+{
+    if (bvh->wide == NULL)
+        return 0;
+    /* rayo_bvh_widen resolved the setting before this copy existed */
+    switch (walk_in_use) {
+    case RAYO_BVH_WALK_BINARY:
+        return 0;
+    case RAYO_BVH_WALK_SSE2:
+        bvh_wide_nearest_sse2(bvh->wide, ray, t_min, t_max, test, context,
+                              best_t, best_id, cost);
+        return 1;
+    case RAYO_BVH_WALK_AVX2:
+        bvh_wide_nearest_avx2(bvh->wide, ray, t_min, t_max, test, context,
+                              best_t, best_id, cost);
+        return 1;
+    }
+    return 0;
+}
+
+int rayo_bvh_wide_any(const rayo_bvh *bvh, const rayo_ray *ray,
+                      double t_min, double t_max, uint32_t skip,
+                      rayo_bvh_prim_fn test, const void *context,
+                      rayo_bvh_cost *cost)
+{
+    if (bvh->wide == NULL)
+        return -1;
+    switch (walk_in_use) {
+    case RAYO_BVH_WALK_BINARY:
+        return -1;
+    case RAYO_BVH_WALK_SSE2:
+        return bvh_wide_any_sse2(bvh->wide, ray, t_min, t_max, skip, test,
+                                 context, cost);
+    case RAYO_BVH_WALK_AVX2:
+        return bvh_wide_any_avx2(bvh->wide, ray, t_min, t_max, skip, test,
+                                 context, cost);
+    }
+    return -1;
+}
