@@ -648,6 +648,47 @@ static void check_cloud(void)
     rayo_scene_free(b);
 }
 
+/* Rays that touch a sphere's outline exactly (delta == 0, a hit by the
+ * assignment's >= 0): spheres of radius 1 at (3i, 0, 4), rays from
+ * (3i + 1, 0, 0) along z. */
+static void check_tangent(void)
+{
+    rayo_scene *s;
+    rayo_error err;
+    rayo_ray rays[RAYO_SCENE_PACKET];
+    rayo_hit hits[RAYO_SCENE_PACKET];
+    double lo[RAYO_SCENE_PACKET] = {0, 0, 0, 0};
+    double hi[RAYO_SCENE_PACKET] = {INFINITY, INFINITY, INFINITY, INFINITY};
+    size_t skip[RAYO_SCENE_PACKET] = {RAYO_NO_OBJECT, RAYO_NO_OBJECT,
+                                      RAYO_NO_OBJECT, RAYO_NO_OBJECT};
+    unsigned i, single = 0, packed = 0, blocked = 0;
+    rayo_scene_create(&s, &err);
+    for (i = 0; i < 40; i++)
+        rayo_scene_add_sphere(s, rayo_vec3_make(3.0 * i, 0, 4), 1, &err);
+    rayo_scene_prepare(s, &err);
+    for (i = 0; i < 40; i++) {
+        rayo_ray *r = &rays[i % RAYO_SCENE_PACKET];
+        rayo_hit h;
+        r->origin = rayo_vec3_make(3.0 * i + 1, 0, 0);
+        r->direction = rayo_vec3_make(0, 0, 1);
+        single += rayo_scene_intersect(s, r, 0, INFINITY, &h) && h.t == 4 &&
+                  h.object == i && rayo_scene_hit_any(s, r, 0);
+        if (i % RAYO_SCENE_PACKET == RAYO_SCENE_PACKET - 1) {
+            unsigned k, found =
+                rayo_scene_intersect_packet(s, rays, 4, 0, hits);
+            for (k = 0; k < 4; k++)
+                packed += (found >> k) & 1u && hits[k].t == 4 &&
+                          hits[k].object == i - 3 + k;
+            blocked += (unsigned)__builtin_popcount(
+                rayo_scene_occluded_packet(s, rays, 15, lo, hi, skip));
+        }
+    }
+    is_int(single, 40, "tangent rays hit at t = 4, one by one");
+    is_int(packed, 40, "tangent rays hit at t = 4, in packets");
+    is_int(blocked, 40, "tangent rays are blocked, in packets");
+    rayo_scene_free(s);
+}
+
 /* Everything that walks the tree, with one walk and packets on or off. */
 static void check_walk(rayo_bvh_walk walk, int packets)
 {
@@ -667,6 +708,7 @@ static void check_walk(rayo_bvh_walk walk, int packets)
     check_scaled(1e150, "coordinates near 1e150");
     check_scaled(1e-150, "coordinates near 1e-150");
     check_tiny_scenes();
+    check_tangent();
     check_render_exact();
 }
 
