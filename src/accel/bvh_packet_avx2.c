@@ -116,6 +116,13 @@ static inline __m256d packet_sphere(const struct bvh_wide *w, uint32_t at,
     return _mm256_blendv_pd(inf, t, met);
 }
 
+/* bvh_reach, ray by ray. */
+static inline __m256d packet_reach(__m256d best)
+{
+    __m256d size = _mm256_andnot_pd(_mm256_set1_pd(-0.0), best);
+    return _mm256_add_pd(best, _mm256_mul_pd(size, _mm256_set1_pd(0x1p-40)));
+}
+
 typedef struct packet_entry {
     __m256d entry; /* where each ray enters the node's box */
     uint32_t node;
@@ -198,7 +205,8 @@ void rayo_bvh_packet_nearest(const rayo_bvh *bvh, const rayo_ray *rays,
     packet_ray_init(&p, rays, lanes);
     best = _mm256_loadu_pd(best_t);
     mask = lanes & packet_box(&bvh->nodes[0], &p, tmin,
-                              _mm256_min_pd(best, tmax), &entry);
+                              _mm256_min_pd(packet_reach(best), tmax),
+                              &entry);
     if (mask == 0)
         return;
     for (;;) {
@@ -208,7 +216,7 @@ void rayo_bvh_packet_nearest(const rayo_bvh *bvh, const rayo_ray *rays,
                          context, best_t, best_id);
             best = _mm256_loadu_pd(best_t);
         } else {
-            __m256d limit = _mm256_min_pd(best, tmax), el, er;
+            __m256d limit = _mm256_min_pd(packet_reach(best), tmax), el, er;
             unsigned ml = mask & packet_box(&bvh->nodes[n->first], &p, tmin,
                                             limit, &el);
             unsigned mr = mask & packet_box(&bvh->nodes[n->first + 1], &p,
@@ -233,10 +241,10 @@ void rayo_bvh_packet_nearest(const rayo_bvh *bvh, const rayo_ray *rays,
             if (sp == 0)
                 return;
             sp--;
-            /* bvh.c's stack[sp].t <= *best_t, ray by ray */
+            /* bvh.c's stack[sp].t <= bvh_reach(*best_t), ray by ray */
             mask = stack[sp].mask &
-                   (unsigned)_mm256_movemask_pd(
-                       _mm256_cmp_pd(stack[sp].entry, best, _CMP_LE_OQ));
+                   (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(
+                       stack[sp].entry, packet_reach(best), _CMP_LE_OQ));
             if (mask)
                 break;
         }

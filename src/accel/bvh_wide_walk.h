@@ -70,7 +70,8 @@ void WIDE_NEAREST(const struct bvh_wide *wide, const rayo_ray *ray,
         if (count == 0) {
             const bvh_wide_node *n = &wide->nodes[child];
             double entry[BVH_WIDE_LANES];
-            double limit = *best_t < t_max ? *best_t : t_max;
+            double reach = bvh_reach(*best_t);
+            double limit = reach < t_max ? reach : t_max;
             unsigned mask =
                 lane_boxes(n, &r, t_min, limit, entry) & n->lanes;
             cost->node_tests += n->lane_count;
@@ -117,7 +118,7 @@ void WIDE_NEAREST(const struct bvh_wide *wide, const rayo_ray *ray,
             if (sp == 0)
                 return;
             sp--;
-            if (stack[sp].t <= *best_t)
+            if (stack[sp].t <= bvh_reach(*best_t))
                 break;
         }
         child = stack[sp].child;
