@@ -76,13 +76,34 @@ void WIDE_NEAREST(const struct bvh_wide *wide, const rayo_ray *ray,
                 lane_boxes(n, &r, t_min, limit, entry) & n->lanes;
             cost->node_tests += n->lane_count;
             if (mask != 0) {
-                wide_entry e[BVH_WIDE_LANES];
-                unsigned c = wide_sorted(n, mask, entry, e), j;
-                for (j = c; j-- > 1;)
-                    stack[sp++] = e[j];
-                child = e[0].child;
-                count = e[0].count;
-                continue;
+                /* the nearest child next, the others stacked farthest
+                 * first when there are two of them */
+                unsigned k = (unsigned)__builtin_ctz(mask), m = mask & (mask - 1);
+                if (m == 0) {
+                    child = n->child[k];
+                    count = n->count[k];
+                    continue;
+                }
+                if ((m & (m - 1)) == 0) {
+                    unsigned j = (unsigned)__builtin_ctz(m);
+                    unsigned a = entry[j] < entry[k] ? j : k, b = a ^ j ^ k;
+                    stack[sp].t = entry[b];
+                    stack[sp].child = n->child[b];
+                    stack[sp].count = n->count[b];
+                    sp++;
+                    child = n->child[a];
+                    count = n->count[a];
+                    continue;
+                }
+                {
+                    wide_entry e[BVH_WIDE_LANES];
+                    unsigned c = wide_sorted(n, mask, entry, e), j;
+                    for (j = c; j-- > 1;)
+                        stack[sp++] = e[j];
+                    child = e[0].child;
+                    count = e[0].count;
+                    continue;
+                }
             }
         } else if (!(count & BVH_WIDE_MIXED)) {
             double t[2 * BVH_WIDE_LANES];
@@ -143,14 +164,17 @@ int WIDE_ANY(const struct bvh_wide *wide, const rayo_ray *ray, double t_min,
                 lane_boxes(n, &r, t_min, t_max, entry) & n->lanes;
             cost->node_tests += n->lane_count;
             if (mask != 0) {
-                /* Nearer children first: near objects are likelier
-                 * blockers. */
-                wide_entry e[BVH_WIDE_LANES];
-                unsigned c = wide_sorted(n, mask, entry, e), j;
-                for (j = c; j-- > 1;)
-                    stack[sp++] = e[j];
-                child = e[0].child;
-                count = e[0].count;
+                unsigned k = (unsigned)__builtin_ctz(mask);
+                mask &= mask - 1;
+                child = n->child[k];
+                count = n->count[k];
+                while (mask) {
+                    unsigned j = 31u - (unsigned)__builtin_clz(mask);
+                    mask &= ~(1u << j);
+                    stack[sp].child = n->child[j];
+                    stack[sp].count = n->count[j];
+                    sp++;
+                }
                 continue;
             }
         } else if (!(count & BVH_WIDE_MIXED)) {
