@@ -131,31 +131,55 @@ static double node_area(const bvh_node *n)
 typedef struct widener {
     const rayo_bvh *bvh;
     struct bvh_wide *wide;
-    rayo_bvh_sphere_fn sphere_of;
-    const void *context;
 } widener;
 
-/* The leaf's spheres into the arrays; its count, with BVH_WIDE_MIXED
- * when one of its primitives is not a sphere. */
-static uint16_t copy_leaf(widener *w, const bvh_node *leaf)
+/* The leaf's count, with BVH_WIDE_MIXED when one of its primitives is
+ * not a sphere of the arrays. */
+static uint16_t leaf_count_of(const widener *w, const bvh_node *leaf)
 {
-    struct bvh_wide *wide = w->wide;
     uint16_t count = (uint16_t)leaf->count;
     uint32_t k;
-    for (k = 0; k < leaf->count; k++) {
-        uint32_t at = leaf->first + k;
-        rayo_sphere s;
-        if (!w->sphere_of(w->context, w->bvh->prims[at], &s)) {
+    for (k = 0; k < leaf->count; k++)
+        if (!w->wide->sphere[leaf->first + k])
             count |= BVH_WIDE_MIXED;
+    return count;
+}
+
+/* The spheres into the arrays at their primitives' positions in leaf
+ * order: in the owner's order, through the inverse of prims, so the
+ * reads stream and the scattered writes overlap (reading the spheres in
+ * leaf order, each a dependent miss, took ten times longer).  0 without
+ * memory. */
+static int copy_spheres(const rayo_bvh *bvh, struct bvh_wide *wide,
+                        size_t prims, rayo_bvh_sphere_fn sphere_at,
+                        const void *context, size_t count)
+{
+    uint32_t *position, top = 0;
+    size_t p, i;
+    for (p = 0; p < prims; p++)
+        if (bvh->prims[p] > top)
+            top = bvh->prims[p];
+    position = malloc(((size_t)top + 1) * sizeof *position);
+    if (position == NULL)
+        return 0;
+    for (p = 0; p < (size_t)top + 1; p++)
+        position[p] = UINT32_MAX;
+    for (p = 0; p < prims; p++)
+        position[bvh->prims[p]] = (uint32_t)p;
+    for (i = 0; i < count; i++) {
+        uint32_t prim, at;
+        rayo_sphere s;
+        sphere_at(context, i, &prim, &s);
+        if (prim > top || (at = position[prim]) == UINT32_MAX)
             continue;
-        }
         wide->cx[at] = s.center.x;
         wide->cy[at] = s.center.y;
         wide->cz[at] = s.center.z;
         wide->rr[at] = s.radius * s.radius;
         wide->sphere[at] = 1;
     }
-    return count;
+    free(position);
+    return 1;
 }
 
 /* Makes the wide node for binary node `binary` (interior, or the root
@@ -212,7 +236,7 @@ static uint32_t widen_node(widener *w, uint32_t binary)
         uint16_t leaf_count = 0;
         if (n->count) {
             child = n->first;
-            leaf_count = copy_leaf(w, n);
+            leaf_count = leaf_count_of(w, n);
         } else {
             child = widen_node(w, kids[k]);
         }
@@ -223,8 +247,8 @@ static uint32_t widen_node(widener *w, uint32_t binary)
     return index;
 }
 
-rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_of,
-                           const void *context)
+rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
+                           const void *context, size_t count)
 {
     struct bvh_wide *wide;
     size_t prims = 0, i, capacity;
@@ -257,10 +281,12 @@ rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_of,
     wide->cz = wide->cy + (prims + BVH_WIDE_LANES);
     wide->rr = wide->cz + (prims + BVH_WIDE_LANES);
     wide->ids = bvh->prims;
+    if (!copy_spheres(bvh, wide, prims, sphere_at, context, count)) {
+        rayo_bvh_wide_free(wide);
+        return RAYO_ERR_NOMEM;
+    }
     w.bvh = bvh;
     w.wide = wide;
-    w.sphere_of = sphere_of;
-    w.context = context;
     widen_node(&w, 0);
     bvh->wide = wide;
     return RAYO_OK;

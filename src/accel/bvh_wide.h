@@ -44,20 +44,22 @@ void rayo_bvh_walk_set(rayo_bvh_walk walk);
 const char *rayo_bvh_walk_name(rayo_bvh_walk walk);
 
 /*
- * Tells whether primitive prim is a sphere, and if so which: 1 and
- * *sphere filled, or 0.
+ * Sphere i of the owner's count spheres: *prim, its primitive number in
+ * the tree, and *sphere.  Asked in order of i, which may follow the
+ * owner's memory.
  */
-typedef int (*rayo_bvh_sphere_fn)(const void *context, uint32_t prim,
-                                  rayo_sphere *sphere);
+typedef void (*rayo_bvh_sphere_fn)(const void *context, size_t i,
+                                   uint32_t *prim, rayo_sphere *sphere);
 
 /*
  * Makes the wide copy of a built hierarchy (replacing any earlier one),
- * with the spheres that sphere_of names.  Without memory it makes none
- * and returns RAYO_ERR_NOMEM; queries then walk the binary tree, with
- * the same answers.
+ * with the count spheres that sphere_at gives (every one a primitive of
+ * the tree; the other primitives are tested through the walks' callback).
+ * Without memory it makes none and returns RAYO_ERR_NOMEM; queries then
+ * walk the binary tree, with the same answers.
  */
-rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_of,
-                           const void *context);
+rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
+                           const void *context, size_t count);
 
 /*
  * rayo_bvh_nearest through the wide copy, when there is one and the walk

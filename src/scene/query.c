@@ -35,21 +35,19 @@ double rayo_scene_object_t(const rayo_scene *scene, uint32_t object,
     return INFINITY;
 }
 
-static int sphere_of(const void *context, uint32_t prim,
-                     rayo_sphere *sphere)
+static void sphere_at(const void *context, size_t i, uint32_t *prim,
+                      rayo_sphere *sphere)
 {
-    const rayo_scene *scene = context;
-    const scene_object *o = &scene->objects[prim];
-    if ((rayo_object_kind)o->kind != RAYO_OBJECT_SPHERE)
-        return 0;
-    *sphere = scene->spheres[o->index].shape;
-    return 1;
+    const scene_sphere *s = &((const rayo_scene *)context)->spheres[i];
+    *prim = s->object;
+    *sphere = s->shape;
 }
 
 void rayo_scene_prepare_walks(rayo_scene *scene)
 {
     if (scene->bvh != NULL)
-        (void)rayo_bvh_widen(scene->bvh, sphere_of, scene);
+        (void)rayo_bvh_widen(scene->bvh, sphere_at, scene,
+                             scene->sphere_count);
 }
 
 typedef struct occlusion_context {
