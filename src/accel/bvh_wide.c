@@ -25,13 +25,14 @@
 #include "bvh_wide_impl.h"
 #include "bvh_wide_isa.h"
 
-#include <pthread.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
-static rayo_bvh_walk walk_in_use = RAYO_BVH_WALK_BINARY;
-static int packets_wanted = 1;
-static pthread_once_t walk_once = PTHREAD_ONCE_INIT;
+/* -1 until the environment is read.  Threads that read it at once all
+ * store the same values; queries load them relaxed (a plain load). */
+static atomic_int walk_in_use = -1;
+static atomic_int packets_wanted = -1;
 
 int rayo_bvh_walk_available(rayo_bvh_walk walk)
 {
@@ -65,35 +66,44 @@ static void walk_init(void)
         walk = RAYO_BVH_WALK_BINARY;
     else if (name != NULL && strcmp(name, "sse2") == 0)
         walk = RAYO_BVH_WALK_SSE2;
-    walk_in_use = best_available(walk);
     name = getenv("RAYO_PACKETS");
-    packets_wanted = !(name != NULL && strcmp(name, "0") == 0);
+    atomic_store(&packets_wanted,
+                 !(name != NULL && strcmp(name, "0") == 0));
+    atomic_store(&walk_in_use, (int)best_available(walk));
+}
+
+static rayo_bvh_walk walk_loaded(void)
+{
+    return (rayo_bvh_walk)atomic_load_explicit(&walk_in_use,
+                                               memory_order_relaxed);
 }
 
 rayo_bvh_walk rayo_bvh_walk_current(void)
 {
-    pthread_once(&walk_once, walk_init);
-    return walk_in_use;
+    if (atomic_load(&walk_in_use) < 0)
+        walk_init();
+    return walk_loaded();
 }
 
 void rayo_bvh_walk_set(rayo_bvh_walk walk)
 {
-    pthread_once(&walk_once, walk_init);
-    walk_in_use = best_available(walk);
+    (void)rayo_bvh_walk_current();
+    atomic_store(&walk_in_use, (int)best_available(walk));
 }
 
 void rayo_bvh_packets_set(int on)
 {
-    pthread_once(&walk_once, walk_init);
-    packets_wanted = on != 0;
+    (void)rayo_bvh_walk_current();
+    atomic_store(&packets_wanted, on != 0);
 }
 
 /* Packets are AVX2 code: they run with the AVX2 walk (so RAYO_WALK=sse2
  * or binary runs no AVX2 at all, as on a processor without it). */
 int rayo_bvh_packets_on(const rayo_bvh *bvh)
 {
-    return bvh != NULL && bvh->wide != NULL && packets_wanted &&
-           walk_in_use == RAYO_BVH_WALK_AVX2 && bvh_packet_avx2_built();
+    return bvh != NULL && bvh->wide != NULL &&
+           atomic_load_explicit(&packets_wanted, memory_order_relaxed) > 0 &&
+           walk_loaded() == RAYO_BVH_WALK_AVX2 && bvh_packet_avx2_built();
 }
 
 const char *rayo_bvh_walk_name(rayo_bvh_walk walk)
@@ -299,8 +309,8 @@ int rayo_bvh_wide_nearest(const rayo_bvh *bvh, const rayo_ray *ray,
 {
     if (bvh->wide == NULL)
         return 0;
-    /* rayo_bvh_widen resolved the setting before this copy existed */
-    switch (walk_in_use) {
+    /* rayo_bvh_widen read the setting before this copy existed */
+    switch (walk_loaded()) {
     case RAYO_BVH_WALK_BINARY:
         return 0;
     case RAYO_BVH_WALK_SSE2:
@@ -322,7 +332,7 @@ int rayo_bvh_wide_any(const rayo_bvh *bvh, const rayo_ray *ray,
 {
     if (bvh->wide == NULL)
         return -1;
-    switch (walk_in_use) {
+    switch (walk_loaded()) {
     case RAYO_BVH_WALK_BINARY:
         return -1;
     case RAYO_BVH_WALK_SSE2:
