@@ -17,9 +17,11 @@
  * arithmetic is the scalar one).
  *
  * The walk is chosen once per process, from RAYO_WALK (binary, sse2,
- * avx2), else the fastest one the processor runs: AVX2 where
- * __builtin_cpu_supports says so (the processor and the system's saving
- * of its registers), SSE2 on any x86-64, the binary walk elsewhere.
+ * avx2), else the fastest one the processor runs: AVX2 (with packets,
+ * bvh_packet.h) where __builtin_cpu_supports says so (the processor and
+ * the system's saving of its registers), else the binary walk (the SSE2
+ * wide walk, which any x86-64 runs, measured no faster than it: it stays
+ * for RAYO_WALK=sse2, the tests and the bench).
  */
 #include "bvh_packet.h"
 #include "bvh_wide_impl.h"
@@ -66,6 +68,10 @@ static void walk_init(void)
         walk = RAYO_BVH_WALK_BINARY;
     else if (name != NULL && strcmp(name, "sse2") == 0)
         walk = RAYO_BVH_WALK_SSE2;
+    else if (!rayo_bvh_walk_available(RAYO_BVH_WALK_AVX2))
+        /* the SSE2 wide walk measured no faster than the binary one
+         * (docs/performance.md), which needs no copy */
+        walk = RAYO_BVH_WALK_BINARY;
     name = getenv("RAYO_PACKETS");
     atomic_store(&packets_wanted,
                  !(name != NULL && strcmp(name, "0") == 0));

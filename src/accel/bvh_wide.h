@@ -8,8 +8,9 @@
  * (bvh.c) walk it, and every fast walk must give their answers bit for
  * bit (docs/geometry.md, "Exactness").  Which walk runs is one setting
  * for the whole process, chosen once from the environment variable
- * RAYO_WALK (binary, sse2, avx2; unset or anything else: the fastest the
- * processor has) and changeable by tests with rayo_bvh_walk_set.
+ * RAYO_WALK (binary, sse2, avx2; unset or anything else: avx2 where the
+ * processor has it, else binary) and changeable by tests with
+ * rayo_bvh_walk_set.
  */
 #ifndef RAYO_ACCEL_BVH_WIDE_H
 #define RAYO_ACCEL_BVH_WIDE_H
