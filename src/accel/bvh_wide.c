@@ -155,6 +155,11 @@ static uint16_t leaf_count_of(const widener *w, const bvh_node *leaf)
 {
     uint16_t count = (uint16_t)leaf->count;
     uint32_t k;
+    /* The lanes test at most 2 x 4 spheres a leaf (bvh_wide_walk.h);
+     * a builder making bigger leaves gets the callback for them. */
+    if (leaf->count > 2 * BVH_WIDE_LANES)
+        return (uint16_t)(BVH_WIDE_MIXED |
+                          (leaf->count & BVH_WIDE_COUNT));
     for (k = 0; k < leaf->count; k++)
         if (!w->wide->sphere[leaf->first + k])
             count |= BVH_WIDE_MIXED;
@@ -198,16 +203,12 @@ static int copy_spheres(const rayo_bvh *bvh, struct bvh_wide *wide,
     return 1;
 }
 
-/* Makes the wide node for binary node `binary` (interior, or the root
- * leaf of a one-leaf tree); returns its index. */
-static uint32_t widen_node(widener *w, uint32_t binary)
+/* The children of the wide node made from binary node `binary`
+ * (interior, or the root leaf of a one-leaf tree) into kids; how many. */
+static unsigned collapse(const bvh_node *nodes, uint32_t binary,
+                         uint32_t *kids)
 {
-    const bvh_node *nodes = w->bvh->nodes;
-    struct bvh_wide *wide = w->wide;
-    uint32_t index = (uint32_t)wide->node_count++, kids[BVH_WIDE_LANES];
-    bvh_wide_node *out = &wide->nodes[index];
     unsigned count = 0, k;
-    int a, side;
     if (nodes[binary].count) {
         kids[count++] = binary;
     } else {
@@ -230,6 +231,31 @@ static uint32_t widen_node(widener *w, uint32_t binary)
         kids[count++] = nodes[kids[pick]].first + 1;
         kids[pick] = nodes[kids[pick]].first;
     }
+    return count;
+}
+
+/* How many wide nodes the collapse of binary's subtree makes. */
+static size_t wide_count(const bvh_node *nodes, uint32_t binary)
+{
+    uint32_t kids[BVH_WIDE_LANES];
+    unsigned count = collapse(nodes, binary, kids), k;
+    size_t total = 1;
+    for (k = 0; k < count; k++)
+        if (!nodes[kids[k]].count)
+            total += wide_count(nodes, kids[k]);
+    return total;
+}
+
+/* Makes the wide node for binary node `binary` (as collapse); returns
+ * its index. */
+static uint32_t widen_node(widener *w, uint32_t binary)
+{
+    const bvh_node *nodes = w->bvh->nodes;
+    struct bvh_wide *wide = w->wide;
+    uint32_t index = (uint32_t)wide->node_count++, kids[BVH_WIDE_LANES];
+    bvh_wide_node *out = &wide->nodes[index];
+    unsigned count = collapse(nodes, binary, kids), k;
+    int a, side;
     memset(out, 0, sizeof *out);
     for (k = 0; k < BVH_WIDE_LANES; k++)
         for (a = 0; a < 3; a++) {
@@ -274,11 +300,12 @@ rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
     (void)rayo_bvh_walk_current(); /* the queries read walk_in_use */
     if (bvh->node_count == 0)
         return RAYO_OK;
-    /* A wide node takes at least one binary interior node, and a tree of
-     * n nodes has (n - 1) / 2 of them (one wide node for a lone leaf). */
-    capacity = bvh->node_count / 2 + 1;
-    for (i = 0; i < bvh->node_count; i++)
+    capacity = wide_count(bvh->nodes, 0);
+    for (i = 0; i < bvh->node_count; i++) {
+        if (bvh->nodes[i].count > BVH_WIDE_COUNT)
+            return RAYO_ERR_LIMIT; /* no copy: the binary walk serves */
         prims += bvh->nodes[i].count;
+    }
     if (capacity > SIZE_MAX / sizeof *wide->nodes ||
         prims > SIZE_MAX / 4 / sizeof *wide->cx - BVH_WIDE_LANES)
         return RAYO_ERR_NOMEM;
