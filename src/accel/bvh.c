@@ -8,11 +8,14 @@
  * one at a time; the nearest-hit query visits the nearer child first and
  * skips any subtree whose box begins beyond the best hit so far; the
  * any-hit query also goes nearer child first, as near objects are the
- * likelier blockers.
+ * likelier blockers.  "Beyond the best hit" means beyond bvh_reach of it
+ * (bvh_impl.h), a hair past, so that the answer never depends on the
+ * order of the walk.
  * Box tests treat NaN (a zero direction component on a slab's plane) as
  * "may hit", so culling is conservative.
  */
 #include "bvh_impl.h"
+#include "bvh_wide.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -26,6 +29,7 @@ void rayo_bvh_free(rayo_bvh *bvh)
 {
     if (bvh == NULL)
         return;
+    rayo_bvh_wide_free(bvh->wide);
     free(bvh->nodes);
     free(bvh->prims);
     free(bvh);
@@ -163,7 +167,8 @@ void rayo_bvh_nearest(const rayo_bvh *bvh, const rayo_ray *ray, double t_min,
         return;
     box_ray_init(&r, ray);
     cost->node_tests++;
-    if (box_entry(&bvh->nodes[0], &r, t_min, closer(*best_t, t_max)) ==
+    if (box_entry(&bvh->nodes[0], &r, t_min,
+                  closer(bvh_reach(*best_t), t_max)) ==
         INFINITY)
         return;
     for (;;) {
@@ -172,7 +177,7 @@ void rayo_bvh_nearest(const rayo_bvh *bvh, const rayo_ray *ray, double t_min,
             test_leaf(bvh, n, ray, t_min, t_max, test, context, best_t,
                       best_id, cost);
         } else {
-            double limit = closer(*best_t, t_max), tl, tr;
+            double limit = closer(bvh_reach(*best_t), t_max), tl, tr;
             pair_entry(&bvh->nodes[n->first], &r, t_min, limit, &tl, &tr);
             cost->node_tests += 2;
             if (tl != INFINITY && tr != INFINITY) {
@@ -196,7 +201,7 @@ void rayo_bvh_nearest(const rayo_bvh *bvh, const rayo_ray *ray, double t_min,
             if (sp == 0)
                 return;
             sp--;
-            if (stack[sp].t <= *best_t)
+            if (stack[sp].t <= bvh_reach(*best_t))
                 break;
         }
         node = stack[sp].node;

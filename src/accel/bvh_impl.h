@@ -27,10 +27,30 @@ typedef struct bvh_node {
     uint32_t count; /* primitives in a leaf; 0 for an interior node */
 } bvh_node;
 
+/*
+ * How far a box may begin past the best hit so far and still be entered
+ * by the nearest-hit walks: a little past it.  A box is only as sure as
+ * its padding (rayo_box_pad), and a flat box at coordinate 0 gets none:
+ * the box of a triangle in the plane y = 0 has the hit's own t as its
+ * entry, computed another way, an ulp or two either side of the
+ * triangle's t.  With the best hit exactly there (another triangle
+ * sharing the edge, hit at the same t) the walk that met the higher
+ * object first would then skip the lower one's box, and the answer would
+ * hang on the order of the walk.  2^-40 relative (some 4,000 ulps) keeps
+ * every walk's answer the smallest (t, object) of all, whatever the
+ * order, and costs nothing measurable.
+ */
+static inline double bvh_reach(double best)
+{
+    return best + (best < 0 ? -best : best) * 0x1p-40;
+}
+
 struct rayo_bvh {
     bvh_node *nodes;
     size_t node_count;
     uint32_t *prims; /* primitive ids in leaf order */
+    struct bvh_wide *wide; /* the fast walks' copy (bvh_wide.h), or NULL;
+                              the builder's calloc leaves it NULL */
 };
 
 #endif

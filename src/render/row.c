@@ -12,24 +12,42 @@
 #include "row_plan.h"
 #include "shade.h"
 
+#include "../scene/query_packet.h"
+
 /* Pixels of the hit loop between two polls of the stop: a pixel is one
  * ray, and a poll would cost a good part of a cheap one. */
 #define HIT_PIXELS_PER_POLL 64u
 
-/* The per-pixel loop of hit mode. */
+/* The per-pixel loop of hit mode, four neighbouring pixels' rays at a
+ * time (query_packet.h: each ray gets its own answer). */
 static void render_row_hit(const rayo_camera *camera, const rayo_scene *scene,
                            rayo_render_stop *stop, uint32_t row,
                            unsigned char *out)
 {
     uint32_t i;
     memset(out, 0, ((size_t)camera->width + 7) / 8);
-    for (i = 0; i < camera->width; i++) {
-        rayo_ray ray;
+    for (i = 0; i < camera->width; i += RAYO_SCENE_PACKET) {
+        rayo_ray rays[RAYO_SCENE_PACKET];
+        double t_min[RAYO_SCENE_PACKET], t_max[RAYO_SCENE_PACKET];
+        size_t skip[RAYO_SCENE_PACKET];
+        unsigned k, n = camera->width - i < RAYO_SCENE_PACKET
+                            ? camera->width - i
+                            : RAYO_SCENE_PACKET,
+                    hits;
         if (i % HIT_PIXELS_PER_POLL == 0 && rayo_render_stopping(stop))
             return;
-        ray = rayo_camera_ray(camera, (double)i, (double)row);
-        if (rayo_scene_hit_any(scene, &ray, 0.0))
-            out[i >> 3] = (unsigned char)(out[i >> 3] | (0x80u >> (i & 7)));
+        for (k = 0; k < n; k++) {
+            rays[k] = rayo_camera_ray(camera, (double)(i + k), (double)row);
+            t_min[k] = 0.0;
+            t_max[k] = INFINITY;
+            skip[k] = RAYO_NO_OBJECT;
+        }
+        hits = rayo_scene_occluded_packet(scene, rays, (1u << n) - 1, t_min,
+                                          t_max, skip);
+        for (k = 0; k < n; k++)
+            if ((hits >> k) & 1u)
+                out[(i + k) >> 3] = (unsigned char)(out[(i + k) >> 3] |
+                                                    (0x80u >> ((i + k) & 7)));
     }
 }
 

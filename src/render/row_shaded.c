@@ -71,6 +71,30 @@ static int pixel_sum(const rayo_camera *camera, const rayo_scene *scene,
     return 1;
 }
 
+/* pixel_sum for up to four neighbouring pixels of one ray each, in
+ * phong: the rays are pixel_sum's, shaded as a packet
+ * (rayo_shade_phong_packet gives each what rayo_shade_phong gives), and
+ * each sum is pixel_sum's 0 + value.  0 when the stop came first. */
+static int phong_sums(const rayo_camera *camera, const rayo_scene *scene,
+                      const rayo_render_options *options,
+                      rayo_render_stop *stop, uint32_t i, uint32_t j,
+                      unsigned count, rayo_vec3 *sums)
+{
+    rayo_ray rays[4];
+    rayo_vec3 values[4];
+    double dx = (0 + 0.5) / 1 - 0.5, dy = dx;
+    unsigned k;
+    if (rayo_render_stopping(stop))
+        return 0;
+    for (k = 0; k < count; k++)
+        rays[k] = rayo_camera_ray(camera, (double)(i + k) + dx,
+                                  (double)j + dy);
+    rayo_shade_phong_packet(scene, rays, count, options->depth, values);
+    for (k = 0; k < count; k++)
+        sums[k] = rayo_vec3_add(rayo_vec3_make(0, 0, 0), values[k]);
+    return 1;
+}
+
 static unsigned char course_byte(double c)
 {
     return (unsigned char)(255.0 * c);
@@ -92,14 +116,27 @@ void rayo_render_row_shaded(const rayo_camera *camera,
                             unsigned char *out)
 {
     double rays = (double)sample_count(options) * sample_count(options);
-    uint32_t i;
+    int packets =
+        options->shade == RAYO_SHADE_PHONG && sample_count(options) == 1;
+    rayo_vec3 ahead[4];
+    uint32_t i, first = 0, count = 0;
     if (options->shade == RAYO_SHADE_HIT)
         memset(out, 0, ((size_t)camera->width + 7) / 8);
     for (i = 0; i < camera->width; i++) {
         rayo_vec3 sum, c;
         unsigned char *rgb = out + 3 * (size_t)i;
-        if (!pixel_sum(camera, scene, options, stop, i, row, &sum))
+        if (packets) {
+            if (i >= first + count) {
+                first = i;
+                count = camera->width - i < 4 ? camera->width - i : 4;
+                if (!phong_sums(camera, scene, options, stop, i, row, count,
+                                ahead))
+                    return;
+            }
+            sum = ahead[i - first];
+        } else if (!pixel_sum(camera, scene, options, stop, i, row, &sum)) {
             return;
+        }
         c = rayo_vec3_scale(sum, 1.0 / rays);
         switch (options->shade) {
         case RAYO_SHADE_HIT:

@@ -45,6 +45,13 @@ rayo_vec3 rayo_shade_phong(const rayo_scene *scene, const rayo_ray *ray,
                            unsigned depth);
 
 /*
+ * rayo_shade_phong(scene, &rays[k], depth) into out[k] for each k < count
+ * (count <= 4), bit for bit, the rays' walks shared (shade_phong.c).
+ */
+void rayo_shade_phong_packet(const rayo_scene *scene, const rayo_ray *rays,
+                             unsigned count, unsigned depth, rayo_vec3 *out);
+
+/*
  * One row of any mode with options->samples x options->samples rays per
  * pixel (hit mode: black where at least half of them hit).  Polls stop
  * (may be NULL) before each ray, and abandons the row, incomplete, when

@@ -83,6 +83,7 @@ rayo_status rayo_scene_prepare_threads(rayo_scene *scene, unsigned threads,
     if (status != RAYO_OK)
         return status;
     scene->bvh = bvh;
+    rayo_scene_prepare_walks(scene);
     scene->prepared = 1;
     return RAYO_OK;
 }

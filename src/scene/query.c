@@ -10,6 +10,11 @@
  */
 #include "scene_impl.h"
 
+#include "query_packet.h"
+
+#include "../accel/bvh_packet.h"
+#include "../accel/bvh_wide.h"
+
 double rayo_scene_object_t(const rayo_scene *scene, uint32_t object,
                            const rayo_ray *ray, double t_min, double t_max)
 {
@@ -28,6 +33,21 @@ double rayo_scene_object_t(const rayo_scene *scene, uint32_t object,
                                        ray, t_min, t_max);
     }
     return INFINITY;
+}
+
+static void sphere_at(const void *context, size_t i, uint32_t *prim,
+                      rayo_sphere *sphere)
+{
+    const scene_sphere *s = &((const rayo_scene *)context)->spheres[i];
+    *prim = s->object;
+    *sphere = s->shape;
+}
+
+void rayo_scene_prepare_walks(rayo_scene *scene)
+{
+    if (scene->bvh != NULL)
+        (void)rayo_bvh_widen(scene->bvh, sphere_at, scene,
+                             scene->sphere_count);
 }
 
 typedef struct occlusion_context {
@@ -126,8 +146,11 @@ int rayo_scene_intersect_counted(const rayo_scene *scene,
     if (scene->bvh != NULL) {
         rayo_bvh_cost cost = {0, 0};
         nearest_planes(scene, ray, t_min, t_max, &best_t, &best, stats);
-        rayo_bvh_nearest(scene->bvh, ray, t_min, t_max, nearest_test, scene,
-                         &best_t, &best, &cost);
+        if (!rayo_bvh_wide_nearest(scene->bvh, ray, t_min, t_max,
+                                   nearest_test, scene, &best_t, &best,
+                                   &cost))
+            rayo_bvh_nearest(scene->bvh, ray, t_min, t_max, nearest_test,
+                             scene, &best_t, &best, &cost);
         stats->node_tests += cost.node_tests;
         stats->prim_tests += cost.prim_tests;
     } else {
@@ -185,8 +208,13 @@ int rayo_scene_occluded_counted(const rayo_scene *scene,
     }
     context.scene = scene;
     context.skip = skip;
-    found = rayo_bvh_any(scene->bvh, ray, t_min, t_max, occlusion_test,
-                         &context, &cost);
+    found = rayo_bvh_wide_any(scene->bvh, ray, t_min, t_max,
+                              skip < UINT32_MAX ? (uint32_t)skip
+                                                : UINT32_MAX,
+                              occlusion_test, &context, &cost);
+    if (found < 0)
+        found = rayo_bvh_any(scene->bvh, ray, t_min, t_max, occlusion_test,
+                             &context, &cost);
     stats->node_tests += cost.node_tests;
     stats->prim_tests += cost.prim_tests;
     return found;
@@ -204,4 +232,78 @@ int rayo_scene_hit_any(const rayo_scene *scene, const rayo_ray *ray,
                        double t_min)
 {
     return rayo_scene_occluded(scene, ray, t_min, INFINITY, RAYO_NO_OBJECT);
+}
+
+unsigned rayo_scene_intersect_packet(const rayo_scene *scene,
+                                     const rayo_ray *rays, unsigned count,
+                                     double t_min, rayo_hit *hits)
+{
+    double best_t[RAYO_BVH_PACKET];
+    uint32_t best[RAYO_BVH_PACKET];
+    unsigned k, found = 0;
+    if (count > RAYO_SCENE_PACKET)
+        count = RAYO_SCENE_PACKET;
+    if (!rayo_bvh_packets_on(scene->bvh)) {
+        for (k = 0; k < count; k++)
+            if (rayo_scene_intersect(scene, &rays[k], t_min, INFINITY,
+                                     &hits[k]))
+                found |= 1u << k;
+        return found;
+    }
+    for (k = 0; k < RAYO_BVH_PACKET; k++) {
+        rayo_scene_stats stats = {0, 0, 0};
+        best_t[k] = INFINITY;
+        best[k] = UINT32_MAX;
+        if (k < count)
+            nearest_planes(scene, &rays[k], t_min, INFINITY, &best_t[k],
+                           &best[k], &stats);
+    }
+    rayo_bvh_packet_nearest(scene->bvh, rays, (1u << count) - 1, t_min,
+                            INFINITY, nearest_test, scene, best_t, best);
+    for (k = 0; k < count; k++)
+        if (best[k] != UINT32_MAX) {
+            fill_hit(scene, &rays[k], best[k], best_t[k], &hits[k]);
+            found |= 1u << k;
+        }
+    return found;
+}
+
+unsigned rayo_scene_occluded_packet(const rayo_scene *scene,
+                                    const rayo_ray *rays, unsigned lanes,
+                                    const double *t_min, const double *t_max,
+                                    const size_t *skip)
+{
+    uint32_t skip32[RAYO_BVH_PACKET];
+    unsigned k, blocked = 0, open = 0;
+    lanes &= (1u << RAYO_SCENE_PACKET) - 1;
+    if (!rayo_bvh_packets_on(scene->bvh)) {
+        for (k = 0; k < RAYO_SCENE_PACKET; k++)
+            if ((lanes >> k) & 1u &&
+                rayo_scene_occluded(scene, &rays[k], t_min[k], t_max[k],
+                                    skip[k]))
+                blocked |= 1u << k;
+        return blocked;
+    }
+    for (k = 0; k < RAYO_SCENE_PACKET; k++) {
+        size_t i;
+        skip32[k] = UINT32_MAX;
+        if (!((lanes >> k) & 1u))
+            continue;
+        skip32[k] = skip[k] < UINT32_MAX ? (uint32_t)skip[k] : UINT32_MAX;
+        for (i = 0; i < scene->plane_count; i++) {
+            if (scene->planes[i].object == skip[k])
+                continue;
+            if (rayo_plane_intersect(&scene->planes[i].shape, &rays[k],
+                                     t_min[k], t_max[k]) < INFINITY)
+                break;
+        }
+        if (i < scene->plane_count)
+            blocked |= 1u << k;
+        else
+            open |= 1u << k;
+    }
+    if (open)
+        blocked |= rayo_bvh_packet_any(scene->bvh, rays, open, t_min, t_max,
+                                       skip32, nearest_test, scene);
+    return blocked;
 }

@@ -8,6 +8,12 @@
  * material, and the same shadow-ray verdict with and without a skipped
  * object.  Degenerate scenes (every sphere at one point, one object, no
  * object, only planes) and the tree's shape and cost are checked too.
+ * Everything that walks the tree runs once per walk (src/accel/bvh_wide.h:
+ * the binary reference, the wide walk in SSE2 and in AVX2 lanes where the
+ * processor has it) and with packets of four rays off and on
+ * (bvh_packet.h), whose answers are checked ray by ray against the brute
+ * force ones, for coherent packets (four rays from one point to
+ * neighbouring targets) and scattered ones, with parts of a packet unused.
  */
 #include <math.h>
 #include <stdint.h>
@@ -16,6 +22,9 @@
 #include "tap.h"
 
 #include "../../src/accel/bvh.h"
+#include "../../src/accel/bvh_packet.h"
+#include "../../src/accel/bvh_wide.h"
+#include "../../src/scene/query_packet.h"
 #include "../../src/scene/scene_impl.h"
 
 static double uniform(rayo_lcg *g, double lo, double hi)
@@ -77,6 +86,7 @@ static void fill_random(rayo_scene *s, uint64_t seed, size_t spheres,
 
 typedef struct tally {
     size_t rays, hits, nearest_bad, occluded_bad, occluded_true;
+    size_t packet_bad;
 } tally;
 
 static int same_hit(int h1, const rayo_hit *a, int h2, const rayo_hit *b)
@@ -117,6 +127,42 @@ static void compare_ray(const rayo_scene *brute, const rayo_scene *tree,
                                                      skip);
 }
 
+/*
+ * The packet queries (query_packet.h) for rays[0..count-1] against the
+ * brute-force scene, ray by ray: nearest hits from t_min, and shadow rays
+ * with each ray's own t_max and skipped object, lanes picked by `lanes`.
+ */
+static void compare_packet(const rayo_scene *brute, const rayo_scene *tree,
+                           const rayo_ray *rays, unsigned count,
+                           double t_min, unsigned lanes, rayo_lcg *g,
+                           tally *t)
+{
+    rayo_hit want[RAYO_SCENE_PACKET], got[RAYO_SCENE_PACKET];
+    double lo[RAYO_SCENE_PACKET], hi[RAYO_SCENE_PACKET];
+    size_t skip[RAYO_SCENE_PACKET];
+    unsigned k, found = rayo_scene_intersect_packet(tree, rays, count, t_min,
+                                                    got),
+                blocked, expect = 0;
+    lanes &= (1u << count) - 1;
+    for (k = 0; k < count; k++) {
+        int h = rayo_scene_intersect(brute, &rays[k], t_min, INFINITY,
+                                     &want[k]);
+        if (!same_hit(h, &want[k], (int)((found >> k) & 1u), &got[k]))
+            t->packet_bad++;
+        lo[k] = t_min;
+        hi[k] = h && k % 2 ? want[k].t * uniform(g, 0.5, 1.5) : INFINITY;
+        skip[k] = h && k != 2 ? want[k].object : RAYO_NO_OBJECT;
+        if ((lanes >> k) & 1u &&
+            rayo_scene_occluded(brute, &rays[k], lo[k], hi[k], skip[k]))
+            expect |= 1u << k;
+    }
+    if (found >> count)
+        t->packet_bad++;
+    blocked = rayo_scene_occluded_packet(tree, rays, lanes, lo, hi, skip);
+    if (blocked != expect)
+        t->packet_bad++;
+}
+
 /* A point near object k of the spheres-then-triangles list. */
 static rayo_vec3 near_object(const rayo_scene *s, size_t k, rayo_lcg *g)
 {
@@ -141,9 +187,11 @@ static void compare_scenes(const rayo_scene *brute, const rayo_scene *tree,
 {
     rayo_lcg g;
     size_t i, aimable = brute->sphere_count + brute->triangle_count;
+    rayo_ray scattered[RAYO_SCENE_PACKET];
     rayo_lcg_seed(&g, seed);
     for (i = 0; i < rays; i++) {
-        rayo_ray r;
+        rayo_ray r, coherent[RAYO_SCENE_PACKET];
+        unsigned lane;
         r.origin = random_point(&g, 15);
         r.direction = random_direction(&g);
         if (i % 2 && aimable > 0) {
@@ -155,6 +203,20 @@ static void compare_scenes(const rayo_scene *brute, const rayo_scene *tree,
         }
         compare_ray(brute, tree, &r, 0.0, &g, t);
         compare_ray(brute, tree, &r, uniform(&g, 0, 10), &g, t);
+        /* four rays from r's origin, fanned out a little around it */
+        for (lane = 0; lane < RAYO_SCENE_PACKET; lane++) {
+            coherent[lane].origin = r.origin;
+            coherent[lane].direction = rayo_vec3_normalize(rayo_vec3_add(
+                r.direction, rayo_vec3_scale(random_point(&g, 1), 0.02)));
+        }
+        compare_packet(brute, tree, coherent, RAYO_SCENE_PACKET, 0.0,
+                       (unsigned)(i % 16), &g, t);
+        compare_packet(brute, tree, coherent, (unsigned)(1 + i % 4),
+                       uniform(&g, 0, 10), 15u >> (i % 4), &g, t);
+        scattered[i % RAYO_SCENE_PACKET] = r;
+        if (i % RAYO_SCENE_PACKET == RAYO_SCENE_PACKET - 1)
+            compare_packet(brute, tree, scattered, RAYO_SCENE_PACKET, 0.0,
+                           15u, &g, t);
     }
 }
 
@@ -166,6 +228,7 @@ static void compare_axis_rays(const rayo_scene *brute, const rayo_scene *tree,
 {
     rayo_lcg g;
     size_t i, n = rayo_scene_sphere_count(brute);
+    rayo_ray packet[RAYO_SCENE_PACKET];
     rayo_lcg_seed(&g, seed);
     for (i = 0; i < rays && n > 0; i++) {
         const rayo_sphere *s =
@@ -187,6 +250,10 @@ static void compare_axis_rays(const rayo_scene *brute, const rayo_scene *tree,
         r.origin = rayo_vec3_make(o[0], o[1], o[2]);
         r.direction = rayo_vec3_make(d[0], d[1], d[2]);
         compare_ray(brute, tree, &r, 0.0, &g, t);
+        packet[i % RAYO_SCENE_PACKET] = r;
+        if (i % RAYO_SCENE_PACKET == RAYO_SCENE_PACKET - 1)
+            compare_packet(brute, tree, packet, RAYO_SCENE_PACKET, 0.0, 15u,
+                           &g, t);
     }
 }
 
@@ -195,7 +262,7 @@ static void check_same(const char *name, uint64_t seed, size_t spheres,
 {
     rayo_scene *brute, *tree;
     rayo_error err;
-    tally t = {0, 0, 0, 0, 0};
+    tally t = {0, 0, 0, 0, 0, 0};
     rayo_scene_create(&brute, &err);
     rayo_scene_create(&tree, &err);
     fill_random(brute, seed, spheres, triangles, planes);
@@ -206,6 +273,7 @@ static void check_same(const char *name, uint64_t seed, size_t spheres,
     is_int(t.nearest_bad, 0, "%s: %lu rays, same nearest hits", name,
            (unsigned long)t.rays);
     is_int(t.occluded_bad, 0, "%s: same shadow-ray answers", name);
+    is_int(t.packet_bad, 0, "%s: packets of rays, the same answers", name);
     ok(spheres + triangles + planes == 0 || t.hits * 4 > t.rays,
        "%s: the rays are not vacuous (%lu of %lu hit)", name,
        (unsigned long)t.hits, (unsigned long)t.rays);
@@ -219,7 +287,8 @@ static void check_scaled(double scale, const char *name)
     rayo_scene *brute, *tree;
     rayo_error err;
     rayo_lcg g;
-    tally t = {0, 0, 0, 0, 0};
+    tally t = {0, 0, 0, 0, 0, 0};
+    rayo_ray packet[RAYO_SCENE_PACKET];
     size_t i;
     rayo_scene_create(&brute, &err);
     rayo_scene_create(&tree, &err);
@@ -242,8 +311,12 @@ static void check_scaled(double scale, const char *name)
                                                      s->radius)),
             r.origin));
         compare_ray(brute, tree, &r, 0.0, &g, &t);
+        packet[i % RAYO_SCENE_PACKET] = r;
+        if (i % RAYO_SCENE_PACKET == RAYO_SCENE_PACKET - 1)
+            compare_packet(brute, tree, packet, RAYO_SCENE_PACKET, 0.0, 15u,
+                           &g, &t);
     }
-    is_int(t.nearest_bad + t.occluded_bad, 0,
+    is_int(t.nearest_bad + t.occluded_bad + t.packet_bad, 0,
            "%s: hierarchy agrees with brute force", name);
     ok(t.hits * 2 > t.rays, "%s: most rays hit (%lu of %lu)", name,
        (unsigned long)t.hits, (unsigned long)t.rays);
@@ -267,7 +340,7 @@ static void check_one_point(void)
     rayo_error err;
     rayo_hit h;
     rayo_ray r;
-    tally t = {0, 0, 0, 0, 0};
+    tally t = {0, 0, 0, 0, 0, 0};
     size_t i;
     rayo_scene_create(&brute, &err);
     rayo_scene_create(&tree, &err);
@@ -575,17 +648,105 @@ static void check_cloud(void)
     rayo_scene_free(b);
 }
 
-int main(void)
+/* Rays that touch a sphere's outline exactly (delta == 0, a hit by the
+ * assignment's >= 0): spheres of radius 1 at (3i, 0, 4), rays from
+ * (3i + 1, 0, 0) along z. */
+static void check_tangent(void)
 {
+    rayo_scene *s;
+    rayo_error err;
+    rayo_ray rays[RAYO_SCENE_PACKET];
+    rayo_hit hits[RAYO_SCENE_PACKET];
+    double lo[RAYO_SCENE_PACKET] = {0, 0, 0, 0};
+    double hi[RAYO_SCENE_PACKET] = {INFINITY, INFINITY, INFINITY, INFINITY};
+    size_t skip[RAYO_SCENE_PACKET] = {RAYO_NO_OBJECT, RAYO_NO_OBJECT,
+                                      RAYO_NO_OBJECT, RAYO_NO_OBJECT};
+    unsigned i, single = 0, packed = 0, blocked = 0;
+    rayo_scene_create(&s, &err);
+    for (i = 0; i < 40; i++)
+        rayo_scene_add_sphere(s, rayo_vec3_make(3.0 * i, 0, 4), 1, &err);
+    rayo_scene_prepare(s, &err);
+    for (i = 0; i < 40; i++) {
+        rayo_ray *r = &rays[i % RAYO_SCENE_PACKET];
+        rayo_hit h;
+        r->origin = rayo_vec3_make(3.0 * i + 1, 0, 0);
+        r->direction = rayo_vec3_make(0, 0, 1);
+        single += rayo_scene_intersect(s, r, 0, INFINITY, &h) && h.t == 4 &&
+                  h.object == i && rayo_scene_hit_any(s, r, 0);
+        if (i % RAYO_SCENE_PACKET == RAYO_SCENE_PACKET - 1) {
+            unsigned k, found =
+                rayo_scene_intersect_packet(s, rays, 4, 0, hits);
+            for (k = 0; k < 4; k++)
+                packed += (found >> k) & 1u && hits[k].t == 4 &&
+                          hits[k].object == i - 3 + k;
+            blocked += (unsigned)__builtin_popcount(
+                rayo_scene_occluded_packet(s, rays, 15, lo, hi, skip));
+        }
+    }
+    is_int(single, 40, "tangent rays hit at t = 4, one by one");
+    is_int(packed, 40, "tangent rays hit at t = 4, in packets");
+    is_int(blocked, 40, "tangent rays are blocked, in packets");
+    rayo_scene_free(s);
+}
+
+/* Everything that walks the tree, with one walk and packets on or off. */
+static void check_walk(rayo_bvh_walk walk, int packets)
+{
+    const char *name = rayo_bvh_walk_name(walk);
+    if (!rayo_bvh_walk_available(walk)) {
+        ok(1, "# skip walk %s: not in this build or processor", name);
+        return;
+    }
+    rayo_bvh_walk_set(walk);
+    rayo_bvh_packets_set(packets);
+    ok(rayo_bvh_walk_current() == walk, "walk %s, packets %s: in use", name,
+       packets ? "on" : "off");
     check_same("mixed scene", 2024, 600, 150, 2, 1000);
     check_same("dense small scene", 99, 60, 20, 0, 1000);
+    check_same("spheres only", 7, 3000, 0, 1, 1000);
     check_one_point();
     check_scaled(1e150, "coordinates near 1e150");
     check_scaled(1e-150, "coordinates near 1e-150");
     check_tiny_scenes();
+    check_tangent();
+    check_render_exact();
+}
+
+/* The packet walks run where they should, and only there. */
+static void check_packets_on(void)
+{
+    rayo_scene *s;
+    rayo_error err;
+    rayo_scene_create(&s, &err);
+    rayo_scene_random_cloud(s, 1000, 3, &err);
+    rayo_scene_prepare(s, &err);
+    rayo_bvh_walk_set(RAYO_BVH_WALK_BINARY);
+    rayo_bvh_packets_set(1);
+    ok(!rayo_bvh_packets_on(s->bvh), "packets: off with the binary walk");
+    rayo_bvh_walk_set(RAYO_BVH_WALK_AVX2);
+    rayo_bvh_packets_set(0);
+    ok(!rayo_bvh_packets_on(s->bvh), "packets: off when turned off");
+    rayo_bvh_packets_set(1);
+    ok(rayo_bvh_packets_on(s->bvh) ==
+           rayo_bvh_walk_available(RAYO_BVH_WALK_AVX2),
+       "packets: on with the AVX2 walk (available: %d)",
+       rayo_bvh_walk_available(RAYO_BVH_WALK_AVX2));
+    rayo_bvh_walk_set(RAYO_BVH_WALK_SSE2);
+    ok(rayo_bvh_walk_current() == RAYO_BVH_WALK_SSE2 ||
+           !rayo_bvh_walk_available(RAYO_BVH_WALK_SSE2),
+       "walk: sse2 chosen where built");
+    rayo_scene_free(s);
+}
+
+int main(void)
+{
+    check_walk(RAYO_BVH_WALK_BINARY, 0);
+    check_walk(RAYO_BVH_WALK_SSE2, 0);
+    check_walk(RAYO_BVH_WALK_AVX2, 0);
+    check_walk(RAYO_BVH_WALK_AVX2, 1);
+    check_packets_on();
     check_bvh_alone();
     check_cost();
-    check_render_exact();
     check_field();
     check_cloud();
     return tap_done();

@@ -1,0 +1,379 @@
+/*
+ * bvh_wide.c - the hierarchy's 4-wide copy (bvh_wide.h): made from the
+ * binary tree once it is built, and the one setting that says which walk
+ * the queries take.
+ *
+ * The copy collapses the binary tree: a wide node starts from a binary
+ * interior node's two children and, while it has fewer than four,
+ * replaces its interior child of largest surface area by that child's
+ * two children.  Every box of the copy is a box of the binary tree,
+ * float for float, and every leaf is a binary leaf; only the interior
+ * boxes skipped by the collapse are no longer tested.  Since a binary
+ * child's box lies inside its parent's (the builder bounds each node by
+ * the union of its primitives' boxes, rounded outward), a ray that the
+ * binary walk would let into a leaf is let in by the wide walk too, and
+ * both then take the smallest (t, object) over the same candidates: the
+ * answers are the same bit for bit (bvh_wide_walk.h says why the lanes'
+ * arithmetic is the scalar one).
+ *
+ * The walk is chosen once per process, from RAYO_WALK (binary, sse2,
+ * avx2), else the fastest one the processor runs: AVX2 (with packets,
+ * bvh_packet.h) where __builtin_cpu_supports says so (the processor and
+ * the system's saving of its registers), else the binary walk (the SSE2
+ * wide walk, which any x86-64 runs, measured no faster than it: it stays
+ * for RAYO_WALK=sse2, the tests and the bench).
+ */
+#include "bvh_packet.h"
+#include "bvh_wide_impl.h"
+#include "bvh_wide_isa.h"
+
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* -1 until the environment is read.  Threads that read it at once all
+ * store the same values; queries load them relaxed (a plain load). */
+static atomic_int walk_in_use = -1;
+static atomic_int packets_wanted = -1;
+
+int rayo_bvh_walk_available(rayo_bvh_walk walk)
+{
+    switch (walk) {
+    case RAYO_BVH_WALK_BINARY:
+        return 1;
+    case RAYO_BVH_WALK_SSE2:
+        return bvh_wide_sse2_built();
+    case RAYO_BVH_WALK_AVX2:
+        return bvh_wide_avx2_runs();
+    }
+    return 0;
+}
+
+static rayo_bvh_walk best_available(rayo_bvh_walk walk)
+{
+    if (walk == RAYO_BVH_WALK_AVX2 &&
+        !rayo_bvh_walk_available(RAYO_BVH_WALK_AVX2))
+        walk = RAYO_BVH_WALK_SSE2;
+    if (walk == RAYO_BVH_WALK_SSE2 &&
+        !rayo_bvh_walk_available(RAYO_BVH_WALK_SSE2))
+        walk = RAYO_BVH_WALK_BINARY;
+    return walk;
+}
+
+static void walk_init(void)
+{
+    const char *name = getenv("RAYO_WALK");
+    rayo_bvh_walk walk = RAYO_BVH_WALK_AVX2;
+    if (name != NULL && strcmp(name, "binary") == 0)
+        walk = RAYO_BVH_WALK_BINARY;
+    else if (name != NULL && strcmp(name, "sse2") == 0)
+        walk = RAYO_BVH_WALK_SSE2;
+    else if (!rayo_bvh_walk_available(RAYO_BVH_WALK_AVX2))
+        /* the SSE2 wide walk measured no faster than the binary one
+         * (docs/performance.md), which needs no copy */
+        walk = RAYO_BVH_WALK_BINARY;
+    name = getenv("RAYO_PACKETS");
+    atomic_store(&packets_wanted,
+                 !(name != NULL && strcmp(name, "0") == 0));
+    atomic_store(&walk_in_use, (int)best_available(walk));
+}
+
+static rayo_bvh_walk walk_loaded(void)
+{
+    return (rayo_bvh_walk)atomic_load_explicit(&walk_in_use,
+                                               memory_order_relaxed);
+}
+
+rayo_bvh_walk rayo_bvh_walk_current(void)
+{
+    if (atomic_load(&walk_in_use) < 0)
+        walk_init();
+    return walk_loaded();
+}
+
+void rayo_bvh_walk_set(rayo_bvh_walk walk)
+{
+    (void)rayo_bvh_walk_current();
+    atomic_store(&walk_in_use, (int)best_available(walk));
+}
+
+void rayo_bvh_packets_set(int on)
+{
+    (void)rayo_bvh_walk_current();
+    atomic_store(&packets_wanted, on != 0);
+}
+
+/* Packets are AVX2 code: they run with the AVX2 walk (so RAYO_WALK=sse2
+ * or binary runs no AVX2 at all, as on a processor without it). */
+int rayo_bvh_packets_on(const rayo_bvh *bvh)
+{
+    return bvh != NULL && bvh->wide != NULL &&
+           atomic_load_explicit(&packets_wanted, memory_order_relaxed) > 0 &&
+           walk_loaded() == RAYO_BVH_WALK_AVX2 && bvh_packet_avx2_built();
+}
+
+const char *rayo_bvh_walk_name(rayo_bvh_walk walk)
+{
+    switch (walk) {
+    case RAYO_BVH_WALK_BINARY:
+        return "binary";
+    case RAYO_BVH_WALK_SSE2:
+        return "sse2";
+    case RAYO_BVH_WALK_AVX2:
+        return "avx2";
+    }
+    return "?";
+}
+
+void rayo_bvh_wide_free(struct bvh_wide *wide)
+{
+    if (wide == NULL)
+        return;
+    free(wide->nodes);
+    free(wide->cx);
+    free(wide->sphere);
+    free(wide);
+}
+
+static double node_area(const bvh_node *n)
+{
+    double d[3];
+    int a;
+    for (a = 0; a < 3; a++)
+        d[a] = (double)n->bounds[1][a] - (double)n->bounds[0][a];
+    return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+}
+
+typedef struct widener {
+    const rayo_bvh *bvh;
+    struct bvh_wide *wide;
+} widener;
+
+/* The leaf's count, with BVH_WIDE_MIXED when one of its primitives is
+ * not a sphere of the arrays. */
+static uint16_t leaf_count_of(const widener *w, const bvh_node *leaf)
+{
+    uint16_t count = (uint16_t)leaf->count;
+    uint32_t k;
+    /* The lanes test at most 2 x 4 spheres a leaf (bvh_wide_walk.h);
+     * a builder making bigger leaves gets the callback for them. */
+    if (leaf->count > 2 * BVH_WIDE_LANES)
+        return (uint16_t)(BVH_WIDE_MIXED |
+                          (leaf->count & BVH_WIDE_COUNT));
+    for (k = 0; k < leaf->count; k++)
+        if (!w->wide->sphere[leaf->first + k])
+            count |= BVH_WIDE_MIXED;
+    return count;
+}
+
+/* The spheres into the arrays at their primitives' positions in leaf
+ * order: in the owner's order, through the inverse of prims, so the
+ * reads stream and the scattered writes overlap (reading the spheres in
+ * leaf order, each a dependent miss, took ten times longer).  0 without
+ * memory. */
+static int copy_spheres(const rayo_bvh *bvh, struct bvh_wide *wide,
+                        size_t prims, rayo_bvh_sphere_fn sphere_at,
+                        const void *context, size_t count)
+{
+    uint32_t *position, top = 0;
+    size_t p, i;
+    for (p = 0; p < prims; p++)
+        if (bvh->prims[p] > top)
+            top = bvh->prims[p];
+    position = malloc(((size_t)top + 1) * sizeof *position);
+    if (position == NULL)
+        return 0;
+    for (p = 0; p < (size_t)top + 1; p++)
+        position[p] = UINT32_MAX;
+    for (p = 0; p < prims; p++)
+        position[bvh->prims[p]] = (uint32_t)p;
+    for (i = 0; i < count; i++) {
+        uint32_t prim, at;
+        rayo_sphere s;
+        sphere_at(context, i, &prim, &s);
+        if (prim > top || (at = position[prim]) == UINT32_MAX)
+            continue;
+        wide->cx[at] = s.center.x;
+        wide->cy[at] = s.center.y;
+        wide->cz[at] = s.center.z;
+        wide->rr[at] = s.radius * s.radius;
+        wide->sphere[at] = 1;
+    }
+    free(position);
+    return 1;
+}
+
+/* The children of the wide node made from binary node `binary`
+ * (interior, or the root leaf of a one-leaf tree) into kids; how many. */
+static unsigned collapse(const bvh_node *nodes, uint32_t binary,
+                         uint32_t *kids)
+{
+    unsigned count = 0, k;
+    if (nodes[binary].count) {
+        kids[count++] = binary;
+    } else {
+        kids[count++] = nodes[binary].first;
+        kids[count++] = nodes[binary].first + 1;
+    }
+    while (count < BVH_WIDE_LANES) {
+        unsigned pick = BVH_WIDE_LANES;
+        double best = -1.0;
+        for (k = 0; k < count; k++) {
+            const bvh_node *n = &nodes[kids[k]];
+            double area = n->count ? -1.0 : node_area(n);
+            if (!n->count && area > best) {
+                best = area;
+                pick = k;
+            }
+        }
+        if (pick == BVH_WIDE_LANES)
+            break;
+        kids[count++] = nodes[kids[pick]].first + 1;
+        kids[pick] = nodes[kids[pick]].first;
+    }
+    return count;
+}
+
+/* How many wide nodes the collapse of binary's subtree makes. */
+static size_t wide_count(const bvh_node *nodes, uint32_t binary)
+{
+    uint32_t kids[BVH_WIDE_LANES];
+    unsigned count = collapse(nodes, binary, kids), k;
+    size_t total = 1;
+    for (k = 0; k < count; k++)
+        if (!nodes[kids[k]].count)
+            total += wide_count(nodes, kids[k]);
+    return total;
+}
+
+/* Makes the wide node for binary node `binary` (as collapse); returns
+ * its index. */
+static uint32_t widen_node(widener *w, uint32_t binary)
+{
+    const bvh_node *nodes = w->bvh->nodes;
+    struct bvh_wide *wide = w->wide;
+    uint32_t index = (uint32_t)wide->node_count++, kids[BVH_WIDE_LANES];
+    bvh_wide_node *out = &wide->nodes[index];
+    unsigned count = collapse(nodes, binary, kids), k;
+    int a, side;
+    memset(out, 0, sizeof *out);
+    for (k = 0; k < BVH_WIDE_LANES; k++)
+        for (a = 0; a < 3; a++) {
+            /* Empty lanes: a box no ray enters (and `lanes` leaves them
+             * out anyway). */
+            out->box[0][a][k] = INFINITY;
+            out->box[1][a][k] = -INFINITY;
+        }
+    out->lanes = (1u << count) - 1;
+    out->lane_count = count;
+    for (k = 0; k < count; k++) {
+        const bvh_node *n = &nodes[kids[k]];
+        for (side = 0; side < 2; side++)
+            for (a = 0; a < 3; a++)
+                out->box[side][a][k] = n->bounds[side][a];
+    }
+    for (k = 0; k < count; k++) {
+        const bvh_node *n = &nodes[kids[k]];
+        uint32_t child;
+        uint16_t leaf_count = 0;
+        if (n->count) {
+            child = n->first;
+            leaf_count = leaf_count_of(w, n);
+        } else {
+            child = widen_node(w, kids[k]);
+        }
+        /* (the array is preallocated: recursion moves nothing) */
+        wide->nodes[index].child[k] = child;
+        wide->nodes[index].count[k] = leaf_count;
+    }
+    return index;
+}
+
+rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
+                           const void *context, size_t count)
+{
+    struct bvh_wide *wide;
+    size_t prims = 0, i, capacity;
+    widener w;
+    rayo_bvh_wide_free(bvh->wide);
+    bvh->wide = NULL;
+    (void)rayo_bvh_walk_current(); /* the queries read walk_in_use */
+    if (bvh->node_count == 0)
+        return RAYO_OK;
+    capacity = wide_count(bvh->nodes, 0);
+    for (i = 0; i < bvh->node_count; i++) {
+        if (bvh->nodes[i].count > BVH_WIDE_COUNT)
+            return RAYO_ERR_LIMIT; /* no copy: the binary walk serves */
+        prims += bvh->nodes[i].count;
+    }
+    if (capacity > SIZE_MAX / sizeof *wide->nodes ||
+        prims > SIZE_MAX / 4 / sizeof *wide->cx - BVH_WIDE_LANES)
+        return RAYO_ERR_NOMEM;
+    wide = calloc(1, sizeof *wide);
+    if (wide == NULL)
+        return RAYO_ERR_NOMEM;
+    /* 64-byte aligned: a node is two whole cache lines. */
+    wide->nodes = aligned_alloc(64, capacity * sizeof *wide->nodes);
+    wide->cx = calloc(4 * (prims + BVH_WIDE_LANES), sizeof *wide->cx);
+    wide->sphere = calloc(prims + BVH_WIDE_LANES, 1);
+    if (wide->nodes == NULL || wide->cx == NULL || wide->sphere == NULL) {
+        rayo_bvh_wide_free(wide);
+        return RAYO_ERR_NOMEM;
+    }
+    wide->cy = wide->cx + (prims + BVH_WIDE_LANES);
+    wide->cz = wide->cy + (prims + BVH_WIDE_LANES);
+    wide->rr = wide->cz + (prims + BVH_WIDE_LANES);
+    wide->ids = bvh->prims;
+    if (!copy_spheres(bvh, wide, prims, sphere_at, context, count)) {
+        rayo_bvh_wide_free(wide);
+        return RAYO_ERR_NOMEM;
+    }
+    w.bvh = bvh;
+    w.wide = wide;
+    widen_node(&w, 0);
+    bvh->wide = wide;
+    return RAYO_OK;
+}
+
+int rayo_bvh_wide_nearest(const rayo_bvh *bvh, const rayo_ray *ray,
+                          double t_min, double t_max, rayo_bvh_prim_fn test,
+                          const void *context, double *best_t,
+                          uint32_t *best_id, rayo_bvh_cost *cost)
+{
+    if (bvh->wide == NULL)
+        return 0;
+    /* rayo_bvh_widen read the setting before this copy existed */
+    switch (walk_loaded()) {
+    case RAYO_BVH_WALK_BINARY:
+        return 0;
+    case RAYO_BVH_WALK_SSE2:
+        bvh_wide_nearest_sse2(bvh->wide, ray, t_min, t_max, test, context,
+                              best_t, best_id, cost);
+        return 1;
+    case RAYO_BVH_WALK_AVX2:
+        bvh_wide_nearest_avx2(bvh->wide, ray, t_min, t_max, test, context,
+                              best_t, best_id, cost);
+        return 1;
+    }
+    return 0;
+}
+
+int rayo_bvh_wide_any(const rayo_bvh *bvh, const rayo_ray *ray,
+                      double t_min, double t_max, uint32_t skip,
+                      rayo_bvh_prim_fn test, const void *context,
+                      rayo_bvh_cost *cost)
+{
+    if (bvh->wide == NULL)
+        return -1;
+    switch (walk_loaded()) {
+    case RAYO_BVH_WALK_BINARY:
+        return -1;
+    case RAYO_BVH_WALK_SSE2:
+        return bvh_wide_any_sse2(bvh->wide, ray, t_min, t_max, skip, test,
+                                 context, cost);
+    case RAYO_BVH_WALK_AVX2:
+        return bvh_wide_any_avx2(bvh->wide, ray, t_min, t_max, skip, test,
+                                 context, cost);
+    }
+    return -1;
+}
