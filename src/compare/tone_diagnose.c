@@ -275,32 +275,47 @@ static void try_permutations(choice *ch, const tone_image *ref,
 }
 
 /* The whole-pixel shift, |dx|, |dy| <= SHIFT_RANGE, that leaves the
-   fewest differing pixels (on a sampled grid). */
+   fewest differing pixels (on a sampled grid); of those the first in
+   the order dy, then dx, from -SHIFT_RANGE up.  The shifts are tried
+   nearest first (rings |dx|, |dy| <= 1, 2, 3), where the fit is likely,
+   and a pass stops once it differs in more pixels than the best so far:
+   the same shift as trying all to the end in that order. */
 static tone_xform best_shift(const tone_image *ref, const tone_image *image,
                              unsigned levels, uint64_t *fewest)
 {
     double pixels = (double)ref->width * ref->height;
     tone_xform t = tone_identity(), best = tone_identity();
     tone_counts k;
-    int dx, dy;
+    int dx, dy, ring, order, best_order = 0;
     t.kind = TONE_SHIFT;
     t.step = (uint32_t)ceil(sqrt(pixels / 262144.0));
     if (t.step < 1)
         t.step = 1;
     *fewest = UINT64_MAX;
-    for (dy = -SHIFT_RANGE; dy <= SHIFT_RANGE; dy++)
-        for (dx = -SHIFT_RANGE; dx <= SHIFT_RANGE; dx++) {
-            if (dx == 0 && dy == 0)
-                continue;
-            t.dx = dx;
-            t.dy = dy;
-            tone_measure(ref, image, &t, 0, levels, -1, &k);
-            if (k.differing < *fewest) {
-                *fewest = k.differing;
-                best = t;
+    for (ring = 1; ring <= SHIFT_RANGE; ring++)
+        for (dy = -ring; dy <= ring; dy++)
+            for (dx = -ring; dx <= ring; dx++) {
+                if (dx != ring && dx != -ring && dy != ring && dy != -ring)
+                    continue; /* an inner ring's */
+                order = (dy + SHIFT_RANGE) * (2 * SHIFT_RANGE + 1) +
+                        (dx + SHIFT_RANGE);
+                t.dx = dx;
+                t.dy = dy;
+                t.capped = *fewest != UINT64_MAX;
+                t.max_differing = *fewest;
+                tone_measure(ref, image, &t, 0, levels, -1, &k);
+                if (k.stopped)
+                    continue;
+                if (k.differing < *fewest ||
+                    (k.differing == *fewest && order < best_order)) {
+                    *fewest = k.differing;
+                    best = t;
+                    best_order = order;
+                }
             }
-        }
     best.step = 1;
+    best.capped = 0;
+    best.max_differing = 0;
     return best;
 }
 

@@ -111,6 +111,9 @@ typedef struct tone_xform {
        differ: a candidate that cannot win is not measured to the end. */
     int capped;
     uint64_t max_unexplained, max_differing;
+    /* capped, classify -1 (the searches): stop once the sum of squares
+       is past max_squares, or more than max_differing differ. */
+    uint64_t max_squares;
 } tone_xform;
 
 /* A transform that changes nothing. */

@@ -14,7 +14,7 @@
 # part of `make check`: run it by hand (RAYO_SOURCE: the tree, default
 # the current folder).
 set -eu
-mode=$1 RAYO=$2 DIR=$3
+mode=$1 RAYO=$(cd "$(dirname "$2")" && pwd)/$(basename "$2") DIR=$3
 SRC=${RAYO_SOURCE:-$PWD}
 C2="$SRC/data/course/referencia-catedra-ej2.png"
 C3="$SRC/data/course/referencia-catedra-ej3.png"
