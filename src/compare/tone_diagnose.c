@@ -66,13 +66,37 @@ static void consider(choice *ch, const rayo_compare_report *r,
     ch->mistake = mistake;
 }
 
+/* A choice that leaves no pixel differing: nothing can beat it. */
+static int unbeatable(const choice *ch)
+{
+    return ch->found && ch->unexplained == 0 && ch->differing == 0;
+}
+
+/* cap, and also stop a pass once it cannot beat the choice so far:
+   more unexplained pixels than it, or, when it leaves none, as many
+   differing (consider would turn the candidate down then). */
+static void cap_to_beat(tone_xform *t, const rayo_compare_report *r,
+                        const choice *ch)
+{
+    cap(t, r);
+    if (!ch->found)
+        return;
+    if (ch->unexplained < t->max_unexplained)
+        t->max_unexplained = ch->unexplained;
+    if (ch->unexplained == 0 && ch->differing > 0 &&
+        ch->differing - 1 < t->max_differing)
+        t->max_differing = ch->differing - 1;
+}
+
 static void try_xform(choice *ch, const tone_image *ref,
                       const tone_image *image, const rayo_compare_report *r,
                       const tone_xform *t)
 {
     tone_counts k;
     tone_xform capped = *t;
-    cap(&capped, r);
+    if (unbeatable(ch))
+        return;
+    cap_to_beat(&capped, r, ch);
     tone_measure(ref, image, &capped, r->tolerance, r->tone.levels, 0, &k);
     consider(ch, r, &k, t, -1);
 }
@@ -234,7 +258,7 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
         tone_xform id = tone_identity();
         rayo_status s;
         /* Nothing beats a candidate that leaves no pixel differing. */
-        if (ch->found && ch->unexplained == 0 && ch->differing == 0)
+        if (unbeatable(ch))
             break;
         if (!rayo_course_mistake_applies((rayo_course_exercise)course,
                                          (rayo_course_mistake)m))
@@ -249,7 +273,7 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
             tone_image_free(&t);
             return s;
         }
-        cap(&id, r);
+        cap_to_beat(&id, r, ch);
         tone_measure(&t, image, &id, r->tolerance, r->tone.levels, 0, &k);
         tone_image_free(&t);
         consider(ch, r, &k, NULL, m);
@@ -546,8 +570,13 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
         t.kind = plain[i];
         try_xform(ch, ref, image, r, &t);
     }
+    /* (Each search only when its candidate could still win.) */
+    if (unbeatable(ch))
+        return RAYO_OK;
     t = best_shift(ref, image, r->tone.levels, &fewest);
     try_xform(ch, ref, image, r, &t);
+    if (unbeatable(ch))
+        return RAYO_OK;
     t = tone_identity();
     t.kind = TONE_SCALE;
     t.scale = tone_best_scale(ref, image, r->tone.levels, 0.25, 4.0,
