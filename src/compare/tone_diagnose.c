@@ -112,16 +112,29 @@ static rayo_status course_tone(rayo_course_exercise e, rayo_course_mistake m,
     rayo_course_options o;
     rayo_image render;
     rayo_status s;
+    int right = m == RAYO_MISTAKE_NONE;
     rayo_course_options_init(&o);
     o.mistake = m;
     memset(t, 0, sizeof *t);
-    s = rayo_course_render(e, &o, &render, err);
-    if (s != RAYO_OK)
-        return s;
-    s = tone_image_make(&render, channels, t, err);
-    rayo_image_free(&render);
-    if (s == RAYO_OK && edges)
-        s = tone_image_find_edges(t, r->tolerance, r->tone.levels, err);
+    /* The right render, the one every comparison with the course's
+       scene makes, from the cache (tone_cache.c). */
+    if (!right || !tone_cache_find_course((int)e, channels, t)) {
+        s = rayo_course_render(e, &o, &render, err);
+        if (s != RAYO_OK)
+            return s;
+        s = tone_image_make(&render, channels, t, err);
+        rayo_image_free(&render);
+        if (s != RAYO_OK)
+            return s;
+        if (right)
+            tone_cache_keep_course((int)e, t);
+    }
+    s = RAYO_OK;
+    if (edges)
+        s = right ? tone_image_find_edges_kept(t, r->tolerance,
+                                               r->tone.levels, err)
+                  : tone_image_find_edges(t, r->tolerance, r->tone.levels,
+                                          err);
     if (s != RAYO_OK)
         tone_image_free(t);
     return s;

@@ -10,7 +10,9 @@
  *                   differences an edge or the shading explains;
  *   tone_diagnose.c the candidate mistakes, tried one at a time;
  *   tone_diff.c     the difference picture;
- *   tone_format.c   the report as text and JSON.
+ *   tone_format.c   the report as text and JSON;
+ *   tone_cache.c    the reference's maps and the course's render, kept
+ *                   for the next comparison.
  *
  * The mask comparison (compare_impl.h) shares none of this but the
  * report and its vocabulary.
@@ -67,6 +69,24 @@ void tone_image_convert_rows(const rayo_image *image, tone_image *out,
    around every differing pixel for one. */
 rayo_status tone_image_find_edges(tone_image *t, double tolerance,
                                   unsigned levels, rayo_error *err);
+
+/* The same, the maps taken from the process's cache (tone_cache.c) when
+   an image of the very same samples had them made, and kept there
+   otherwise: for the images compared against again and again (the
+   reference, the course's render). */
+rayo_status tone_image_find_edges_kept(tone_image *t, double tolerance,
+                                       unsigned levels, rayo_error *err);
+
+/* tone_cache.c: t's maps for radius and levels copied from the cache
+   (1), or 0 when it has none for t's samples; t's samples and maps
+   kept (copies).  The course's render of `course` with `channels` as a
+   new tone image into t, its samples only (1), or 0; and kept.
+   tone_cache_clear frees every entry. */
+int tone_cache_find_maps(tone_image *t, int radius, unsigned levels);
+void tone_cache_keep_maps(const tone_image *t);
+int tone_cache_find_course(int course, unsigned channels, tone_image *t);
+void tone_cache_keep_course(int course, const tone_image *t);
+void tone_cache_clear(void);
 
 /* tone_window.c: the extreme (max 1: largest, 0: smallest) of in over
    the window |dx|, |dy| <= radius around each pixel, into out (both

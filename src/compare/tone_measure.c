@@ -598,6 +598,22 @@ static int stands_out(unsigned step, unsigned before, unsigned after,
     return step > levels && step > 2 * (before > after ? before : after);
 }
 
+rayo_status tone_image_find_edges_kept(tone_image *t, double tolerance,
+                                       unsigned levels, rayo_error *err)
+{
+    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    rayo_status s;
+    if (t->near != NULL && t->near_radius == radius &&
+        t->near_levels == levels)
+        return RAYO_OK;
+    if (tone_cache_find_maps(t, radius, levels))
+        return RAYO_OK;
+    s = tone_image_find_edges(t, tolerance, levels, err);
+    if (s == RAYO_OK)
+        tone_cache_keep_maps(t);
+    return s;
+}
+
 rayo_status tone_image_find_edges(tone_image *t, double tolerance,
                                   unsigned levels, rayo_error *err)
 {
