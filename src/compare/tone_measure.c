@@ -385,6 +385,52 @@ static void sum_span(tone_sums *a, const unsigned char *r,
     a->differing += differing;
 }
 
+/* The sampled pixels of reference row r against the image scaled (row
+   axis ay, column axes xs): undo_scaled_at's values, its arithmetic
+   the same, with the image's two rows found once.  Where the four
+   pixels read are equal that value is the result (the weights add up
+   to 1 within a few units of the last place, far from changing the
+   rounding to a whole level), and no arithmetic is done. */
+static void sum_scaled_row(tone_sums *a, const unsigned char *r,
+                           const tone_image *image, const scale_axis *ay,
+                           const scale_axis *xs, uint32_t w, uint32_t step,
+                           unsigned n, unsigned levels)
+{
+    size_t row = (size_t)image->width * n;
+    const unsigned char *at = image->v + (size_t)ay->at * row;
+    const unsigned char *next = image->v + (size_t)ay->next * row;
+    double wy = ay->weight, ry = ay->rest;
+    uint32_t x;
+    unsigned c;
+    for (x = 0; x < w; x += step) {
+        const scale_axis *ax = &xs[x];
+        const unsigned char *pa, *pb, *pd, *pe, *q = r + (size_t)x * n;
+        unsigned worst = 0, d;
+        if (ax->at < 0)
+            continue;
+        pa = at + (size_t)ax->at * n;
+        pb = at + (size_t)ax->next * n;
+        pd = next + (size_t)ax->at * n;
+        pe = next + (size_t)ax->next * n;
+        a->placed++;
+        for (c = 0; c < n; c++) {
+            unsigned u;
+            if (pa[c] == pb[c] && pa[c] == pd[c] && pa[c] == pe[c]) {
+                u = pa[c];
+            } else {
+                double va = pa[c], vb = pb[c], vd = pd[c], ve = pe[c];
+                double v = (va * ax->rest + vb * ax->weight) * ry +
+                           (vd * ax->rest + ve * ax->weight) * wy;
+                u = (unsigned char)(v + 0.5);
+            }
+            d = add_difference(a, c, u, q[c], levels);
+            if (d > worst)
+                worst = d;
+        }
+        a->differing += worst > levels;
+    }
+}
+
 /* Whether a capped pass (t->capped) is past its caps: more pixels
    differing than max_differing or a larger sum of squares than
    max_squares (both only grow as the pass goes on). */
@@ -413,7 +459,7 @@ static void count_only(const tone_image *ref, const tone_image *image,
     /* Squares of whole levels add up exactly in a double as in an
        integer (below 2^53), so this sum is the double one bit for bit. */
     tone_sums a;
-    uint32_t x, y, w = ref->width;
+    uint32_t y, w = ref->width;
     /* The sampled columns whose image pixel lies inside the image:
        x0 <= x < x1 (the others black for a shift, left out else). */
     int64_t lo = -(dx + ox), hi = (int64_t)image->width - (dx + ox);
@@ -436,21 +482,8 @@ static void count_only(const tone_image *ref, const tone_image *image,
     for (y = 0; y < ref->height; y += step) {
         const unsigned char *r = tone_pixel(ref, 0, y);
         if (xs != NULL) {
-            const scale_axis *ay = &ys[y];
-            unsigned char u[3];
-            for (x = 0; x < w; x += step) {
-                unsigned worst = 0, d;
-                if (!undo_scaled_at(image, &xs[x], ay, n, u))
-                    continue;
-                a.placed++;
-                for (c = 0; c < n; c++) {
-                    d = add_difference(&a, c, u[c], r[(size_t)x * n + c],
-                                       levels);
-                    if (d > worst)
-                        worst = d;
-                }
-                a.differing += worst > levels;
-            }
+            if (ys[y].at >= 0)
+                sum_scaled_row(&a, r, image, &ys[y], xs, w, step, n, levels);
         } else {
             int64_t iy = (int64_t)y + dy + oy;
             int row_in = iy >= 0 && iy < image->height;
