@@ -325,8 +325,17 @@ async function run(browser, origin, seed) {
   await page.selectOption(T('scene'), 'ej2');
   await page.waitForFunction(() => document.getElementById('info').textContent.startsWith('ej2.pgm'));
   await page.waitForFunction(() => /gray/.test(document.getElementById('report').textContent));
-  const ej2Compare = await page.evaluate(() => window.rayoTimes.compare);
-  note(`640x480 compare, EJ2 rendered vs its reference (consistent): ${ej2Compare.toFixed(1)} ms`);
+  const ej2Compare = [await page.evaluate(() => window.rayoTimes.compare)];
+  for (let k = 1; k < 5; k++) {
+    await page.evaluate(() => { window.rayoTimes.compare = null; });
+    await page.click(T('render'));
+    await page.waitForFunction(() => window.rayoTimes.compare !== null);
+    ej2Compare.push(await page.evaluate(() => window.rayoTimes.compare));
+  }
+  const ej2First = ej2Compare[0];
+  ej2Compare.sort((a, b) => a - b);
+  note(`640x480 compare, EJ2 rendered in the page vs its reference (consistent): median ` +
+       `${ej2Compare[2].toFixed(1)} ms of 5 (first ${ej2First.toFixed(1)}) (target 100 ms)`);
   ok((await text('verdict')) === 'verdict: consistent', 'the EJ2 scene rendered is consistent with EJ2');
 
   // A Spanish browser gets Spanish first.
