@@ -12,7 +12,8 @@
 # tests/grade (compiled with cc).  Each pair gives three reports: the
 # text, --json and the --diff picture.  About a minute here, so it is not
 # part of `make check`: run it by hand (RAYO_SOURCE: the tree, default
-# the current folder).
+# the current folder; RAYO_CORPUS_KEEP=DIR keeps the images and the list
+# of pairs, pairs.txt, there).
 set -eu
 mode=$1 RAYO=$(cd "$(dirname "$2")" && pwd)/$(basename "$2") DIR=$3
 SRC=${RAYO_SOURCE:-$PWD}
@@ -20,8 +21,13 @@ C2="$SRC/data/course/referencia-catedra-ej2.png"
 C3="$SRC/data/course/referencia-catedra-ej3.png"
 C1="$SRC/data/course/referencia-catedra-ej1.png"
 mkdir -p "$DIR"
-W=$(mktemp -d "${TMPDIR:-/tmp}/rayo-corpus.XXXXXX")
-trap 'rm -rf "$W"' EXIT
+if [ -n "${RAYO_CORPUS_KEEP:-}" ]; then # the images and pairs.txt kept there
+    W=$RAYO_CORPUS_KEEP
+    mkdir -p "$W"
+else
+    W=$(mktemp -d "${TMPDIR:-/tmp}/rayo-corpus.XXXXXX")
+    trap 'rm -rf "$W"' EXIT
+fi
 cd "$W"
 
 # --- the images -----------------------------------------------------------
