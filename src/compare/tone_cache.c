@@ -21,8 +21,12 @@
  * image of more than CACHE_ENTRY_BYTES with its maps is never kept, the
  * least recently used entry goes first.  Should memory run short the
  * cache keeps nothing and the comparison makes what it needs itself.
- * What is kept stays reachable until tone_cache_clear or the process's
- * end.
+ * The student model's render of each of the course's mistakes is kept
+ * apart, as far down as a comparison made it (tone_diagnose.c renders a
+ * mistake a band of rows at a time and stops once it is ruled out): a
+ * slot per exercise and mistake, under the same lock, about 15 MB when
+ * every mistake of EJ2 and EJ3 is kept whole.  What is kept stays
+ * reachable until tone_cache_clear or the process's end.
  */
 #include <pthread.h>
 #include <stdlib.h>
@@ -231,14 +235,79 @@ void tone_cache_keep_course(int course, const tone_image *t)
     pthread_mutex_unlock(&lock);
 }
 
+/* The student model's renders of each course mistake, as far down as
+   a comparison needed them: rows[course][mistake] of them made. */
+#define CACHE_COURSES 3
+#define CACHE_MISTAKES 32
+typedef struct cache_rows {
+    unsigned char *v; /* width x height x channels, rows 0..rows-1 set */
+    uint32_t width, height, rows;
+    unsigned channels;
+} cache_rows;
+static cache_rows mistakes[CACHE_COURSES][CACHE_MISTAKES];
+
+uint32_t tone_cache_find_rows(int course, int mistake, tone_image *t)
+{
+    cache_rows *c;
+    uint32_t rows = 0;
+    if (course < 0 || course >= CACHE_COURSES || mistake < 0 ||
+        mistake >= CACHE_MISTAKES)
+        return 0;
+    pthread_mutex_lock(&lock);
+    c = &mistakes[course][mistake];
+    if (c->v != NULL && c->width == t->width && c->height == t->height &&
+        c->channels == t->channels) {
+        rows = c->rows;
+        memcpy(t->v, c->v, (size_t)rows * t->width * t->channels);
+    }
+    pthread_mutex_unlock(&lock);
+    return rows;
+}
+
+void tone_cache_keep_rows(int course, int mistake, const tone_image *t,
+                          uint32_t rows)
+{
+    cache_rows *c;
+    size_t row = (size_t)t->width * t->channels;
+    if (course < 0 || course >= CACHE_COURSES || mistake < 0 ||
+        mistake >= CACHE_MISTAKES || rows > t->height ||
+        bytes_of(t) > CACHE_ENTRY_BYTES)
+        return;
+    pthread_mutex_lock(&lock);
+    c = &mistakes[course][mistake];
+    if (c->v != NULL && (c->width != t->width || c->height != t->height ||
+                         c->channels != t->channels)) {
+        free(c->v);
+        memset(c, 0, sizeof *c);
+    }
+    if (c->v == NULL) {
+        c->v = malloc(row * t->height);
+        c->width = t->width;
+        c->height = t->height;
+        c->channels = t->channels;
+        c->rows = 0;
+    }
+    if (c->v != NULL && rows > c->rows) {
+        memcpy(c->v + c->rows * row, t->v + c->rows * row,
+               (rows - c->rows) * row);
+        c->rows = rows;
+    }
+    pthread_mutex_unlock(&lock);
+}
+
 void tone_cache_clear(void)
 {
-    size_t i;
+    size_t i, j;
     pthread_mutex_lock(&lock);
     for (i = 0; i < CACHE_ENTRIES; i++) {
         if (entries[i].used)
             tone_image_free(&entries[i].t);
         entries[i].used = 0;
     }
+    for (i = 0; i < CACHE_COURSES; i++)
+        for (j = 0; j < CACHE_MISTAKES; j++) {
+            free(mistakes[i][j].v);
+            memset(&mistakes[i][j], 0, sizeof mistakes[i][j]);
+        }
     pthread_mutex_unlock(&lock);
 }

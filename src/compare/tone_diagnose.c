@@ -117,8 +117,18 @@ static rayo_status course_tone(rayo_course_exercise e, rayo_course_mistake m,
     o.mistake = m;
     memset(t, 0, sizeof *t);
     /* The right render, the one every comparison with the course's
-       scene makes, from the cache (tone_cache.c). */
-    if (!right || !tone_cache_find_course((int)e, channels, t)) {
+       scene makes, from the cache (tone_cache.c); a mistake's too when
+       the cache has all its rows. */
+    if (!right) {
+        t->width = RAYO_COURSE_WIDTH;
+        t->height = RAYO_COURSE_HEIGHT;
+        t->channels = channels;
+        t->v = malloc((size_t)t->width * t->height * channels);
+        if (t->v == NULL ||
+            tone_cache_find_rows((int)e, (int)m, t) < t->height)
+            tone_image_free(t);
+    }
+    if (right ? !tone_cache_find_course((int)e, channels, t) : t->v == NULL) {
         s = rayo_course_render(e, &o, &render, err);
         if (s != RAYO_OK)
             return s;
@@ -128,6 +138,8 @@ static rayo_status course_tone(rayo_course_exercise e, rayo_course_mistake m,
             return s;
         if (right)
             tone_cache_keep_course((int)e, t);
+        else
+            tone_cache_keep_rows((int)e, (int)m, t, t->height);
     }
     s = RAYO_OK;
     if (edges)
@@ -207,7 +219,9 @@ static int ruled_out(const tone_image *t, const tone_image *image,
    at a time and given up (*out 1, t freed) as soon as the pixels that
    differ from the image rule the mistake out: consider needs them
    halved whatever is explained, and fewer than those of a choice that
-   leaves nothing unexplained. */
+   leaves nothing unexplained.  The rows an earlier comparison made come
+   from the cache (tone_cache.c), checked band by band all the same, and
+   the rows made here go there. */
 static rayo_status mistake_render(int course, int m, const tone_image *image,
                                   const rayo_compare_report *r,
                                   const choice *ch, tone_image *t, int *out,
@@ -215,46 +229,57 @@ static rayo_status mistake_render(int course, int m, const tone_image *image,
 {
     rayo_course_options o;
     rayo_image render;
-    rayo_status s;
+    rayo_status s = RAYO_OK;
     uint64_t differing = 0;
-    uint32_t y = 0, end;
+    uint32_t y = 0, end, known = 0, made = 0;
+    int created = 0;
     rayo_course_options_init(&o);
     o.mistake = (rayo_course_mistake)m;
     memset(t, 0, sizeof *t);
     *out = 0;
     memset(&render, 0, sizeof render);
-    /* The first band creates the image (course_impl.h). */
-    s = rayo_course_render_student_rows((rayo_course_exercise)course, &o,
-                                        &render, 0, RENDER_BAND, err);
-    if (s == RAYO_OK && (render.info.width != image->width ||
-                         render.info.height != image->height))
-        s = rayo_error_set(err, RAYO_ERR_INVALID,
-                           "compare: the course's render is %ux%u, the "
-                           "image %ux%u",
-                           render.info.width, render.info.height,
-                           image->width, image->height);
-    if (s == RAYO_OK) {
-        /* tone_image_make's image, its rows converted as they come */
-        t->width = image->width;
-        t->height = image->height;
-        t->channels = image->channels;
-        t->v = malloc((size_t)t->width * t->height * t->channels);
-        if (t->v == NULL)
-            s = rayo_error_set(err, RAYO_ERR_NOMEM,
-                               "compare: out of memory for a %ux%u image",
-                               t->width, t->height);
-    }
+    if (image->width != RAYO_COURSE_WIDTH ||
+        image->height != RAYO_COURSE_HEIGHT)
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "compare: the course's render is %ux%u, the "
+                              "image %ux%u",
+                              RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT,
+                              image->width, image->height);
+    /* tone_image_make's image, its rows converted as they come */
+    t->width = image->width;
+    t->height = image->height;
+    t->channels = image->channels;
+    t->v = malloc((size_t)t->width * t->height * t->channels);
+    if (t->v == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM,
+                              "compare: out of memory for a %ux%u image",
+                              t->width, t->height);
+    known = tone_cache_find_rows(course, m, t);
+    made = known;
     for (; s == RAYO_OK && y < t->height && !*out; y = end) {
         end = y + RENDER_BAND < t->height ? y + RENDER_BAND : t->height;
-        if (y > 0)
-            s = rayo_course_render_student_rows(
-                (rayo_course_exercise)course, &o, &render, y, end, err);
-        if (s != RAYO_OK)
-            break;
-        tone_image_convert_rows(&render, t, y, end);
+        if (end > known) {
+            uint32_t from = y > known ? y : known;
+            /* The call from row 0 creates the image (course_impl.h):
+               made first, with no rows, when rows come from the cache. */
+            if (!created && from > 0)
+                s = rayo_course_render_student_rows(
+                    (rayo_course_exercise)course, &o, &render, 0, 0, err);
+            created = 1;
+            if (s == RAYO_OK)
+                s = rayo_course_render_student_rows(
+                    (rayo_course_exercise)course, &o, &render, from, end,
+                    err);
+            if (s != RAYO_OK)
+                break;
+            tone_image_convert_rows(&render, t, from, end);
+            made = end;
+        }
         *out = ruled_out(t, image, r, ch, y, end, &differing);
     }
-    rayo_image_free(&render);
+    rayo_image_free(&render); /* zeroed when never created */
+    if (s == RAYO_OK && made > known)
+        tone_cache_keep_rows(course, m, t, made);
     if (s != RAYO_OK || *out)
         tone_image_free(t);
     return s;

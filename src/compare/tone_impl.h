@@ -86,6 +86,12 @@ int tone_cache_find_maps(tone_image *t, int radius, unsigned levels);
 void tone_cache_keep_maps(const tone_image *t);
 int tone_cache_find_course(int course, unsigned channels, tone_image *t);
 void tone_cache_keep_course(int course, const tone_image *t);
+/* The student model's render of a course mistake (its tone image, of
+   t's size and channels), as far as it was made: its rows 0..n-1 into
+   t->v, n returned (0: none); and kept, rows 0..rows-1 of t. */
+uint32_t tone_cache_find_rows(int course, int mistake, tone_image *t);
+void tone_cache_keep_rows(int course, int mistake, const tone_image *t,
+                          uint32_t rows);
 void tone_cache_clear(void);
 
 /* tone_window.c: the extreme (max 1: largest, 0: smallest) of in over
