@@ -26,7 +26,8 @@
  * mistake a band of rows at a time and stops once it is ruled out): a
  * slot per exercise and mistake, under the same lock, about 15 MB when
  * every mistake of EJ2 and EJ3 is kept whole.  What is kept stays
- * reachable until tone_cache_clear or the process's end.
+ * reachable until tone_cache_clear (rayo_compare_release_cache, which
+ * the command calls before it exits) or the process's end.
  */
 #include <pthread.h>
 #include <stdlib.h>
@@ -310,4 +311,9 @@ void tone_cache_clear(void)
             memset(&mistakes[i][j], 0, sizeof mistakes[i][j]);
         }
     pthread_mutex_unlock(&lock);
+}
+
+void rayo_compare_release_cache(void)
+{
+    tone_cache_clear();
 }
