@@ -9,7 +9,8 @@
  * difference picture makes the reference's once more.
  *
  * An entry is a copy of a tone image (its samples, and its maps when
- * they were made) with, for the course's render, the exercise it shows.
+ * they were made) with, for the course's render, the exercise it is,
+ * and for a reference, which course scene it shows once that was found.
  * Maps are found by the samples themselves (size, channels and every
  * byte compared, and the radius and levels they were made for), so a
  * hit is the very maps tone_image_find_edges would make; the course's
@@ -44,6 +45,10 @@ typedef struct cache_entry {
     int course;        /* the exercise whose render it is, else -1 */
     unsigned long age; /* when last looked up or kept */
     tone_image t;      /* owned copies */
+    /* the course scene this image shows (tone_diagnose.c's
+       detect_course), known for one radius, levels and key */
+    int detected, detected_course, detected_radius, detected_key;
+    unsigned detected_levels;
 } cache_entry;
 
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
@@ -157,6 +162,7 @@ static cache_entry *new_entry(const tone_image *t, int course)
     e->t.height = t->height;
     e->t.channels = t->channels;
     e->course = course;
+    e->detected = 0;
     e->used = 1;
     return e;
 }
@@ -232,6 +238,43 @@ void tone_cache_keep_course(int course, const tone_image *t)
     if (e != NULL) {
         e->course = course;
         e->age = ++clock_now;
+    }
+    pthread_mutex_unlock(&lock);
+}
+
+int tone_cache_find_detected(const tone_image *t, int radius,
+                             unsigned levels, int key, int *course)
+{
+    cache_entry *e;
+    int found = 0;
+    if (bytes_of(t) > CACHE_ENTRY_BYTES)
+        return 0;
+    pthread_mutex_lock(&lock);
+    e = entry_of(t);
+    if (e != NULL && e->detected && e->detected_radius == radius &&
+        e->detected_levels == levels && e->detected_key == key) {
+        e->age = ++clock_now;
+        *course = e->detected_course;
+        found = 1;
+    }
+    pthread_mutex_unlock(&lock);
+    return found;
+}
+
+void tone_cache_keep_detected(const tone_image *t, int radius,
+                              unsigned levels, int key, int course)
+{
+    cache_entry *e;
+    if (bytes_of(t) > CACHE_ENTRY_BYTES)
+        return;
+    pthread_mutex_lock(&lock);
+    e = entry_of(t); /* only with the image's entry, made for its maps */
+    if (e != NULL) {
+        e->detected = 1;
+        e->detected_course = course;
+        e->detected_radius = radius;
+        e->detected_levels = levels;
+        e->detected_key = key;
     }
     pthread_mutex_unlock(&lock);
 }

@@ -167,10 +167,17 @@ static rayo_status detect_course(const tone_image *ref,
     tone_counts k;
     tone_xform id = tone_identity();
     rayo_status s;
+    int radius = r->tolerance < 64 ? (int)floor(r->tolerance) : 64;
+    int key = (int)r->tone.reference_channels;
     *course = -1;
     if (ref->width != 640 || ref->height != 480)
         return RAYO_OK;
     if (e == RAYO_COURSE_EJ3 && r->tone.reference_channels != 3)
+        return RAYO_OK;
+    /* Asked before about this very reference (tone_cache.c), when its
+       render is not wanted. */
+    if (keep == NULL &&
+        tone_cache_find_detected(ref, radius, r->tone.levels, key, course))
         return RAYO_OK;
     s = course_tone(e, RAYO_MISTAKE_NONE, ref->channels, 1, r, &t, err);
     if (s != RAYO_OK)
@@ -181,6 +188,7 @@ static rayo_status detect_course(const tone_image *ref,
     tone_measure(&t, ref, &id, r->tolerance, r->tone.levels, 0, &k);
     if (!k.stopped && k.unexplained == 0)
         *course = (int)e;
+    tone_cache_keep_detected(ref, radius, r->tone.levels, key, *course);
     if (keep != NULL && *course >= 0)
         *keep = t; /* the right render, for hidden_mistake */
     else

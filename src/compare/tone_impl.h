@@ -86,6 +86,15 @@ int tone_cache_find_maps(tone_image *t, int radius, unsigned levels);
 void tone_cache_keep_maps(const tone_image *t);
 int tone_cache_find_course(int course, unsigned channels, tone_image *t);
 void tone_cache_keep_course(int course, const tone_image *t);
+/* The course scene (or -1) the image of t's samples was found to show,
+   for radius, levels and key (the reference's own channels), as
+   detect_course found it: 1 when known; and kept, with the image's
+   entry only. */
+int tone_cache_find_detected(const tone_image *t, int radius,
+                             unsigned levels, int key, int *course);
+void tone_cache_keep_detected(const tone_image *t, int radius,
+                              unsigned levels, int key, int course);
+
 /* The student model's render of a course mistake (its tone image, of
    t's size and channels), as far as it was made: its rows 0..n-1 into
    t->v, n returned (0: none); and kept, rows 0..rows-1 of t. */
