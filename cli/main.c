@@ -50,8 +50,12 @@ int main(int argc, char **argv)
     signal(SIGXFSZ, SIG_IGN);
     if (argc > 1) {
         for (i = 0; i < SUBCOMMAND_COUNT; i++)
-            if (strcmp(argv[1], subcommands[i].name) == 0)
-                return subcommands[i].run(argc - 1, argv + 1);
+            if (strcmp(argv[1], subcommands[i].name) == 0) {
+                int status = subcommands[i].run(argc - 1, argv + 1);
+                /* what compare and grade kept for their next image */
+                rayo_compare_release_cache();
+                return status;
+            }
         if (strcmp(argv[1], "help") == 0) {
             print_overview();
             return cli_render(2, (char *[]){"render", "--help", NULL});

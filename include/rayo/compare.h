@@ -254,6 +254,16 @@ rayo_status rayo_compare_write_diff(const rayo_image *reference,
                                     const rayo_compare_options *options,
                                     rayo_output *out, rayo_error *err);
 
+/*
+ * Gray and colour comparisons keep, for the process's next ones, the
+ * reference's maps, the course scene's render and the renders of the
+ * course's mistakes (about 20 MB at most; thread-safe): comparing many
+ * images with one reference then makes those once.  This frees all of
+ * it (call it when no comparison is running); the next comparison makes
+ * again what it needs.  Reports never depend on what was kept.
+ */
+void rayo_compare_release_cache(void);
+
 /* "identical", "consistent", "inconsistent". */
 const char *rayo_compare_verdict_name(rayo_compare_verdict verdict);
 

@@ -227,7 +227,8 @@ rayo_status tone_compare(const rayo_image *reference, const rayo_image *image,
         tone_image_free(&ref);
         return s;
     }
-    s = tone_image_find_edges(&ref, r->tolerance, options->levels, err);
+    s = tone_image_find_edges_kept(&ref, r->tolerance, options->levels,
+                                   err);
     if (s != RAYO_OK) {
         tone_image_free(&ref);
         tone_image_free(&img);

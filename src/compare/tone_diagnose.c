@@ -66,13 +66,37 @@ static void consider(choice *ch, const rayo_compare_report *r,
     ch->mistake = mistake;
 }
 
+/* A choice that leaves no pixel differing: nothing can beat it. */
+static int unbeatable(const choice *ch)
+{
+    return ch->found && ch->unexplained == 0 && ch->differing == 0;
+}
+
+/* cap, and also stop a pass once it cannot beat the choice so far:
+   more unexplained pixels than it, or, when it leaves none, as many
+   differing (consider would turn the candidate down then). */
+static void cap_to_beat(tone_xform *t, const rayo_compare_report *r,
+                        const choice *ch)
+{
+    cap(t, r);
+    if (!ch->found)
+        return;
+    if (ch->unexplained < t->max_unexplained)
+        t->max_unexplained = ch->unexplained;
+    if (ch->unexplained == 0 && ch->differing > 0 &&
+        ch->differing - 1 < t->max_differing)
+        t->max_differing = ch->differing - 1;
+}
+
 static void try_xform(choice *ch, const tone_image *ref,
                       const tone_image *image, const rayo_compare_report *r,
                       const tone_xform *t)
 {
     tone_counts k;
     tone_xform capped = *t;
-    cap(&capped, r);
+    if (unbeatable(ch))
+        return;
+    cap_to_beat(&capped, r, ch);
     tone_measure(ref, image, &capped, r->tolerance, r->tone.levels, 0, &k);
     consider(ch, r, &k, t, -1);
 }
@@ -88,16 +112,41 @@ static rayo_status course_tone(rayo_course_exercise e, rayo_course_mistake m,
     rayo_course_options o;
     rayo_image render;
     rayo_status s;
+    int right = m == RAYO_MISTAKE_NONE;
     rayo_course_options_init(&o);
     o.mistake = m;
     memset(t, 0, sizeof *t);
-    s = rayo_course_render(e, &o, &render, err);
-    if (s != RAYO_OK)
-        return s;
-    s = tone_image_make(&render, channels, t, err);
-    rayo_image_free(&render);
-    if (s == RAYO_OK && edges)
-        s = tone_image_find_edges(t, r->tolerance, r->tone.levels, err);
+    /* The right render, the one every comparison with the course's
+       scene makes, from the cache (tone_cache.c); a mistake's too when
+       the cache has all its rows. */
+    if (!right) {
+        t->width = RAYO_COURSE_WIDTH;
+        t->height = RAYO_COURSE_HEIGHT;
+        t->channels = channels;
+        t->v = malloc((size_t)t->width * t->height * channels);
+        if (t->v == NULL ||
+            tone_cache_find_rows((int)e, (int)m, t) < t->height)
+            tone_image_free(t);
+    }
+    if (right ? !tone_cache_find_course((int)e, channels, t) : t->v == NULL) {
+        s = rayo_course_render(e, &o, &render, err);
+        if (s != RAYO_OK)
+            return s;
+        s = tone_image_make(&render, channels, t, err);
+        rayo_image_free(&render);
+        if (s != RAYO_OK)
+            return s;
+        if (right)
+            tone_cache_keep_course((int)e, t);
+        else
+            tone_cache_keep_rows((int)e, (int)m, t, t->height);
+    }
+    s = RAYO_OK;
+    if (edges)
+        s = right ? tone_image_find_edges_kept(t, r->tolerance,
+                                               r->tone.levels, err)
+                  : tone_image_find_edges(t, r->tolerance, r->tone.levels,
+                                          err);
     if (s != RAYO_OK)
         tone_image_free(t);
     return s;
@@ -118,10 +167,17 @@ static rayo_status detect_course(const tone_image *ref,
     tone_counts k;
     tone_xform id = tone_identity();
     rayo_status s;
+    int radius = r->tolerance < 64 ? (int)floor(r->tolerance) : 64;
+    int key = (int)r->tone.reference_channels;
     *course = -1;
     if (ref->width != 640 || ref->height != 480)
         return RAYO_OK;
     if (e == RAYO_COURSE_EJ3 && r->tone.reference_channels != 3)
+        return RAYO_OK;
+    /* Asked before about this very reference (tone_cache.c), when its
+       render is not wanted. */
+    if (keep == NULL &&
+        tone_cache_find_detected(ref, radius, r->tone.levels, key, course))
         return RAYO_OK;
     s = course_tone(e, RAYO_MISTAKE_NONE, ref->channels, 1, r, &t, err);
     if (s != RAYO_OK)
@@ -132,6 +188,7 @@ static rayo_status detect_course(const tone_image *ref,
     tone_measure(&t, ref, &id, r->tolerance, r->tone.levels, 0, &k);
     if (!k.stopped && k.unexplained == 0)
         *course = (int)e;
+    tone_cache_keep_detected(ref, radius, r->tone.levels, key, *course);
     if (keep != NULL && *course >= 0)
         *keep = t; /* the right render, for hidden_mistake */
     else
@@ -170,7 +227,9 @@ static int ruled_out(const tone_image *t, const tone_image *image,
    at a time and given up (*out 1, t freed) as soon as the pixels that
    differ from the image rule the mistake out: consider needs them
    halved whatever is explained, and fewer than those of a choice that
-   leaves nothing unexplained. */
+   leaves nothing unexplained.  The rows an earlier comparison made come
+   from the cache (tone_cache.c), checked band by band all the same, and
+   the rows made here go there. */
 static rayo_status mistake_render(int course, int m, const tone_image *image,
                                   const rayo_compare_report *r,
                                   const choice *ch, tone_image *t, int *out,
@@ -178,46 +237,57 @@ static rayo_status mistake_render(int course, int m, const tone_image *image,
 {
     rayo_course_options o;
     rayo_image render;
-    rayo_status s;
+    rayo_status s = RAYO_OK;
     uint64_t differing = 0;
-    uint32_t y = 0, end;
+    uint32_t y = 0, end, known = 0, made = 0;
+    int created = 0;
     rayo_course_options_init(&o);
     o.mistake = (rayo_course_mistake)m;
     memset(t, 0, sizeof *t);
     *out = 0;
     memset(&render, 0, sizeof render);
-    /* The first band creates the image (course_impl.h). */
-    s = rayo_course_render_student_rows((rayo_course_exercise)course, &o,
-                                        &render, 0, RENDER_BAND, err);
-    if (s == RAYO_OK && (render.info.width != image->width ||
-                         render.info.height != image->height))
-        s = rayo_error_set(err, RAYO_ERR_INVALID,
-                           "compare: the course's render is %ux%u, the "
-                           "image %ux%u",
-                           render.info.width, render.info.height,
-                           image->width, image->height);
-    if (s == RAYO_OK) {
-        /* tone_image_make's image, its rows converted as they come */
-        t->width = image->width;
-        t->height = image->height;
-        t->channels = image->channels;
-        t->v = malloc((size_t)t->width * t->height * t->channels);
-        if (t->v == NULL)
-            s = rayo_error_set(err, RAYO_ERR_NOMEM,
-                               "compare: out of memory for a %ux%u image",
-                               t->width, t->height);
-    }
+    if (image->width != RAYO_COURSE_WIDTH ||
+        image->height != RAYO_COURSE_HEIGHT)
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "compare: the course's render is %ux%u, the "
+                              "image %ux%u",
+                              RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT,
+                              image->width, image->height);
+    /* tone_image_make's image, its rows converted as they come */
+    t->width = image->width;
+    t->height = image->height;
+    t->channels = image->channels;
+    t->v = malloc((size_t)t->width * t->height * t->channels);
+    if (t->v == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM,
+                              "compare: out of memory for a %ux%u image",
+                              t->width, t->height);
+    known = tone_cache_find_rows(course, m, t);
+    made = known;
     for (; s == RAYO_OK && y < t->height && !*out; y = end) {
         end = y + RENDER_BAND < t->height ? y + RENDER_BAND : t->height;
-        if (y > 0)
-            s = rayo_course_render_student_rows(
-                (rayo_course_exercise)course, &o, &render, y, end, err);
-        if (s != RAYO_OK)
-            break;
-        tone_image_convert_rows(&render, t, y, end);
+        if (end > known) {
+            uint32_t from = y > known ? y : known;
+            /* The call from row 0 creates the image (course_impl.h):
+               made first, with no rows, when rows come from the cache. */
+            if (!created && from > 0)
+                s = rayo_course_render_student_rows(
+                    (rayo_course_exercise)course, &o, &render, 0, 0, err);
+            created = 1;
+            if (s == RAYO_OK)
+                s = rayo_course_render_student_rows(
+                    (rayo_course_exercise)course, &o, &render, from, end,
+                    err);
+            if (s != RAYO_OK)
+                break;
+            tone_image_convert_rows(&render, t, from, end);
+            made = end;
+        }
         *out = ruled_out(t, image, r, ch, y, end, &differing);
     }
-    rayo_image_free(&render);
+    rayo_image_free(&render); /* zeroed when never created */
+    if (s == RAYO_OK && made > known)
+        tone_cache_keep_rows(course, m, t, made);
     if (s != RAYO_OK || *out)
         tone_image_free(t);
     return s;
@@ -234,7 +304,7 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
         tone_xform id = tone_identity();
         rayo_status s;
         /* Nothing beats a candidate that leaves no pixel differing. */
-        if (ch->found && ch->unexplained == 0 && ch->differing == 0)
+        if (unbeatable(ch))
             break;
         if (!rayo_course_mistake_applies((rayo_course_exercise)course,
                                          (rayo_course_mistake)m))
@@ -249,7 +319,7 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
             tone_image_free(&t);
             return s;
         }
-        cap(&id, r);
+        cap_to_beat(&id, r, ch);
         tone_measure(&t, image, &id, r->tolerance, r->tone.levels, 0, &k);
         tone_image_free(&t);
         consider(ch, r, &k, NULL, m);
@@ -275,32 +345,47 @@ static void try_permutations(choice *ch, const tone_image *ref,
 }
 
 /* The whole-pixel shift, |dx|, |dy| <= SHIFT_RANGE, that leaves the
-   fewest differing pixels (on a sampled grid). */
+   fewest differing pixels (on a sampled grid); of those the first in
+   the order dy, then dx, from -SHIFT_RANGE up.  The shifts are tried
+   nearest first (rings |dx|, |dy| <= 1, 2, 3), where the fit is likely,
+   and a pass stops once it differs in more pixels than the best so far:
+   the same shift as trying all to the end in that order. */
 static tone_xform best_shift(const tone_image *ref, const tone_image *image,
                              unsigned levels, uint64_t *fewest)
 {
     double pixels = (double)ref->width * ref->height;
     tone_xform t = tone_identity(), best = tone_identity();
     tone_counts k;
-    int dx, dy;
+    int dx, dy, ring, order, best_order = 0;
     t.kind = TONE_SHIFT;
     t.step = (uint32_t)ceil(sqrt(pixels / 262144.0));
     if (t.step < 1)
         t.step = 1;
     *fewest = UINT64_MAX;
-    for (dy = -SHIFT_RANGE; dy <= SHIFT_RANGE; dy++)
-        for (dx = -SHIFT_RANGE; dx <= SHIFT_RANGE; dx++) {
-            if (dx == 0 && dy == 0)
-                continue;
-            t.dx = dx;
-            t.dy = dy;
-            tone_measure(ref, image, &t, 0, levels, -1, &k);
-            if (k.differing < *fewest) {
-                *fewest = k.differing;
-                best = t;
+    for (ring = 1; ring <= SHIFT_RANGE; ring++)
+        for (dy = -ring; dy <= ring; dy++)
+            for (dx = -ring; dx <= ring; dx++) {
+                if (dx != ring && dx != -ring && dy != ring && dy != -ring)
+                    continue; /* an inner ring's */
+                order = (dy + SHIFT_RANGE) * (2 * SHIFT_RANGE + 1) +
+                        (dx + SHIFT_RANGE);
+                t.dx = dx;
+                t.dy = dy;
+                t.capped = *fewest != UINT64_MAX;
+                t.max_differing = *fewest;
+                tone_measure(ref, image, &t, 0, levels, -1, &k);
+                if (k.stopped)
+                    continue;
+                if (k.differing < *fewest ||
+                    (k.differing == *fewest && order < best_order)) {
+                    *fewest = k.differing;
+                    best = t;
+                    best_order = order;
+                }
             }
-        }
     best.step = 1;
+    best.capped = 0;
+    best.max_differing = 0;
     return best;
 }
 
@@ -531,8 +616,13 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
         t.kind = plain[i];
         try_xform(ch, ref, image, r, &t);
     }
+    /* (Each search only when its candidate could still win.) */
+    if (unbeatable(ch))
+        return RAYO_OK;
     t = best_shift(ref, image, r->tone.levels, &fewest);
     try_xform(ch, ref, image, r, &t);
+    if (unbeatable(ch))
+        return RAYO_OK;
     t = tone_identity();
     t.kind = TONE_SCALE;
     t.scale = tone_best_scale(ref, image, r->tone.levels, 0.25, 4.0,

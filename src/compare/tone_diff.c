@@ -68,8 +68,8 @@ rayo_status tone_write_diff(const rayo_image *reference,
     if (s != RAYO_OK)
         return s;
     if ((s = tone_image_make(image, channels, &img, err)) != RAYO_OK ||
-        (s = tone_image_find_edges(&ref, options->tolerance, options->levels,
-                                   err)) != RAYO_OK) {
+        (s = tone_image_find_edges_kept(&ref, options->tolerance,
+                                        options->levels, err)) != RAYO_OK) {
         tone_image_free(&ref);
         tone_image_free(&img);
         return s;

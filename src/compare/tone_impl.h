@@ -10,7 +10,9 @@
  *                   differences an edge or the shading explains;
  *   tone_diagnose.c the candidate mistakes, tried one at a time;
  *   tone_diff.c     the difference picture;
- *   tone_format.c   the report as text and JSON.
+ *   tone_format.c   the report as text and JSON;
+ *   tone_cache.c    the reference's maps and the course's render, kept
+ *                   for the next comparison.
  *
  * The mask comparison (compare_impl.h) shares none of this but the
  * report and its vocabulary.
@@ -68,6 +70,39 @@ void tone_image_convert_rows(const rayo_image *image, tone_image *out,
 rayo_status tone_image_find_edges(tone_image *t, double tolerance,
                                   unsigned levels, rayo_error *err);
 
+/* The same, the maps taken from the process's cache (tone_cache.c) when
+   an image of the very same samples had them made, and kept there
+   otherwise: for the images compared against again and again (the
+   reference, the course's render). */
+rayo_status tone_image_find_edges_kept(tone_image *t, double tolerance,
+                                       unsigned levels, rayo_error *err);
+
+/* tone_cache.c: t's maps for radius and levels copied from the cache
+   (1), or 0 when it has none for t's samples; t's samples and maps
+   kept (copies).  The course's render of `course` with `channels` as a
+   new tone image into t, its samples only (1), or 0; and kept.
+   tone_cache_clear frees every entry. */
+int tone_cache_find_maps(tone_image *t, int radius, unsigned levels);
+void tone_cache_keep_maps(const tone_image *t);
+int tone_cache_find_course(int course, unsigned channels, tone_image *t);
+void tone_cache_keep_course(int course, const tone_image *t);
+/* The course scene (or -1) the image of t's samples was found to show,
+   for radius, levels and key (the reference's own channels), as
+   detect_course found it: 1 when known; and kept, with the image's
+   entry only. */
+int tone_cache_find_detected(const tone_image *t, int radius,
+                             unsigned levels, int key, int *course);
+void tone_cache_keep_detected(const tone_image *t, int radius,
+                              unsigned levels, int key, int course);
+
+/* The student model's render of a course mistake (its tone image, of
+   t's size and channels), as far as it was made: its rows 0..n-1 into
+   t->v, n returned (0: none); and kept, rows 0..rows-1 of t. */
+uint32_t tone_cache_find_rows(int course, int mistake, tone_image *t);
+void tone_cache_keep_rows(int course, int mistake, const tone_image *t,
+                          uint32_t rows);
+void tone_cache_clear(void);
+
 /* tone_window.c: the extreme (max 1: largest, 0: smallest) of in over
    the window |dx|, |dy| <= radius around each pixel, into out (both
    width x height x channels, interleaved); one line of it, strided,
@@ -111,6 +146,9 @@ typedef struct tone_xform {
        differ: a candidate that cannot win is not measured to the end. */
     int capped;
     uint64_t max_unexplained, max_differing;
+    /* capped, classify -1 (the searches): stop once the sum of squares
+       is past max_squares, or more than max_differing differ. */
+    uint64_t max_squares;
 } tone_xform;
 
 /* A transform that changes nothing. */

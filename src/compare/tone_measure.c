@@ -32,6 +32,7 @@ tone_xform tone_identity(void)
     t.perm[1] = 1;
     t.perm[2] = 2;
     t.step = 1;
+    t.max_squares = UINT64_MAX;
     return t;
 }
 
@@ -335,69 +336,191 @@ static int near_edge(const tone_image *ref, uint32_t x, uint32_t y,
     return 0;
 }
 
+/* count_only's sums, kept in locals while a row is walked. */
+typedef struct tone_sums {
+    uint64_t squares[3], beyond[3], placed, known, differing;
+    unsigned most[3];
+} tone_sums;
+
+/* One channel's difference between image sample p and reference
+   sample r, added to the sums; returns it. */
+static inline unsigned add_difference(tone_sums *a, unsigned c, unsigned p,
+                                      unsigned r, unsigned levels)
+{
+    unsigned d = p > r ? p - r : r - p;
+    a->squares[c] += (uint64_t)d * d;
+    if (d > a->most[c])
+        a->most[c] = d;
+    a->beyond[c] += d > levels;
+    return d;
+}
+
+/* The sampled reference pixels x = x0, x0 + step, ... < x1 of row r
+   against image pixels p (one a step apart; NULL: black), n channels. */
+static void sum_span(tone_sums *a, const unsigned char *r,
+                     const unsigned char *p, uint32_t x0, uint32_t x1,
+                     uint32_t step, unsigned n, unsigned levels)
+{
+    static const unsigned char black[3] = {0, 0, 0};
+    size_t at = (size_t)step * n, dp = p != NULL ? at : 0;
+    uint32_t x;
+    uint64_t differing = 0;
+    if (x0 >= x1)
+        return;
+    r += (size_t)x0 * n;
+    if (p == NULL)
+        p = black;
+    if (n == 1) {
+        for (x = x0; x < x1; x += step, r += at, p += dp)
+            differing += add_difference(a, 0, p[0], r[0], levels) > levels;
+    } else {
+        for (x = x0; x < x1; x += step, r += at, p += dp) {
+            unsigned d0 = add_difference(a, 0, p[0], r[0], levels);
+            unsigned d1 = add_difference(a, 1, p[1], r[1], levels);
+            unsigned d2 = add_difference(a, 2, p[2], r[2], levels);
+            unsigned worst = d0 > d1 ? d0 : d1;
+            differing += (worst > d2 ? worst : d2) > levels;
+        }
+    }
+    a->differing += differing;
+}
+
+/* The sampled pixels of reference row r against the image scaled (row
+   axis ay, column axes xs): undo_scaled_at's values, its arithmetic
+   the same, with the image's two rows found once.  Where the four
+   pixels read are equal that value is the result (the weights add up
+   to 1 within a few units of the last place, far from changing the
+   rounding to a whole level), and no arithmetic is done. */
+static void sum_scaled_row(tone_sums *a, const unsigned char *r,
+                           const tone_image *image, const scale_axis *ay,
+                           const scale_axis *xs, uint32_t w, uint32_t step,
+                           unsigned n, unsigned levels)
+{
+    size_t row = (size_t)image->width * n;
+    const unsigned char *at = image->v + (size_t)ay->at * row;
+    const unsigned char *next = image->v + (size_t)ay->next * row;
+    double wy = ay->weight, ry = ay->rest;
+    uint32_t x;
+    unsigned c;
+    for (x = 0; x < w; x += step) {
+        const scale_axis *ax = &xs[x];
+        const unsigned char *pa, *pb, *pd, *pe, *q = r + (size_t)x * n;
+        unsigned worst = 0, d;
+        if (ax->at < 0)
+            continue;
+        pa = at + (size_t)ax->at * n;
+        pb = at + (size_t)ax->next * n;
+        pd = next + (size_t)ax->at * n;
+        pe = next + (size_t)ax->next * n;
+        a->placed++;
+        for (c = 0; c < n; c++) {
+            unsigned u;
+            if (pa[c] == pb[c] && pa[c] == pd[c] && pa[c] == pe[c]) {
+                u = pa[c];
+            } else {
+                double va = pa[c], vb = pb[c], vd = pd[c], ve = pe[c];
+                double v = (va * ax->rest + vb * ax->weight) * ry +
+                           (vd * ax->rest + ve * ax->weight) * wy;
+                u = (unsigned char)(v + 0.5);
+            }
+            d = add_difference(a, c, u, q[c], levels);
+            if (d > worst)
+                worst = d;
+        }
+        a->differing += worst > levels;
+    }
+}
+
+/* Whether a capped pass (t->capped) is past its caps: more pixels
+   differing than max_differing or a larger sum of squares than
+   max_squares (both only grow as the pass goes on). */
+static int past_caps(const tone_xform *t, const tone_sums *a)
+{
+    return t->capped &&
+           (a->differing > t->max_differing ||
+            a->squares[0] + a->squares[1] + a->squares[2] > t->max_squares);
+}
+
 /* tone_measure with classify -1 for the transforms that only move the
    image (the identity, a shift, a scale: xs and ys its axes): the same
-   counts in the same order, the image read in place without undo. */
+   counts (sums and extremes, which do not depend on the order pixels
+   are added in), a row at a time, the image read in place without
+   undo.  A capped pass stops, k->stopped, past its caps (past_caps). */
 static void count_only(const tone_image *ref, const tone_image *image,
                        const tone_xform *t, const scale_axis *xs,
                        const scale_axis *ys, uint32_t step, unsigned levels,
                        tone_counts *k)
 {
-    static const unsigned char black[3] = {0, 0, 0};
     int64_t ox = (int64_t)(image->width / 2) - (int64_t)(ref->width / 2);
     int64_t oy = (int64_t)(image->height / 2) - (int64_t)(ref->height / 2);
     int64_t dx = t->kind == TONE_SHIFT ? t->dx : 0;
     int64_t dy = t->kind == TONE_SHIFT ? t->dy : 0;
-    unsigned n = ref->channels, c, most[3] = {0, 0, 0};
+    unsigned n = ref->channels, c;
     /* Squares of whole levels add up exactly in a double as in an
-       integer (below 2^53), so this sum is the double one bit for bit;
-       kept in locals, the loop does not wait on memory. */
-    uint64_t squares[3] = {0, 0, 0}, beyond[3] = {0, 0, 0};
-    uint64_t placed = 0, known = 0, differing = 0;
-    uint32_t x, y;
+       integer (below 2^53), so this sum is the double one bit for bit. */
+    tone_sums a;
+    uint32_t y, w = ref->width;
+    /* The sampled columns whose image pixel lies inside the image:
+       x0 <= x < x1 (the others black for a shift, left out else). */
+    int64_t lo = -(dx + ox), hi = (int64_t)image->width - (dx + ox);
+    uint32_t x0, x1, inside = 0;
+    memset(&a, 0, sizeof a);
+    if (xs == NULL) {
+        lo = lo < 0 ? 0 : lo;
+        hi = hi > (int64_t)w ? (int64_t)w : hi;
+        /* the first sampled column at or after lo, and after hi */
+        if (hi < lo)
+            hi = lo;
+        x0 = (uint32_t)((lo + step - 1) / step * step);
+        x1 = (uint32_t)((hi + step - 1) / step * step);
+        x0 = x0 < w ? x0 : w;
+        x1 = x1 < w ? x1 : w;
+        inside = (x1 - x0 + step - 1) / step;
+    } else {
+        x0 = x1 = 0;
+    }
     for (y = 0; y < ref->height; y += step) {
-        int64_t iy = (int64_t)y + dy + oy;
-        int row_in = iy >= 0 && iy < image->height;
-        for (x = 0; x < ref->width; x += step) {
-            const unsigned char *r = tone_pixel(ref, x, y), *p;
-            unsigned char u[3];
-            unsigned worst = 0;
-            if (xs != NULL) {
-                if (!undo_scaled_at(image, &xs[x], &ys[y], n, u))
-                    continue;
-                p = u;
-                placed++;
-            } else {
-                int64_t ix = (int64_t)x + dx + ox;
-                if (row_in && ix >= 0 && ix < image->width) {
-                    p = tone_pixel(image, (uint32_t)ix, (uint32_t)iy);
-                    placed++;
-                } else if (t->kind == TONE_SHIFT) {
-                    p = black;
-                } else {
-                    continue;
+        const unsigned char *r = tone_pixel(ref, 0, y);
+        if (xs != NULL) {
+            if (ys[y].at >= 0)
+                sum_scaled_row(&a, r, image, &ys[y], xs, w, step, n, levels);
+        } else {
+            int64_t iy = (int64_t)y + dy + oy;
+            int row_in = iy >= 0 && iy < image->height;
+            if (row_in) {
+                const unsigned char *p =
+                    x1 > x0 ? tone_pixel(image,
+                                         (uint32_t)((int64_t)x0 + dx + ox),
+                                         (uint32_t)iy)
+                            : NULL;
+                if (x1 > x0)
+                    sum_span(&a, r, p, x0, x1, step, n, levels);
+                a.placed += inside;
+                if (t->kind == TONE_SHIFT) {
+                    sum_span(&a, r, NULL, 0, x0, step, n, levels);
+                    sum_span(&a, r, NULL, x1, w, step, n, levels);
                 }
+            } else if (t->kind == TONE_SHIFT) {
+                sum_span(&a, r, NULL, 0, w, step, n, levels);
             }
-            known++;
-            for (c = 0; c < n; c++) {
-                unsigned d = p[c] > r[c] ? p[c] - r[c] : r[c] - p[c];
-                squares[c] += (uint64_t)d * d;
-                if (d > most[c])
-                    most[c] = d;
-                beyond[c] += d > levels;
-                if (d > worst)
-                    worst = d;
-            }
-            differing += worst > levels;
+        }
+        if (past_caps(t, &a)) {
+            k->stopped = 1;
+            break;
         }
     }
-    k->placed = placed;
-    k->known = known;
-    k->differing = differing;
+    if (xs != NULL || t->kind != TONE_SHIFT)
+        a.known = a.placed;
+    else
+        a.known = (uint64_t)((ref->width + step - 1) / step) *
+                  ((ref->height + step - 1) / step);
+    k->placed = a.placed;
+    k->known = a.known;
+    k->differing = a.differing;
     for (c = 0; c < n; c++) {
-        k->sum_squares[c] = (double)squares[c];
-        k->max_difference[c] = most[c];
-        k->beyond[c] = beyond[c];
+        k->sum_squares[c] = (double)a.squares[c];
+        k->max_difference[c] = a.most[c];
+        k->beyond[c] = a.beyond[c];
     }
 }
 
@@ -506,6 +629,22 @@ static int stands_out(unsigned step, unsigned before, unsigned after,
                       unsigned levels)
 {
     return step > levels && step > 2 * (before > after ? before : after);
+}
+
+rayo_status tone_image_find_edges_kept(tone_image *t, double tolerance,
+                                       unsigned levels, rayo_error *err)
+{
+    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    rayo_status s;
+    if (t->near != NULL && t->near_radius == radius &&
+        t->near_levels == levels)
+        return RAYO_OK;
+    if (tone_cache_find_maps(t, radius, levels))
+        return RAYO_OK;
+    s = tone_image_find_edges(t, tolerance, levels, err);
+    if (s == RAYO_OK)
+        tone_cache_keep_maps(t);
+    return s;
 }
 
 rayo_status tone_image_find_edges(tone_image *t, double tolerance,
@@ -629,38 +768,77 @@ static double squares_of(const tone_counts *k)
     return k->sum_squares[0] + k->sum_squares[1] + k->sum_squares[2];
 }
 
+/* The sum of squares of a pass at scale t->scale, or UINT64_MAX when
+   it is sure to be more than limit (the pass stopped there). */
+static uint64_t scale_squares(const tone_image *ref, const tone_image *image,
+                              tone_xform *t, unsigned levels, uint64_t limit)
+{
+    tone_counts k;
+    t->capped = limit != UINT64_MAX;
+    t->max_squares = limit;
+    t->max_differing = UINT64_MAX;
+    tone_measure(ref, image, t, 0, levels, -1, &k);
+    if (k.stopped)
+        return UINT64_MAX;
+    return (uint64_t)squares_of(&k);
+}
+
+/*
+ * The candidates of a round are tried from the middle of the range out
+ * (i = mid, mid - 1, mid + 1, ...), where the good ones are likely, and
+ * each pass stops once its sum of squares is past the best so far: the
+ * scale chosen is still the first of the round's order i = 0, 1, ...
+ * with the smallest sum (ties go to the smaller i), that of trying them
+ * all in order to the end.  A later round keeps an earlier round's best
+ * on a tie.
+ */
+static void scale_round(const tone_image *ref, const tone_image *image,
+                        unsigned levels, tone_xform *t, uint32_t count,
+                        double lo, double hi, double ratio, int geometric,
+                        double *best, uint64_t *fewest)
+{
+    uint32_t mid = count / 2, d, side, i, found = UINT32_MAX;
+    for (d = 0; d <= mid || mid + d < count; d++)
+        for (side = 0; side < 2; side++) {
+            uint64_t sq;
+            /* mid, then mid - 1, mid + 1, mid - 2, mid + 2, ... */
+            if ((d == 0 && side) || (side == 0 && d > mid) ||
+                (side && mid + d >= count))
+                continue;
+            i = side ? mid + d : mid - d;
+            t->scale = geometric ? lo * pow(ratio, i)
+                                 : lo + (hi - lo) * i / (count - 1);
+            sq = scale_squares(ref, image, t, levels, *fewest);
+            if (sq < *fewest || (sq == *fewest && found != UINT32_MAX &&
+                                 i < found)) {
+                *fewest = sq;
+                *best = t->scale;
+                found = i;
+            }
+        }
+}
+
 double tone_best_scale(const tone_image *ref, const tone_image *image,
                        unsigned levels, double lo, double hi,
                        uint64_t *left, double *squares)
 {
     double pixels = (double)ref->width * ref->height, best = 1, ratio;
-    double fewest = HUGE_VAL;
-    uint32_t step = (uint32_t)ceil(sqrt(pixels / 65536.0)), i;
+    uint64_t fewest = UINT64_MAX;
+    uint32_t step = (uint32_t)ceil(sqrt(pixels / 65536.0));
     tone_xform t = tone_identity();
     tone_counts k;
     const uint32_t scan = 41, fine = 21;
     t.kind = TONE_SCALE;
     t.step = step > 0 ? step : 1;
     ratio = pow(hi / lo, 1.0 / (scan - 1));
-    for (i = 0; i < scan; i++) {
-        t.scale = lo * pow(ratio, i);
-        tone_measure(ref, image, &t, 0, levels, -1, &k);
-        if (squares_of(&k) < fewest) {
-            fewest = squares_of(&k);
-            best = t.scale;
-        }
-    }
+    scale_round(ref, image, levels, &t, scan, lo, hi, ratio, 1, &best,
+                &fewest);
     lo = best / ratio;
     hi = best * ratio;
-    for (i = 0; i < fine; i++) {
-        t.scale = lo + (hi - lo) * i / (fine - 1);
-        tone_measure(ref, image, &t, 0, levels, -1, &k);
-        if (squares_of(&k) < fewest) {
-            fewest = squares_of(&k);
-            best = t.scale;
-        }
-    }
-    t.step = 1;
+    scale_round(ref, image, levels, &t, fine, lo, hi, ratio, 0, &best,
+                &fewest);
+    t = tone_identity();
+    t.kind = TONE_SCALE;
     t.scale = best;
     tone_measure(ref, image, &t, 0, levels, -1, &k);
     *left = k.differing;

@@ -44,6 +44,7 @@ static void student_init(course_student *s, const rayo_course_data *data,
     }
     s->ambient = fvec_of(data->ambient);
     s->mistake = mistake;
+    s->pixel = -1;
 }
 
 size_t rayo_course_student_nearest(const course_student *s, course_fvec o,
@@ -53,7 +54,11 @@ size_t rayo_course_student_nearest(const course_student *s, course_fvec o,
     float tmin = RAYO_COURSE_INFINITO;
     size_t i, imin = s->ball_count;
     for (i = 0; i < s->ball_count; i++) {
-        float ti = course_fdistance(&s->balls[i], o, d, far_root);
+        float ti;
+        if (s->pixel >= 0 &&
+            (s->pixel < s->span_lo[i] || s->pixel > s->span_hi[i]))
+            continue; /* course_fdistance would say INFINITO */
+        ti = course_fdistance(&s->balls[i], o, d, far_root);
         if (ti < tmin) {
             tmin = ti;
             imin = i;
@@ -90,21 +95,26 @@ int rayo_course_student_shadowed(const course_student *s, course_fvec p,
 
 /*
  * Marks in maybe[] the pixels of the row at height vy whose ray may meet
- * some sphere; elsewhere every sphere's delta is negative, so the
- * student's program finds no sphere and prints black, whatever its
- * mistake.  A ray (vx, vy, vz) from the eye meets a sphere of centre C
+ * some sphere, and sets each sphere's span of them (s->span_lo,
+ * span_hi; empty when lo > hi); outside its span a sphere's delta is
+ * negative, and outside them all the student's program finds no sphere
+ * and prints black, whatever its mistake.  A ray (vx, vy, vz) from the eye meets a sphere of centre C
  * and radius r when (d.C)^2 >= |d|^2 (|C|^2 - r^2): along the row a
  * quadratic in vx, solved in double for a sphere 5% larger plus 0.01
  * (a margin hundreds of times the float model's rounding of delta), and
  * widened by a pixel on each side.  A sphere around the eye, or one
  * whose cone of rays is not bounded along the row, marks the whole row.
  */
-static void row_may_hit(const course_student *s, double vy, double vz,
+static void row_may_hit(course_student *s, double vy, double vz,
                         int half_w, unsigned char *maybe)
 {
     size_t b;
     int w = (int)RAYO_COURSE_WIDTH;
     memset(maybe, 0, RAYO_COURSE_WIDTH);
+    for (b = 0; b < s->ball_count; b++) {
+        s->span_lo[b] = 0;
+        s->span_hi[b] = w - 1;
+    }
     for (b = 0; b < s->ball_count; b++) {
         const course_fball *ball = &s->balls[b];
         double cx = ball->center.x, cy = ball->center.y, cz = ball->center.z;
@@ -115,9 +125,12 @@ static void row_may_hit(const course_student *s, double vy, double vz,
         double disc = qb * qb - 4 * qa * qc, x0, x1, root;
         int i0, i1, i;
         if (k <= 0 || qa >= 0) {
+            /* this and the spheres after it: the whole row */
             memset(maybe, 1, RAYO_COURSE_WIDTH);
             return;
         }
+        s->span_lo[b] = w;
+        s->span_hi[b] = -1;
         if (disc < 0)
             continue;
         root = sqrt(disc);
@@ -135,6 +148,8 @@ static void row_may_hit(const course_student *s, double vy, double vz,
             continue;
         i0 = x0 < 0 ? 0 : (int)x0;
         i1 = x1 >= w ? w - 1 : (int)x1;
+        s->span_lo[b] = i0;
+        s->span_hi[b] = i1;
         for (i = i0; i <= i1; i++)
             maybe[i] = 1;
     }
@@ -197,6 +212,7 @@ rayo_status rayo_course_render_student_rows(rayo_course_exercise exercise,
                 continue;
             }
             d = course_fnormalize(course_fvec_make(vx, vy, vz));
+            student.pixel = (int)i;
             if (gray)
                 row[i] = rayo_course_student_gray(&student, d);
             else

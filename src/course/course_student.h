@@ -48,6 +48,12 @@ typedef struct course_student {
     size_t lamp_count;
     course_fvec ambient; /* EJ2: IA in .x */
     rayo_course_mistake mistake;
+    /* The pixel loop's column (-1: none) and, for the row, the columns
+       span_lo[b] .. span_hi[b] outside which sphere b's delta is
+       negative for a ray from the eye (row_may_hit): there
+       rayo_course_student_nearest skips it, as it would find no root. */
+    int pixel;
+    int span_lo[COURSE_MAX_BALLS], span_hi[COURSE_MAX_BALLS];
 } course_student;
 
 static inline course_fvec course_fvec_make(float x, float y, float z)

@@ -77,6 +77,7 @@ function setup() {
   fs.writeFileSync(path.join(tmp, 'flipped.pbm'),
                    `P1\n${seed.width} ${seed.height}\n${rows.join('\n')}\n`);
   rayo(['convert', course(2), 'ej2.pgm']);
+  rayo(['render', path.join(SOURCE, 'examples/ej2.scene'), '-o', 'ej2-render.pgm']);
   rayo(['convert', course(3), 'ej3.ppm']);
   const gray = netpbm('ej2.pgm');
   const lighter = Buffer.from(gray.data).map((v) => Math.min(255, v + 40));
@@ -192,13 +193,39 @@ async function run(browser, origin, seed) {
   ok(r.want.out.includes(r.verdict + '\n') || r.want.out.endsWith(r.verdict),
      `a gray image: the command's verdict (${r.verdict})`);
   r = await check('swapped.ppm', 'ej3', course(3), 'swapped colour vs EJ3');
+  const colourCompare = r.compare;
   ok(r.want.out.includes(r.verdict) && r.verdict === 'verdict: inconsistent',
      `a colour image: the command's verdict (${r.diagnosis})`);
   r = await check('ej3.png', 'ej3', course(3), 'the EJ3 reference as a PNG vs EJ3');
   ok(r.verdict === 'verdict: identical', 'a PNG decoded by the browser: identical', r.verdict);
-  note(`640x480 compare: ${maskCompare.toFixed(1)} ms bilevel (seed vs EJ1), ` +
-       `${toneCompare.toFixed(1)} ms gray (lighter vs EJ2) (target 100 ms)`);
-  ok(maskCompare < 1000 && toneCompare < 3000, 'compares take well under seconds');
+  // Each kind of 640x480 compare timed RUNS times (the image opened
+  // again, its compare only), the median printed against the target.
+  const RUNS = 5, times = {};
+  async function timed(file, ref, kind) {
+    await page.selectOption(T('reference'), ref);
+    const runs = [];
+    for (let k = 0; k < RUNS; k++) {
+      await page.setInputFiles(T('image-input'), []); // so the same file changes it again
+      await page.evaluate(() => { window.rayoTimes.compare = null; });
+      await page.setInputFiles(T('image-input'), path.join(tmp, file));
+      await page.waitForFunction(() => window.rayoTimes.compare !== null);
+      runs.push(await page.evaluate(() => window.rayoTimes.compare));
+    }
+    const first = runs[0];
+    runs.sort((a, b) => a - b);
+    times[kind] = runs[RUNS >> 1];
+    note(`640x480 compare, ${kind}: median ${times[kind].toFixed(1)} ms of ${RUNS} ` +
+         `(first ${first.toFixed(1)}; ${runs.map((v) => v.toFixed(1)).join(', ')}) (target 100 ms)`);
+  }
+  note(`640x480 compare, the first of each kind in the page (the course's scene rendered and ` +
+       `the reference's maps made then): ${maskCompare.toFixed(1)} ms bilevel, ` +
+       `${toneCompare.toFixed(1)} ms gray (lighter), ${colourCompare.toFixed(1)} ms colour (swapped)`);
+  await timed('seed.pbm', 'ej1', 'bilevel (seed vs EJ1)');
+  await timed('lighter.pgm', 'ej2', 'gray (a lighter EJ2 vs EJ2)');
+  await timed('ej2-render.pgm', 'ej2', 'gray (EJ2 rendered vs its reference)');
+  await timed('swapped.ppm', 'ej3', 'colour (a channel-swapped EJ3 vs EJ3)');
+  const slowest = Math.max(maskCompare, toneCompare, colourCompare, ...Object.values(times));
+  ok(slowest < 3000, `compares take well under seconds (slowest ${slowest.toFixed(1)} ms)`);
   const diff = await page.locator(T('diff')).evaluate((img) => img.naturalWidth);
   ok(diff === 640, 'the difference picture is shown', diff);
 
@@ -302,8 +329,17 @@ async function run(browser, origin, seed) {
   await page.selectOption(T('scene'), 'ej2');
   await page.waitForFunction(() => document.getElementById('info').textContent.startsWith('ej2.pgm'));
   await page.waitForFunction(() => /gray/.test(document.getElementById('report').textContent));
-  const ej2Compare = await page.evaluate(() => window.rayoTimes.compare);
-  note(`640x480 compare, EJ2 rendered vs its reference (consistent): ${ej2Compare.toFixed(1)} ms`);
+  const ej2Compare = [await page.evaluate(() => window.rayoTimes.compare)];
+  for (let k = 1; k < 5; k++) {
+    await page.evaluate(() => { window.rayoTimes.compare = null; });
+    await page.click(T('render'));
+    await page.waitForFunction(() => window.rayoTimes.compare !== null);
+    ej2Compare.push(await page.evaluate(() => window.rayoTimes.compare));
+  }
+  const ej2First = ej2Compare[0];
+  ej2Compare.sort((a, b) => a - b);
+  note(`640x480 compare, EJ2 rendered in the page vs its reference (consistent): median ` +
+       `${ej2Compare[2].toFixed(1)} ms of 5 (first ${ej2First.toFixed(1)}) (target 100 ms)`);
   ok((await text('verdict')) === 'verdict: consistent', 'the EJ2 scene rendered is consistent with EJ2');
 
   // A Spanish browser gets Spanish first.

@@ -4,11 +4,12 @@
  *
  * The page renders on the browser's one thread: rayo_cpu_count answers 1
  * there (wasi-libc's sysconf), so rayo_render takes its serial path and
- * never starts a helper.  Should it try, pthread_create fails and the
+ * never starts a helper (and src/compare/tone_cache.c's lock, a static
+ * one, guards nothing).  Should it try, pthread_create fails and the
  * renderer renders every band on the calling thread, as it does when a
  * system refuses a thread.  Locks and conditions have nothing to guard
  * against and do nothing.  Not a threads library: only what render.c
- * names, so the library's sources build unchanged.
+ * and tone_cache.c name, so the library's sources build unchanged.
  */
 #ifndef RAYO_WEB_PTHREAD_H
 #define RAYO_WEB_PTHREAD_H
@@ -22,6 +23,7 @@ typedef int pthread_mutex_t;
 typedef int pthread_cond_t;
 typedef int pthread_mutexattr_t;
 typedef int pthread_condattr_t;
+#define PTHREAD_MUTEX_INITIALIZER 0
 
 static inline int pthread_create(pthread_t *thread,
                                  const pthread_attr_t *attr,
