@@ -3,7 +3,9 @@
 // call them with JavaScript values.  It only moves bytes: every reading,
 // rendering and comparing is the library's.  The module needs the few
 // WASI calls wasi-libc makes; it has no files, so they answer "bad file"
-// (EBADF), and the clock is the browser's.  A classic script, not a
+// (EBADF), its environment is empty (the library reads RAYO_WALK and
+// RAYO_PACKETS from it: docs/geometry.md), and the clock is the
+// browser's.  A classic script, not a
 // module, so that the page also works opened from file://: the module's
 // bytes come from assets.js (made by `make web`), not from a fetch.
 'use strict';
@@ -18,10 +20,20 @@ async function loadRayo(bytes) {
       new DataView(memory.buffer).setBigUint64(out, ns, true);
       return 0;
     },
+    environ_sizes_get(count, size) {
+      const view = new DataView(memory.buffer);
+      view.setUint32(count, 0, true);
+      view.setUint32(size, 0, true);
+      return 0;
+    },
+    environ_get: () => 0,
     fd_close: () => EBADF,
     fd_read: () => EBADF,
     fd_seek: () => EBADF,
     fd_write: () => EBADF,
+    proc_exit(code) {
+      throw new Error(`rayo.wasm exited with status ${code}`);
+    },
     sched_yield: () => 0,
   };
   const { instance } = await WebAssembly.instantiate(bytes, {
