@@ -205,8 +205,13 @@ is "$(wc -c <"$TMP/seed.tty" | tr -d ' ')" 0 "the assignment (a quick render): n
 is "$(head -c 2 "$TMP/seed.pbm")" P1 "the assignment: its image on stdout"
 
 # --- SIGINT while the bar is drawn: the line erased, no file --------
+# Twice the size (four times the time, about 7 s): the render is stopped
+# once the bar shows, after a second, so it only has to outlast that even
+# when the machine is quicker now than it was when timed (a busy machine
+# at the timing, a quiet one here, left it a finished render and no bar).
 mkdir "$TMP/d"
 rm -f "$TMP/pid"
+slow_size $((2 * size))
 cmd=$(tty_command '' \
     render "$SCENE" -W "$W" -H "$H" --samples 4 -j 1 -o "$TMP/d/int.ppm")
 SHELL=/bin/sh script -qec "$cmd" /dev/null </dev/null >"$TMP/sigint.tty" 2>&1 &
