@@ -63,6 +63,15 @@ rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
                            const void *context, size_t count);
 
 /*
+ * rayo_bvh_widen on up to `threads` threads (0 or 1: the calling one):
+ * the same copy, byte for byte, for any number.
+ */
+rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
+                                   rayo_bvh_sphere_fn sphere_at,
+                                   const void *context, size_t count,
+                                   unsigned threads);
+
+/*
  * rayo_bvh_nearest through the wide copy, when there is one and the walk
  * in use is not binary: returns 1 when it answered, 0 when the caller
  * must walk the binary tree.  Spheres are tested from the copy (test is
