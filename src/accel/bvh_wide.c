@@ -167,28 +167,37 @@ static uint16_t leaf_count_of(const widener *w, const bvh_node *leaf)
     return count;
 }
 
-/* The spheres into the arrays at their primitives' positions in leaf
- * order: in the owner's order, through the inverse of prims, so the
- * reads stream and the scattered writes overlap (reading the spheres in
- * leaf order, each a dependent miss, took ten times longer).  0 without
- * memory. */
-static int copy_spheres(const rayo_bvh *bvh, struct bvh_wide *wide,
-                        size_t prims, rayo_bvh_sphere_fn sphere_at,
-                        const void *context, size_t count)
+/* Each primitive's position in prims (UINT32_MAX: none), *top the
+ * largest primitive; NULL without memory. */
+static uint32_t *positions(const rayo_bvh *bvh, size_t prims, uint32_t *top)
 {
-    uint32_t *position, top = 0;
-    size_t p, i;
+    uint32_t *position;
+    size_t p;
+    *top = 0;
     for (p = 0; p < prims; p++)
-        if (bvh->prims[p] > top)
-            top = bvh->prims[p];
-    position = malloc(((size_t)top + 1) * sizeof *position);
+        if (bvh->prims[p] > *top)
+            *top = bvh->prims[p];
+    position = malloc(((size_t)*top + 1) * sizeof *position);
     if (position == NULL)
-        return 0;
-    for (p = 0; p < (size_t)top + 1; p++)
+        return NULL;
+    for (p = 0; p < (size_t)*top + 1; p++)
         position[p] = UINT32_MAX;
     for (p = 0; p < prims; p++)
         position[bvh->prims[p]] = (uint32_t)p;
-    for (i = 0; i < count; i++) {
+    return position;
+}
+
+/* The owner's spheres begin to end into the arrays at their primitives'
+ * positions in leaf order: in the owner's order, so the reads stream
+ * and the scattered writes overlap (reading the spheres in leaf order,
+ * each a dependent miss, took ten times longer).  Distinct spheres are
+ * distinct primitives, so ranges may be copied at once. */
+static void copy_spheres(struct bvh_wide *wide, const uint32_t *position,
+                         uint32_t top, rayo_bvh_sphere_fn sphere_at,
+                         const void *context, size_t begin, size_t end)
+{
+    size_t i;
+    for (i = begin; i < end; i++) {
         uint32_t prim, at;
         rayo_sphere s;
         sphere_at(context, i, &prim, &s);
@@ -200,8 +209,6 @@ static int copy_spheres(const rayo_bvh *bvh, struct bvh_wide *wide,
         wide->rr[at] = s.radius * s.radius;
         wide->sphere[at] = 1;
     }
-    free(position);
-    return 1;
 }
 
 /* The children of the wide node made from binary node `binary`
@@ -305,6 +312,7 @@ static uint32_t widen_node(widener *w, uint32_t binary, uint32_t *next)
  */
 #define SPLIT_DEPTH 3
 #define FRONTIER_MAX 64 /* 4^SPLIT_DEPTH */
+#define COPY_JOBS 16
 
 typedef struct splitter {
     widener *w;
@@ -313,7 +321,13 @@ typedef struct splitter {
     size_t size[FRONTIER_MAX];       /* their wide node counts */
     unsigned count;
     atomic_uint taken;
-    int counting; /* the threads' phase: count, else make */
+    enum { SPLIT_COUNT, SPLIT_COPY, SPLIT_MAKE } phase;
+    /* SPLIT_COPY: the spheres, in COPY_JOBS ranges */
+    const uint32_t *position;
+    uint32_t top;
+    rayo_bvh_sphere_fn sphere_at;
+    const void *context;
+    size_t spheres;
 } splitter;
 
 /* The frontier under binary node `binary`, at wide depth `depth`; how
@@ -362,10 +376,14 @@ static uint32_t widen_top(splitter *s, uint32_t binary, int depth,
 static void *split_worker(void *argument)
 {
     splitter *s = argument;
-    unsigned i;
-    while ((i = atomic_fetch_add(&s->taken, 1)) < s->count) {
-        if (s->counting) {
+    unsigned i, jobs = s->phase == SPLIT_COPY ? COPY_JOBS : s->count;
+    while ((i = atomic_fetch_add(&s->taken, 1)) < jobs) {
+        if (s->phase == SPLIT_COUNT) {
             s->size[i] = wide_count(s->w->bvh->nodes, s->frontier[i]);
+        } else if (s->phase == SPLIT_COPY) {
+            copy_spheres(s->w->wide, s->position, s->top, s->sphere_at,
+                         s->context, s->spheres * i / COPY_JOBS,
+                         s->spheres * (i + 1) / COPY_JOBS);
         } else {
             uint32_t next = s->start[i];
             (void)widen_node(s->w, s->frontier[i], &next);
@@ -379,9 +397,10 @@ static void split_run(splitter *s, unsigned threads)
 {
     pthread_t helpers[FRONTIER_MAX];
     unsigned started = 0, i;
+    unsigned jobs = s->phase == SPLIT_COPY ? COPY_JOBS : s->count;
     atomic_store(&s->taken, 0);
-    if (threads > s->count)
-        threads = s->count;
+    if (threads > jobs)
+        threads = jobs;
     for (i = 1; i < threads; i++) {
         if (pthread_create(&helpers[started], NULL, split_worker, s) != 0)
             break;
@@ -407,7 +426,7 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
     size_t prims = 0, i, capacity;
     widener w;
     splitter *s = NULL;
-    uint32_t next = 0;
+    uint32_t next = 0, top, *position;
     rayo_bvh_wide_free(bvh->wide);
     bvh->wide = NULL;
     (void)rayo_bvh_walk_current(); /* the queries read walk_in_use */
@@ -425,7 +444,7 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
     if (threads > 1 && (s = calloc(1, sizeof *s)) != NULL) {
         s->w = &w;
         capacity = gather(s, 0, 0);
-        s->counting = 1;
+        s->phase = SPLIT_COUNT;
         split_run(s, threads);
         for (i = 0; i < s->count; i++)
             capacity += s->size[i];
@@ -456,7 +475,8 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
     wide->cz = wide->cy + (prims + BVH_WIDE_LANES);
     wide->rr = wide->cz + (prims + BVH_WIDE_LANES);
     wide->ids = bvh->prims;
-    if (!copy_spheres(bvh, wide, prims, sphere_at, context, count)) {
+    position = positions(bvh, prims, &top);
+    if (position == NULL) {
         rayo_bvh_wide_free(wide);
         free(s);
         return RAYO_ERR_NOMEM;
@@ -464,12 +484,22 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
     w.wide = wide;
     if (s != NULL) {
         unsigned at = 0;
+        s->position = position;
+        s->top = top;
+        s->sphere_at = sphere_at;
+        s->context = context;
+        s->spheres = count;
+        s->phase = SPLIT_COPY;
+        split_run(s, threads);
+        free(position);
         (void)widen_top(s, 0, 0, &next, &at);
-        s->counting = 0;
+        s->phase = SPLIT_MAKE;
         split_run(s, threads);
         next = (uint32_t)capacity;
         free(s);
     } else {
+        copy_spheres(wide, position, top, sphere_at, context, 0, count);
+        free(position);
         (void)widen_node(&w, 0, &next);
     }
     wide->node_count = next;

@@ -46,8 +46,10 @@ const char *rayo_bvh_walk_name(rayo_bvh_walk walk);
 
 /*
  * Sphere i of the owner's count spheres: *prim, its primitive number in
- * the tree, and *sphere.  Asked in order of i, which may follow the
- * owner's memory.
+ * the tree (distinct spheres, distinct primitives), and *sphere.  Asked
+ * in order of i, which may follow the owner's memory; by
+ * rayo_bvh_widen_threads, from several threads at once, each asking
+ * its own range of i in order.
  */
 typedef void (*rayo_bvh_sphere_fn)(const void *context, size_t i,
                                    uint32_t *prim, rayo_sphere *sphere);
