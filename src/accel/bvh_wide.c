@@ -321,8 +321,9 @@ typedef struct splitter {
     size_t size[FRONTIER_MAX];       /* their wide node counts */
     unsigned count;
     atomic_uint taken;
-    enum { SPLIT_COUNT, SPLIT_COPY, SPLIT_MAKE } phase;
-    /* SPLIT_COPY: the spheres, in COPY_JOBS ranges */
+    /* the phase: the frontier's counts, then the spheres in COPY_JOBS
+     * ranges; or the frontier's nodes */
+    enum { SPLIT_COUNT_COPY, SPLIT_MAKE } phase;
     const uint32_t *position;
     uint32_t top;
     rayo_bvh_sphere_fn sphere_at;
@@ -373,20 +374,26 @@ static uint32_t widen_top(splitter *s, uint32_t binary, int depth,
     return index;
 }
 
+static unsigned split_jobs(const splitter *s)
+{
+    return s->phase == SPLIT_MAKE ? s->count : s->count + COPY_JOBS;
+}
+
 static void *split_worker(void *argument)
 {
     splitter *s = argument;
-    unsigned i, jobs = s->phase == SPLIT_COPY ? COPY_JOBS : s->count;
+    unsigned i, jobs = split_jobs(s);
     while ((i = atomic_fetch_add(&s->taken, 1)) < jobs) {
-        if (s->phase == SPLIT_COUNT) {
+        if (s->phase == SPLIT_MAKE) {
+            uint32_t next = s->start[i];
+            (void)widen_node(s->w, s->frontier[i], &next);
+        } else if (i < s->count) {
             s->size[i] = wide_count(s->w->bvh->nodes, s->frontier[i]);
-        } else if (s->phase == SPLIT_COPY) {
+        } else {
+            i -= s->count;
             copy_spheres(s->w->wide, s->position, s->top, s->sphere_at,
                          s->context, s->spheres * i / COPY_JOBS,
                          s->spheres * (i + 1) / COPY_JOBS);
-        } else {
-            uint32_t next = s->start[i];
-            (void)widen_node(s->w, s->frontier[i], &next);
         }
     }
     return NULL;
@@ -397,7 +404,7 @@ static void split_run(splitter *s, unsigned threads)
 {
     pthread_t helpers[FRONTIER_MAX];
     unsigned started = 0, i;
-    unsigned jobs = s->phase == SPLIT_COPY ? COPY_JOBS : s->count;
+    unsigned jobs = split_jobs(s);
     atomic_store(&s->taken, 0);
     if (threads > jobs)
         threads = jobs;
@@ -437,37 +444,21 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
             return RAYO_ERR_LIMIT; /* no copy: the binary walk serves */
         prims += bvh->nodes[i].count;
     }
-    w.bvh = bvh;
-    w.wide = NULL;
-    if (threads > FRONTIER_MAX)
-        threads = FRONTIER_MAX;
-    if (threads > 1 && (s = calloc(1, sizeof *s)) != NULL) {
-        s->w = &w;
-        capacity = gather(s, 0, 0);
-        s->phase = SPLIT_COUNT;
-        split_run(s, threads);
-        for (i = 0; i < s->count; i++)
-            capacity += s->size[i];
-    } else {
-        capacity = wide_count(bvh->nodes, 0);
-    }
-    if (capacity > SIZE_MAX / sizeof *wide->nodes ||
-        capacity > UINT32_MAX ||
-        prims > SIZE_MAX / 4 / sizeof *wide->cx - BVH_WIDE_LANES) {
-        free(s);
+    if (prims > SIZE_MAX / 4 / sizeof *wide->cx - BVH_WIDE_LANES)
         return RAYO_ERR_NOMEM;
-    }
     wide = calloc(1, sizeof *wide);
-    if (wide == NULL) {
-        free(s);
+    if (wide == NULL)
         return RAYO_ERR_NOMEM;
-    }
-    /* 64-byte aligned: a node is two whole cache lines. */
-    wide->nodes = aligned_alloc(64, capacity * sizeof *wide->nodes);
     wide->cx = calloc(4 * (prims + BVH_WIDE_LANES), sizeof *wide->cx);
     wide->sphere = calloc(prims + BVH_WIDE_LANES, 1);
-    if (wide->nodes == NULL || wide->cx == NULL || wide->sphere == NULL) {
+    position = positions(bvh, prims, &top);
+    if (threads > FRONTIER_MAX)
+        threads = FRONTIER_MAX;
+    if (threads > 1)
+        s = calloc(1, sizeof *s);
+    if (wide->cx == NULL || wide->sphere == NULL || position == NULL) {
         rayo_bvh_wide_free(wide);
+        free(position);
         free(s);
         return RAYO_ERR_NOMEM;
     }
@@ -475,31 +466,43 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
     wide->cz = wide->cy + (prims + BVH_WIDE_LANES);
     wide->rr = wide->cz + (prims + BVH_WIDE_LANES);
     wide->ids = bvh->prims;
-    position = positions(bvh, prims, &top);
-    if (position == NULL) {
-        rayo_bvh_wide_free(wide);
-        free(s);
-        return RAYO_ERR_NOMEM;
-    }
+    w.bvh = bvh;
     w.wide = wide;
     if (s != NULL) {
-        unsigned at = 0;
+        /* the subtrees counted and the spheres copied together */
+        s->w = &w;
         s->position = position;
         s->top = top;
         s->sphere_at = sphere_at;
         s->context = context;
         s->spheres = count;
-        s->phase = SPLIT_COPY;
+        capacity = gather(s, 0, 0);
+        s->phase = SPLIT_COUNT_COPY;
         split_run(s, threads);
-        free(position);
+        for (i = 0; i < s->count; i++)
+            capacity += s->size[i];
+    } else {
+        capacity = wide_count(bvh->nodes, 0);
+        copy_spheres(wide, position, top, sphere_at, context, 0, count);
+    }
+    free(position);
+    /* 64-byte aligned: a node is two whole cache lines. */
+    if (capacity > SIZE_MAX / sizeof *wide->nodes ||
+        capacity > UINT32_MAX ||
+        (wide->nodes = aligned_alloc(64, capacity * sizeof *wide->nodes)) ==
+            NULL) {
+        rayo_bvh_wide_free(wide);
+        free(s);
+        return RAYO_ERR_NOMEM;
+    }
+    if (s != NULL) {
+        unsigned at = 0;
         (void)widen_top(s, 0, 0, &next, &at);
         s->phase = SPLIT_MAKE;
         split_run(s, threads);
         next = (uint32_t)capacity;
         free(s);
     } else {
-        copy_spheres(wide, position, top, sphere_at, context, 0, count);
-        free(position);
         (void)widen_node(&w, 0, &next);
     }
     wide->node_count = next;
