@@ -16,6 +16,10 @@
  * answers are the same bit for bit (bvh_wide_walk.h says why the lanes'
  * arithmetic is the scalar one).
  *
+ * On several threads (rayo_bvh_widen_threads) the copy is the same
+ * bytes: the top levels are made by the caller, the subtrees below into
+ * the blocks of the array one thread would have given them.
+ *
  * The walk is chosen once per process, from RAYO_WALK (binary, sse2,
  * avx2), else the fastest one the processor runs: AVX2 (with packets,
  * bvh_packet.h) where __builtin_cpu_supports says so (the processor and
@@ -313,6 +317,7 @@ static uint32_t widen_node(widener *w, uint32_t binary, uint32_t *next)
 #define SPLIT_DEPTH 3
 #define FRONTIER_MAX 64 /* 4^SPLIT_DEPTH */
 #define COPY_JOBS 16
+#define WIDEN_THREADS_MIN 2048 /* primitives */
 
 typedef struct splitter {
     widener *w;
@@ -454,6 +459,8 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
     position = positions(bvh, prims, &top);
     if (threads > FRONTIER_MAX)
         threads = FRONTIER_MAX;
+    if (prims < WIDEN_THREADS_MIN)
+        threads = 1; /* starting threads would cost more */
     if (threads > 1)
         s = calloc(1, sizeof *s);
     if (wide->cx == NULL || wide->sphere == NULL || position == NULL) {
