@@ -30,7 +30,8 @@
  * task writes its nodes in its own array, in the order one thread would
  * have made them; when all are done the arrays are stitched into the
  * order a single thread makes (each task's nodes inserted where the
- * serial build would have started that subtree), so the node array and
+ * serial build would have started that subtree, the tasks copied on the
+ * threads), so the node array and
  * the primitive order are the same bytes for any number of threads
  * (tests/unit/t_bvh_build.c).  When a thread cannot be started its
  * share is built by the others; with none, by the caller.
@@ -41,6 +42,7 @@
 #include <float.h>
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -576,20 +578,53 @@ static int place(builder *b, task *t, uint32_t root, uint32_t *next)
     return 1;
 }
 
-/* Copies task t's nodes (and its spawned tasks') to their places. */
-static void stitch(builder *b, const task *t, bvh_node *out)
+/* Copies task t's own nodes to their places (a spawned task's
+ * placeholder is left to that task). */
+static void stitch(const task *t, bvh_node *out)
 {
     size_t j;
     for (j = 0; j < t->count; j++) {
         bvh_node node = t->nodes[j];
-        if (node.count == NODE_TASK) {
-            stitch(b, b->tasks[node.first], out);
+        if (node.count == NODE_TASK)
             continue;
-        }
         if (node.count == 0)
             node.first = t->map[node.first];
         out[t->map[j]] = node;
     }
+}
+
+/* The stitching on several threads: the tasks' places are disjoint. */
+typedef struct stitcher {
+    builder *b;
+    bvh_node *out;
+    atomic_size_t taken;
+} stitcher;
+
+static void *stitch_worker(void *argument)
+{
+    stitcher *s = argument;
+    size_t i;
+    while ((i = atomic_fetch_add(&s->taken, 1)) < s->b->task_count)
+        stitch(s->b->tasks[i], s->out);
+    return NULL;
+}
+
+static void stitch_all(builder *b, bvh_node *out)
+{
+    pthread_t helpers[64];
+    unsigned started = 0, i;
+    stitcher s;
+    s.b = b;
+    s.out = out;
+    atomic_init(&s.taken, 0);
+    for (i = 1; i < b->threads; i++) {
+        if (pthread_create(&helpers[started], NULL, stitch_worker, &s) != 0)
+            break;
+        started++;
+    }
+    (void)stitch_worker(&s);
+    for (i = 0; i < started; i++)
+        pthread_join(helpers[i], NULL);
 }
 
 /* How many threads: the caller's wish, else one. */
@@ -636,7 +671,7 @@ static rayo_status build_all(builder *b, task *root, rayo_bvh *bvh)
     bvh->nodes = malloc(next * sizeof *bvh->nodes);
     if (bvh->nodes == NULL)
         return RAYO_ERR_NOMEM;
-    stitch(b, root, bvh->nodes);
+    stitch_all(b, bvh->nodes);
     return RAYO_OK;
 }
 

@@ -16,6 +16,10 @@
  * answers are the same bit for bit (bvh_wide_walk.h says why the lanes'
  * arithmetic is the scalar one).
  *
+ * On several threads (rayo_bvh_widen_threads) the copy is the same
+ * bytes: the top levels are made by the caller, the subtrees below into
+ * the blocks of the array one thread would have given them.
+ *
  * The walk is chosen once per process, from RAYO_WALK (binary, sse2,
  * avx2), else the fastest one the processor runs: AVX2 (with packets,
  * bvh_packet.h) where __builtin_cpu_supports says so (the processor and
@@ -27,6 +31,7 @@
 #include "bvh_wide_impl.h"
 #include "bvh_wide_isa.h"
 
+#include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
@@ -166,28 +171,37 @@ static uint16_t leaf_count_of(const widener *w, const bvh_node *leaf)
     return count;
 }
 
-/* The spheres into the arrays at their primitives' positions in leaf
- * order: in the owner's order, through the inverse of prims, so the
- * reads stream and the scattered writes overlap (reading the spheres in
- * leaf order, each a dependent miss, took ten times longer).  0 without
- * memory. */
-static int copy_spheres(const rayo_bvh *bvh, struct bvh_wide *wide,
-                        size_t prims, rayo_bvh_sphere_fn sphere_at,
-                        const void *context, size_t count)
+/* Each primitive's position in prims (UINT32_MAX: none), *top the
+ * largest primitive; NULL without memory. */
+static uint32_t *positions(const rayo_bvh *bvh, size_t prims, uint32_t *top)
 {
-    uint32_t *position, top = 0;
-    size_t p, i;
+    uint32_t *position;
+    size_t p;
+    *top = 0;
     for (p = 0; p < prims; p++)
-        if (bvh->prims[p] > top)
-            top = bvh->prims[p];
-    position = malloc(((size_t)top + 1) * sizeof *position);
+        if (bvh->prims[p] > *top)
+            *top = bvh->prims[p];
+    position = malloc(((size_t)*top + 1) * sizeof *position);
     if (position == NULL)
-        return 0;
-    for (p = 0; p < (size_t)top + 1; p++)
+        return NULL;
+    for (p = 0; p < (size_t)*top + 1; p++)
         position[p] = UINT32_MAX;
     for (p = 0; p < prims; p++)
         position[bvh->prims[p]] = (uint32_t)p;
-    for (i = 0; i < count; i++) {
+    return position;
+}
+
+/* The owner's spheres begin to end into the arrays at their primitives'
+ * positions in leaf order: in the owner's order, so the reads stream
+ * and the scattered writes overlap (reading the spheres in leaf order,
+ * each a dependent miss, took ten times longer).  Distinct spheres are
+ * distinct primitives, so ranges may be copied at once. */
+static void copy_spheres(struct bvh_wide *wide, const uint32_t *position,
+                         uint32_t top, rayo_bvh_sphere_fn sphere_at,
+                         const void *context, size_t begin, size_t end)
+{
+    size_t i;
+    for (i = begin; i < end; i++) {
         uint32_t prim, at;
         rayo_sphere s;
         sphere_at(context, i, &prim, &s);
@@ -199,8 +213,6 @@ static int copy_spheres(const rayo_bvh *bvh, struct bvh_wide *wide,
         wide->rr[at] = s.radius * s.radius;
         wide->sphere[at] = 1;
     }
-    free(position);
-    return 1;
 }
 
 /* The children of the wide node made from binary node `binary`
@@ -246,14 +258,13 @@ static size_t wide_count(const bvh_node *nodes, uint32_t binary)
     return total;
 }
 
-/* Makes the wide node for binary node `binary` (as collapse); returns
- * its index. */
-static uint32_t widen_node(widener *w, uint32_t binary)
+/* Fills wide node `index` with the lanes of binary node `binary` (as
+ * collapse) and leaves the children for the caller; their count. */
+static unsigned widen_lanes(widener *w, uint32_t binary, uint32_t index,
+                            uint32_t *kids)
 {
     const bvh_node *nodes = w->bvh->nodes;
-    struct bvh_wide *wide = w->wide;
-    uint32_t index = (uint32_t)wide->node_count++, kids[BVH_WIDE_LANES];
-    bvh_wide_node *out = &wide->nodes[index];
+    bvh_wide_node *out = &w->wide->nodes[index];
     unsigned count = collapse(nodes, binary, kids), k;
     int a, side;
     memset(out, 0, sizeof *out);
@@ -271,66 +282,237 @@ static uint32_t widen_node(widener *w, uint32_t binary)
         for (side = 0; side < 2; side++)
             for (a = 0; a < 3; a++)
                 out->box[side][a][k] = n->bounds[side][a];
-    }
-    for (k = 0; k < count; k++) {
-        const bvh_node *n = &nodes[kids[k]];
-        uint32_t child;
-        uint16_t leaf_count = 0;
         if (n->count) {
-            child = n->first;
-            leaf_count = leaf_count_of(w, n);
-        } else {
-            child = widen_node(w, kids[k]);
+            out->child[k] = n->first;
+            out->count[k] = leaf_count_of(w, n);
         }
-        /* (the array is preallocated: recursion moves nothing) */
-        wide->nodes[index].child[k] = child;
-        wide->nodes[index].count[k] = leaf_count;
+    }
+    return count;
+}
+
+/* Makes the wide node for binary node `binary` at index *next, and its
+ * subtree's after it in depth-first order (the order of one thread);
+ * returns its index. */
+static uint32_t widen_node(widener *w, uint32_t binary, uint32_t *next)
+{
+    const bvh_node *nodes = w->bvh->nodes;
+    uint32_t index = (*next)++, kids[BVH_WIDE_LANES];
+    unsigned count = widen_lanes(w, binary, index, kids), k;
+    for (k = 0; k < count; k++)
+        if (!nodes[kids[k]].count) {
+            /* (the array is preallocated: recursion moves nothing) */
+            uint32_t child = widen_node(w, kids[k], next);
+            w->wide->nodes[index].child[k] = child;
+        }
+    return index;
+}
+
+/*
+ * On several threads the copy is made in the same order, so the same
+ * bytes: the wide nodes down to depth SPLIT_DEPTH are made by the
+ * calling thread, and the subtrees below them (the frontier), each of
+ * which one thread would make as a block of consecutive nodes, are
+ * counted and then made on any thread into their blocks.
+ */
+#define SPLIT_DEPTH 3
+#define FRONTIER_MAX 64 /* 4^SPLIT_DEPTH */
+#define COPY_JOBS 16
+#define WIDEN_THREADS_MIN 2048 /* primitives */
+
+typedef struct splitter {
+    widener *w;
+    uint32_t frontier[FRONTIER_MAX]; /* binary roots, depth-first order */
+    uint32_t start[FRONTIER_MAX];    /* their wide indices */
+    size_t size[FRONTIER_MAX];       /* their wide node counts */
+    unsigned count;
+    atomic_uint taken;
+    /* the phase: the frontier's counts, then the spheres in COPY_JOBS
+     * ranges; or the frontier's nodes */
+    enum { SPLIT_COUNT_COPY, SPLIT_MAKE } phase;
+    const uint32_t *position;
+    uint32_t top;
+    rayo_bvh_sphere_fn sphere_at;
+    const void *context;
+    size_t spheres;
+} splitter;
+
+/* The frontier under binary node `binary`, at wide depth `depth`; how
+ * many wide nodes lie above it. */
+static size_t gather(splitter *s, uint32_t binary, int depth)
+{
+    const bvh_node *nodes = s->w->bvh->nodes;
+    uint32_t kids[BVH_WIDE_LANES];
+    unsigned count, k;
+    size_t total = 1;
+    if (depth == SPLIT_DEPTH) {
+        s->frontier[s->count++] = binary;
+        return 0;
+    }
+    count = collapse(nodes, binary, kids);
+    for (k = 0; k < count; k++)
+        if (!nodes[kids[k]].count)
+            total += gather(s, kids[k], depth + 1);
+    return total;
+}
+
+/* The wide nodes above the frontier, at *next on, the frontier's blocks
+ * placed as they come (their sizes known); *at counts the frontier. */
+static uint32_t widen_top(splitter *s, uint32_t binary, int depth,
+                          uint32_t *next, unsigned *at)
+{
+    const bvh_node *nodes = s->w->bvh->nodes;
+    uint32_t index = (*next)++, kids[BVH_WIDE_LANES];
+    unsigned count = widen_lanes(s->w, binary, index, kids), k;
+    for (k = 0; k < count; k++) {
+        uint32_t child;
+        if (nodes[kids[k]].count)
+            continue;
+        if (depth + 1 == SPLIT_DEPTH) {
+            child = *next;
+            s->start[*at] = child;
+            *next += (uint32_t)s->size[(*at)++];
+        } else {
+            child = widen_top(s, kids[k], depth + 1, next, at);
+        }
+        s->w->wide->nodes[index].child[k] = child;
     }
     return index;
+}
+
+static unsigned split_jobs(const splitter *s)
+{
+    return s->phase == SPLIT_MAKE ? s->count : s->count + COPY_JOBS;
+}
+
+static void *split_worker(void *argument)
+{
+    splitter *s = argument;
+    unsigned i, jobs = split_jobs(s);
+    while ((i = atomic_fetch_add(&s->taken, 1)) < jobs) {
+        if (s->phase == SPLIT_MAKE) {
+            uint32_t next = s->start[i];
+            (void)widen_node(s->w, s->frontier[i], &next);
+        } else if (i < s->count) {
+            s->size[i] = wide_count(s->w->bvh->nodes, s->frontier[i]);
+        } else {
+            i -= s->count;
+            copy_spheres(s->w->wide, s->position, s->top, s->sphere_at,
+                         s->context, s->spheres * i / COPY_JOBS,
+                         s->spheres * (i + 1) / COPY_JOBS);
+        }
+    }
+    return NULL;
+}
+
+/* Runs the phase on up to `threads` threads (the caller one of them). */
+static void split_run(splitter *s, unsigned threads)
+{
+    pthread_t helpers[FRONTIER_MAX];
+    unsigned started = 0, i;
+    unsigned jobs = split_jobs(s);
+    atomic_store(&s->taken, 0);
+    if (threads > jobs)
+        threads = jobs;
+    for (i = 1; i < threads; i++) {
+        if (pthread_create(&helpers[started], NULL, split_worker, s) != 0)
+            break;
+        started++;
+    }
+    (void)split_worker(s);
+    for (i = 0; i < started; i++)
+        pthread_join(helpers[i], NULL);
 }
 
 rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
                            const void *context, size_t count)
 {
+    return rayo_bvh_widen_threads(bvh, sphere_at, context, count, 1);
+}
+
+rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
+                                   rayo_bvh_sphere_fn sphere_at,
+                                   const void *context, size_t count,
+                                   unsigned threads)
+{
     struct bvh_wide *wide;
     size_t prims = 0, i, capacity;
     widener w;
+    splitter *s = NULL;
+    uint32_t next = 0, top, *position;
     rayo_bvh_wide_free(bvh->wide);
     bvh->wide = NULL;
     (void)rayo_bvh_walk_current(); /* the queries read walk_in_use */
     if (bvh->node_count == 0)
         return RAYO_OK;
-    capacity = wide_count(bvh->nodes, 0);
     for (i = 0; i < bvh->node_count; i++) {
         if (bvh->nodes[i].count > BVH_WIDE_COUNT)
             return RAYO_ERR_LIMIT; /* no copy: the binary walk serves */
         prims += bvh->nodes[i].count;
     }
-    if (capacity > SIZE_MAX / sizeof *wide->nodes ||
-        prims > SIZE_MAX / 4 / sizeof *wide->cx - BVH_WIDE_LANES)
+    if (prims > SIZE_MAX / 4 / sizeof *wide->cx - BVH_WIDE_LANES)
         return RAYO_ERR_NOMEM;
     wide = calloc(1, sizeof *wide);
     if (wide == NULL)
         return RAYO_ERR_NOMEM;
-    /* 64-byte aligned: a node is two whole cache lines. */
-    wide->nodes = aligned_alloc(64, capacity * sizeof *wide->nodes);
     wide->cx = calloc(4 * (prims + BVH_WIDE_LANES), sizeof *wide->cx);
     wide->sphere = calloc(prims + BVH_WIDE_LANES, 1);
-    if (wide->nodes == NULL || wide->cx == NULL || wide->sphere == NULL) {
+    position = positions(bvh, prims, &top);
+    if (threads > FRONTIER_MAX)
+        threads = FRONTIER_MAX;
+    if (prims < WIDEN_THREADS_MIN)
+        threads = 1; /* starting threads would cost more */
+    if (threads > 1)
+        s = calloc(1, sizeof *s);
+    if (wide->cx == NULL || wide->sphere == NULL || position == NULL) {
         rayo_bvh_wide_free(wide);
+        free(position);
+        free(s);
         return RAYO_ERR_NOMEM;
     }
     wide->cy = wide->cx + (prims + BVH_WIDE_LANES);
     wide->cz = wide->cy + (prims + BVH_WIDE_LANES);
     wide->rr = wide->cz + (prims + BVH_WIDE_LANES);
     wide->ids = bvh->prims;
-    if (!copy_spheres(bvh, wide, prims, sphere_at, context, count)) {
-        rayo_bvh_wide_free(wide);
-        return RAYO_ERR_NOMEM;
-    }
     w.bvh = bvh;
     w.wide = wide;
-    widen_node(&w, 0);
+    if (s != NULL) {
+        /* the subtrees counted and the spheres copied together */
+        s->w = &w;
+        s->position = position;
+        s->top = top;
+        s->sphere_at = sphere_at;
+        s->context = context;
+        s->spheres = count;
+        capacity = gather(s, 0, 0);
+        s->phase = SPLIT_COUNT_COPY;
+        split_run(s, threads);
+        for (i = 0; i < s->count; i++)
+            capacity += s->size[i];
+    } else {
+        capacity = wide_count(bvh->nodes, 0);
+        copy_spheres(wide, position, top, sphere_at, context, 0, count);
+    }
+    free(position);
+    /* 64-byte aligned: a node is two whole cache lines. */
+    if (capacity > SIZE_MAX / sizeof *wide->nodes ||
+        capacity > UINT32_MAX ||
+        (wide->nodes = aligned_alloc(64, capacity * sizeof *wide->nodes)) ==
+            NULL) {
+        rayo_bvh_wide_free(wide);
+        free(s);
+        return RAYO_ERR_NOMEM;
+    }
+    if (s != NULL) {
+        unsigned at = 0;
+        (void)widen_top(s, 0, 0, &next, &at);
+        s->phase = SPLIT_MAKE;
+        split_run(s, threads);
+        next = (uint32_t)capacity;
+        free(s);
+    } else {
+        (void)widen_node(&w, 0, &next);
+    }
+    wide->node_count = next;
     bvh->wide = wide;
     return RAYO_OK;
 }

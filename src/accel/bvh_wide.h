@@ -46,8 +46,10 @@ const char *rayo_bvh_walk_name(rayo_bvh_walk walk);
 
 /*
  * Sphere i of the owner's count spheres: *prim, its primitive number in
- * the tree, and *sphere.  Asked in order of i, which may follow the
- * owner's memory.
+ * the tree (distinct spheres, distinct primitives), and *sphere.  Asked
+ * in order of i, which may follow the owner's memory; by
+ * rayo_bvh_widen_threads, from several threads at once, each asking
+ * its own range of i in order.
  */
 typedef void (*rayo_bvh_sphere_fn)(const void *context, size_t i,
                                    uint32_t *prim, rayo_sphere *sphere);
@@ -61,6 +63,15 @@ typedef void (*rayo_bvh_sphere_fn)(const void *context, size_t i,
  */
 rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
                            const void *context, size_t count);
+
+/*
+ * rayo_bvh_widen on up to `threads` threads (0 or 1: the calling one):
+ * the same copy, byte for byte, for any number.
+ */
+rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
+                                   rayo_bvh_sphere_fn sphere_at,
+                                   const void *context, size_t count,
+                                   unsigned threads);
 
 /*
  * rayo_bvh_nearest through the wide copy, when there is one and the walk

@@ -77,13 +77,15 @@ rayo_status rayo_scene_prepare_threads(rayo_scene *scene, unsigned threads,
         ids[k] = scene->spheres[i].object;
     for (i = 0; i < scene->triangle_count; i++, k++)
         ids[k] = scene->triangles[i].object;
-    status = rayo_bvh_build_from(&bvh, object_box, scene, ids, n,
-                                 threads ? threads : rayo_cpu_count(), err);
+    if (threads == 0)
+        threads = rayo_cpu_count();
+    status = rayo_bvh_build_from(&bvh, object_box, scene, ids, n, threads,
+                                 err);
     free(ids);
     if (status != RAYO_OK)
         return status;
     scene->bvh = bvh;
-    rayo_scene_prepare_walks(scene);
+    rayo_scene_prepare_walks(scene, threads);
     scene->prepared = 1;
     return RAYO_OK;
 }

@@ -43,11 +43,11 @@ static void sphere_at(const void *context, size_t i, uint32_t *prim,
     *sphere = s->shape;
 }
 
-void rayo_scene_prepare_walks(rayo_scene *scene)
+void rayo_scene_prepare_walks(rayo_scene *scene, unsigned threads)
 {
     if (scene->bvh != NULL)
-        (void)rayo_bvh_widen(scene->bvh, sphere_at, scene,
-                             scene->sphere_count);
+        (void)rayo_bvh_widen_threads(scene->bvh, sphere_at, scene,
+                                     scene->sphere_count, threads);
 }
 
 typedef struct occlusion_context {

@@ -69,9 +69,9 @@ double rayo_scene_object_t(const rayo_scene *scene, uint32_t object,
 /*
  * Gives the hierarchy its fast walks' copy (src/accel/bvh_wide.h), with
  * the scene's spheres; called by rayo_scene_prepare once the tree is
- * built.  Without memory it makes none: queries then walk the binary
- * tree, with the same answers.  (query.c)
+ * built, on up to `threads` threads.  Without memory it makes none:
+ * queries then walk the binary tree, with the same answers.  (query.c)
  */
-void rayo_scene_prepare_walks(rayo_scene *scene);
+void rayo_scene_prepare_walks(rayo_scene *scene, unsigned threads);
 
 #endif

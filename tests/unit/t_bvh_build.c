@@ -10,7 +10,9 @@
  * arrays and the primitive orders must be identical.  The tree must also
  * be sound: every node's float box holds the double boxes below it, each
  * primitive is in exactly one leaf, interior nodes' children are inside
- * the array, and the depth is bounded.
+ * the array, and the depth is bounded.  The tree's 4-wide copy
+ * (bvh_wide.c), with every other primitive a sphere, is made on 1, 2, 3
+ * and 8 threads too: the same nodes and sphere arrays, byte for byte.
  */
 #include <math.h>
 #include <stdint.h>
@@ -21,7 +23,7 @@
 #include "rayo.h"
 #include "tap.h"
 
-#include "../../src/accel/bvh_impl.h"
+#include "../../src/accel/bvh_wide_impl.h"
 
 static uint64_t next64(uint64_t *state)
 {
@@ -152,6 +154,57 @@ static int sound(const rayo_bvh *bvh, const rayo_box *boxes,
     return w.bad == 0;
 }
 
+
+/* Sphere i: primitive 7 + 2i (ids[k] = k + 7), the sphere in box 2i. */
+static void sphere_of_box(const void *context, size_t i, uint32_t *prim,
+                          rayo_sphere *sphere)
+{
+    const rayo_box *box = (const rayo_box *)context + 2 * i;
+    *prim = (uint32_t)(2 * i + 7);
+    sphere->center.x = 0.5 * (box->lo[0] + box->hi[0]);
+    sphere->center.y = 0.5 * (box->lo[1] + box->hi[1]);
+    sphere->center.z = 0.5 * (box->lo[2] + box->hi[2]);
+    sphere->radius = 0.25 * (box->hi[0] - box->lo[0]);
+}
+
+static int same_wide(const struct bvh_wide *a, const struct bvh_wide *b,
+                     size_t n)
+{
+    size_t lanes = n + BVH_WIDE_LANES;
+    return a != NULL && b != NULL && a->node_count == b->node_count &&
+           memcmp(a->nodes, b->nodes, a->node_count * sizeof *a->nodes) ==
+               0 &&
+           memcmp(a->cx, b->cx, 4 * lanes * sizeof *a->cx) == 0 &&
+           memcmp(a->sphere, b->sphere, lanes) == 0;
+}
+
+/* The wide copy of bvh on 1, 2, 3 and 8 threads. */
+static void check_widen(const char *name, rayo_bvh *bvh,
+                        const rayo_box *boxes, size_t n)
+{
+    static const unsigned threads[] = {2, 3, 8};
+    struct bvh_wide *one;
+    size_t i, spheres = (n + 1) / 2;
+    if (rayo_bvh_widen_threads(bvh, sphere_of_box, boxes, spheres, 1) !=
+            RAYO_OK ||
+        bvh->wide == NULL) {
+        ok(0, "%s: wide copy on 1 thread", name);
+        return;
+    }
+    one = bvh->wide;
+    bvh->wide = NULL;
+    ok(one->node_count >= 1 && one->node_count <= bvh->node_count,
+       "%s: wide copy of %lu nodes", name, (unsigned long)one->node_count);
+    for (i = 0; i < sizeof threads / sizeof threads[0]; i++) {
+        int same = rayo_bvh_widen_threads(bvh, sphere_of_box, boxes,
+                                          spheres, threads[i]) == RAYO_OK &&
+                   same_wide(one, bvh->wide, n);
+        ok(same, "%s: wide copy on %u threads: the same bytes as 1", name,
+           threads[i]);
+    }
+    rayo_bvh_wide_free(one);
+}
+
 static void check_layout(const char *name, layout kind, size_t n)
 {
     static const unsigned threads[] = {1, 2, 3, 8};
@@ -192,6 +245,8 @@ static void check_layout(const char *name, layout kind, size_t n)
            "%s: %u threads build the same bytes as 1", name, threads[i]);
         rayo_bvh_free(bvh);
     }
+    if (first != NULL)
+        check_widen(name, first, boxes, n);
     rayo_bvh_free(first);
     free(boxes);
     free(ids);
