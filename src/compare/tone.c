@@ -144,13 +144,19 @@ void tone_image_convert_rows(const rayo_image *image, tone_image *out,
     }
 }
 
-void tone_image_free(tone_image *t)
+void tone_image_drop_maps(tone_image *t)
 {
-    free(t->v);
     free(t->near);
     free(t->slope);
     free(t->lo);
     free(t->hi);
+    t->near = t->slope = t->lo = t->hi = NULL;
+}
+
+void tone_image_free(tone_image *t)
+{
+    free(t->v);
+    tone_image_drop_maps(t);
     memset(t, 0, sizeof *t);
 }
 

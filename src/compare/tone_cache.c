@@ -27,8 +27,8 @@
  * mistake a band of rows at a time and stops once it is ruled out): a
  * slot per exercise and mistake, under the same lock, about 15 MB when
  * every mistake of EJ2 and EJ3 is kept whole.  What is kept stays
- * reachable until tone_cache_clear (rayo_compare_release_cache, which
- * the command calls before it exits) or the process's end.
+ * reachable until rayo_compare_release_cache (which the command calls
+ * before it exits) or the process's end.
  */
 #include <pthread.h>
 #include <stdlib.h>
@@ -86,28 +86,18 @@ static int has_maps(const tone_image *t)
            t->hi != NULL;
 }
 
-/* Frees t's maps, leaving its samples. */
-static void drop_maps(tone_image *t)
-{
-    free(t->near);
-    free(t->slope);
-    free(t->lo);
-    free(t->hi);
-    t->near = t->slope = t->lo = t->hi = NULL;
-}
-
 /* Copies from's maps into to (whose own are dropped); 0 when out of
    memory (to then has none). */
 static int copy_maps(tone_image *to, const tone_image *from)
 {
     size_t pixels = (size_t)from->width * from->height;
-    drop_maps(to);
+    tone_image_drop_maps(to);
     to->near = copy_of(from->near, pixels);
     to->slope = copy_of(from->slope, pixels);
     to->lo = copy_of(from->lo, samples_of(from));
     to->hi = copy_of(from->hi, samples_of(from));
     if (!has_maps(to)) {
-        drop_maps(to);
+        tone_image_drop_maps(to);
         return 0;
     }
     to->near_radius = from->near_radius;
@@ -339,7 +329,7 @@ void tone_cache_keep_rows(int course, int mistake, const tone_image *t,
     pthread_mutex_unlock(&lock);
 }
 
-void tone_cache_clear(void)
+void rayo_compare_release_cache(void)
 {
     size_t i, j;
     pthread_mutex_lock(&lock);
@@ -356,7 +346,3 @@ void tone_cache_clear(void)
     pthread_mutex_unlock(&lock);
 }
 
-void rayo_compare_release_cache(void)
-{
-    tone_cache_clear();
-}

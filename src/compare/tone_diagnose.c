@@ -167,7 +167,7 @@ static rayo_status detect_course(const tone_image *ref,
     tone_counts k;
     tone_xform id = tone_identity();
     rayo_status s;
-    int radius = r->tolerance < 64 ? (int)floor(r->tolerance) : 64;
+    int radius = tone_radius(r->tolerance);
     int key = (int)r->tone.reference_channels;
     *course = -1;
     if (ref->width != 640 || ref->height != 480)

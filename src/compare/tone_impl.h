@@ -20,6 +20,7 @@
 #ifndef RAYO_TONE_IMPL_H
 #define RAYO_TONE_IMPL_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -41,6 +42,13 @@ typedef struct tone_image {
     unsigned near_levels;
 } tone_image;
 
+/* The radius of the edge maps for a tolerance: its whole part, at most
+   64. */
+static inline int tone_radius(double tolerance)
+{
+    return tolerance < 64 ? (int)floor(tolerance) : 64;
+}
+
 static inline const unsigned char *tone_pixel(const tone_image *t,
                                               uint32_t x, uint32_t y)
 {
@@ -58,6 +66,9 @@ int tone_has_colour(const rayo_image *image);
 rayo_status tone_image_make(const rayo_image *image, unsigned channels,
                             tone_image *out, rayo_error *err);
 void tone_image_free(tone_image *t);
+
+/* Frees t's maps (near, slope, lo, hi), leaving its samples. */
+void tone_image_drop_maps(tone_image *t);
 
 /* Rows first..end-1 of image into out, made by tone_image_make from an
    image of the same size and format. */
@@ -81,7 +92,7 @@ rayo_status tone_image_find_edges_kept(tone_image *t, double tolerance,
    (1), or 0 when it has none for t's samples; t's samples and maps
    kept (copies).  The course's render of `course` with `channels` as a
    new tone image into t, its samples only (1), or 0; and kept.
-   tone_cache_clear frees every entry. */
+   rayo_compare_release_cache (compare.h) frees every entry. */
 int tone_cache_find_maps(tone_image *t, int radius, unsigned levels);
 void tone_cache_keep_maps(const tone_image *t);
 int tone_cache_find_course(int course, unsigned channels, tone_image *t);
@@ -101,7 +112,6 @@ void tone_cache_keep_detected(const tone_image *t, int radius,
 uint32_t tone_cache_find_rows(int course, int mistake, tone_image *t);
 void tone_cache_keep_rows(int course, int mistake, const tone_image *t,
                           uint32_t rows);
-void tone_cache_clear(void);
 
 /* tone_window.c: the extreme (max 1: largest, 0: smallest) of in over
    the window |dx|, |dy| <= radius around each pixel, into out (both

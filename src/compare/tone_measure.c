@@ -530,7 +530,7 @@ void tone_measure(const tone_image *ref, const tone_image *image,
 {
     uint32_t step = t->step > 0 ? t->step : 1, x, y;
     unsigned n = ref->channels, c;
-    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    int radius = tone_radius(tolerance);
     scale_axis *xs = NULL, *ys = NULL;
     int in_place = t->kind == TONE_IDENTITY && ref->width == image->width &&
                    ref->height == image->height;
@@ -634,7 +634,7 @@ static int stands_out(unsigned step, unsigned before, unsigned after,
 rayo_status tone_image_find_edges_kept(tone_image *t, double tolerance,
                                        unsigned levels, rayo_error *err)
 {
-    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    int radius = tone_radius(tolerance);
     rayo_status s;
     if (t->near != NULL && t->near_radius == radius &&
         t->near_levels == levels)
@@ -651,18 +651,14 @@ rayo_status tone_image_find_edges(tone_image *t, double tolerance,
                                   unsigned levels, rayo_error *err)
 {
     size_t n = (size_t)t->width * t->height, i;
-    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    int radius = tone_radius(tolerance);
     unsigned char *hs, *vs, *edge, *slope;
     uint32_t x, y, w = t->width, h = t->height;
     rayo_status s;
     if (t->near != NULL && t->near_radius == radius &&
         t->near_levels == levels)
         return RAYO_OK;
-    free(t->near);
-    free(t->slope);
-    free(t->lo);
-    free(t->hi);
-    t->near = t->slope = t->lo = t->hi = NULL;
+    tone_image_drop_maps(t);
     hs = malloc(n);
     vs = malloc(n);
     edge = malloc(n);
@@ -854,7 +850,7 @@ int tone_classify_pixel(const tone_image *ref, const tone_image *image,
     const unsigned char *r = tone_pixel(ref, x, y);
     unsigned char u[3];
     unsigned c, worst = 0;
-    int radius = tolerance < 64 ? (int)floor(tolerance) : 64;
+    int radius = tone_radius(tolerance);
     *difference = 0;
     if (!undo(ref, image, &t, x, y, u))
         return TONE_PIXEL_UNKNOWN;

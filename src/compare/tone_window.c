@@ -168,26 +168,26 @@ rayo_status tone_window_map(const unsigned char *in, unsigned char *out,
     unsigned char *line =
         malloc(2 * longest > padded_row ? 2 * longest : padded_row);
     unsigned char *across = malloc(row * height);
-    unsigned char *tile = malloc(3 * tall * TILE_COLUMNS);
+    unsigned char *tile = NULL;
     uint32_t y;
     size_t x;
     unsigned c;
-    if (line == NULL || across == NULL || tile == NULL) {
-        free(line);
-        free(across);
-        free(tile);
-        return rayo_error_set(err, RAYO_ERR_NOMEM,
-                              "compare: out of memory for a %ux%u window "
-                              "map",
-                              width, height);
-    }
-    if (radius <= DIRECT_RADIUS) {
+    if (line != NULL && across != NULL && radius <= DIRECT_RADIUS) {
         window_direct(in, out, width, height, channels, radius, max, line,
                       across);
         free(line);
         free(across);
-        free(tile);
         return RAYO_OK;
+    }
+    if (line != NULL && across != NULL)
+        tile = malloc(3 * tall * TILE_COLUMNS);
+    if (tile == NULL) {
+        free(line);
+        free(across);
+        return rayo_error_set(err, RAYO_ERR_NOMEM,
+                              "compare: out of memory for a %ux%u window "
+                              "map",
+                              width, height);
     }
     for (y = 0; y < height; y++)
         for (c = 0; c < channels; c++)

@@ -72,7 +72,7 @@ static void test_maps(void)
     tone_image a = pattern(61, 47, 3, 1), b = copy(&a), c = copy(&a);
     tone_image d = copy(&a);
     rayo_error err;
-    tone_cache_clear();
+    rayo_compare_release_cache();
     ok(!tone_cache_find_maps(&b, 2, 1), "an empty cache has no maps");
     ok(tone_image_find_edges(&a, 2, 1, &err) == RAYO_OK, "maps made");
     ok(tone_image_find_edges_kept(&b, 2, 1, &err) == RAYO_OK &&
@@ -95,7 +95,7 @@ static void test_bounded(void)
     tone_image t[6];
     rayo_error err;
     unsigned i, found = 0;
-    tone_cache_clear();
+    rayo_compare_release_cache();
     for (i = 0; i < 6; i++) {
         t[i] = pattern(40, 30, 1, 10 + i);
         tone_image_find_edges_kept(&t[i], 2, 1, &err);
@@ -109,7 +109,7 @@ static void test_bounded(void)
         tone_image_free(&c);
     }
     is_int(found, 4, "six images kept: four entries at most");
-    tone_cache_clear();
+    rayo_compare_release_cache();
     for (i = 0; i < 6; i++) {
         tone_image c = copy(&t[i]);
         found = (unsigned)tone_cache_find_maps(&c, 2, 1);
@@ -118,7 +118,7 @@ static void test_bounded(void)
             break;
         tone_image_free(&t[i]);
     }
-    is_int(i, 6, "after tone_cache_clear nothing is found");
+    is_int(i, 6, "after rayo_compare_release_cache nothing is found");
     for (; i < 6; i++)
         tone_image_free(&t[i]);
 }
@@ -128,7 +128,7 @@ static void test_course_and_rows(void)
     tone_image r = pattern(64, 48, 3, 3), got, part = pattern(64, 48, 3, 4);
     tone_image back = pattern(64, 48, 3, 0);
     size_t row = (size_t)64 * 3;
-    tone_cache_clear();
+    rayo_compare_release_cache();
     ok(!tone_cache_find_course(RAYO_COURSE_EJ3, 3, &got), "no course render yet");
     tone_cache_keep_course(RAYO_COURSE_EJ3, &r);
     ok(tone_cache_find_course(RAYO_COURSE_EJ3, 3, &got) &&
@@ -152,7 +152,7 @@ static void test_course_and_rows(void)
     ok(memcmp(back.v, part.v, row * 48) == 0, "all its rows");
     is_int(tone_cache_find_rows(RAYO_COURSE_EJ2, 2, &back), 0,
            "another mistake has none");
-    tone_cache_clear();
+    rayo_compare_release_cache();
     is_int(tone_cache_find_rows(RAYO_COURSE_EJ2, 1, &back), 0,
            "cleared: none");
     tone_image_free(&r);
@@ -289,7 +289,7 @@ static void test_again(void)
     rayo_image swapped = course_image(RAYO_COURSE_EJ3, 0, 1);
     char *first[3], *again[3];
     int k;
-    tone_cache_clear();
+    rayo_compare_release_cache();
     first[0] = report_of(&ref2, &lighter);
     first[1] = report_of(&ref3, &swapped);
     first[2] = report_of(&ref2, &darker);
@@ -304,7 +304,7 @@ static void test_again(void)
        "  (the lighter EJ2: an offset of +40)");
     ok(first[1] != NULL && strstr(first[1], "channels-swapped") != NULL,
        "  (the swapped EJ3: channels swapped)");
-    tone_cache_clear();
+    rayo_compare_release_cache();
     for (k = 0; k < 3; k++) {
         free(first[k]);
         free(again[k]);
@@ -323,6 +323,6 @@ int main(void)
     test_course_and_rows();
     test_scale_search();
     test_again();
-    tone_cache_clear();
+    rayo_compare_release_cache();
     return tap_done();
 }
