@@ -423,12 +423,6 @@ static void split_run(splitter *s, unsigned threads)
         pthread_join(helpers[i], NULL);
 }
 
-rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
-                           const void *context, size_t count)
-{
-    return rayo_bvh_widen_threads(bvh, sphere_at, context, count, 1);
-}
-
 rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
                                    rayo_bvh_sphere_fn sphere_at,
                                    const void *context, size_t count,
@@ -524,7 +518,7 @@ int rayo_bvh_wide_nearest(const rayo_bvh *bvh, const rayo_ray *ray,
 {
     if (bvh->wide == NULL)
         return 0;
-    /* rayo_bvh_widen read the setting before this copy existed */
+    /* rayo_bvh_widen_threads read the setting before this copy existed */
     switch (walk_loaded()) {
     case RAYO_BVH_WALK_BINARY:
         return 0;

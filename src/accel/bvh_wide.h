@@ -59,14 +59,9 @@ typedef void (*rayo_bvh_sphere_fn)(const void *context, size_t i,
  * with the count spheres that sphere_at gives (every one a primitive of
  * the tree; the other primitives are tested through the walks' callback).
  * Without memory it makes none and returns RAYO_ERR_NOMEM; queries then
- * walk the binary tree, with the same answers.
- */
-rayo_status rayo_bvh_widen(rayo_bvh *bvh, rayo_bvh_sphere_fn sphere_at,
-                           const void *context, size_t count);
-
-/*
- * rayo_bvh_widen on up to `threads` threads (0 or 1: the calling one):
- * the same copy, byte for byte, for any number.
+ * walk the binary tree, with the same answers.  Made on up to `threads`
+ * threads (0 or 1: the calling one): the same copy, byte for byte, for
+ * any number.
  */
 rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
                                    rayo_bvh_sphere_fn sphere_at,

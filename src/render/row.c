@@ -18,30 +18,32 @@
  * ray, and a poll would cost a good part of a cheap one. */
 #define HIT_PIXELS_PER_POLL 64u
 
+_Static_assert(RAYO_SCENE_PACKET == 4,
+               "render_row_hit's constant lanes are written out for four");
+
 /* The per-pixel loop of hit mode, four neighbouring pixels' rays at a
  * time (query_packet.h: each ray gets its own answer). */
 static void render_row_hit(const rayo_camera *camera, const rayo_scene *scene,
                            rayo_render_stop *stop, uint32_t row,
                            unsigned char *out)
 {
+    static const double t_min[RAYO_SCENE_PACKET] = {0.0, 0.0, 0.0, 0.0};
+    static const double t_max[RAYO_SCENE_PACKET] = {INFINITY, INFINITY,
+                                                    INFINITY, INFINITY};
+    static const size_t skip[RAYO_SCENE_PACKET] = {
+        RAYO_NO_OBJECT, RAYO_NO_OBJECT, RAYO_NO_OBJECT, RAYO_NO_OBJECT};
     uint32_t i;
     memset(out, 0, ((size_t)camera->width + 7) / 8);
     for (i = 0; i < camera->width; i += RAYO_SCENE_PACKET) {
         rayo_ray rays[RAYO_SCENE_PACKET];
-        double t_min[RAYO_SCENE_PACKET], t_max[RAYO_SCENE_PACKET];
-        size_t skip[RAYO_SCENE_PACKET];
         unsigned k, n = camera->width - i < RAYO_SCENE_PACKET
                             ? camera->width - i
                             : RAYO_SCENE_PACKET,
                     hits;
         if (i % HIT_PIXELS_PER_POLL == 0 && rayo_render_stopping(stop))
             return;
-        for (k = 0; k < n; k++) {
+        for (k = 0; k < n; k++)
             rays[k] = rayo_camera_ray(camera, (double)(i + k), (double)row);
-            t_min[k] = 0.0;
-            t_max[k] = INFINITY;
-            skip[k] = RAYO_NO_OBJECT;
-        }
         hits = rayo_scene_occluded_packet(scene, rays, (1u << n) - 1, t_min,
                                           t_max, skip);
         for (k = 0; k < n; k++)

@@ -21,6 +21,8 @@
 
 #include "shade.h"
 
+#include "../scene/query_packet.h"
+
 static rayo_vec3 shade_one(const rayo_scene *scene,
                            const rayo_render_options *options,
                            const rayo_ray *ray)
@@ -71,27 +73,23 @@ static int pixel_sum(const rayo_camera *camera, const rayo_scene *scene,
     return 1;
 }
 
-/* pixel_sum for up to four neighbouring pixels of one ray each, in
- * phong: the rays are pixel_sum's, shaded as a packet
- * (rayo_shade_phong_packet gives each what rayo_shade_phong gives), and
- * each sum is pixel_sum's 0 + value.  0 when the stop came first. */
+/* pixel_sum for up to RAYO_SCENE_PACKET neighbouring pixels of one ray
+ * each, in phong: the rays are pixel_sum's (its one sample's offset is
+ * 0), shaded as a packet (rayo_shade_phong_packet gives each what
+ * rayo_shade_phong gives; pixel_sum's 0 + value differs from value only
+ * in turning -0 into +0, the same byte).  0 when the stop came first. */
 static int phong_sums(const rayo_camera *camera, const rayo_scene *scene,
                       const rayo_render_options *options,
                       rayo_render_stop *stop, uint32_t i, uint32_t j,
                       unsigned count, rayo_vec3 *sums)
 {
-    rayo_ray rays[4];
-    rayo_vec3 values[4];
-    double dx = (0 + 0.5) / 1 - 0.5, dy = dx;
+    rayo_ray rays[RAYO_SCENE_PACKET];
     unsigned k;
     if (rayo_render_stopping(stop))
         return 0;
     for (k = 0; k < count; k++)
-        rays[k] = rayo_camera_ray(camera, (double)(i + k) + dx,
-                                  (double)j + dy);
-    rayo_shade_phong_packet(scene, rays, count, options->depth, values);
-    for (k = 0; k < count; k++)
-        sums[k] = rayo_vec3_add(rayo_vec3_make(0, 0, 0), values[k]);
+        rays[k] = rayo_camera_ray(camera, (double)(i + k), (double)j);
+    rayo_shade_phong_packet(scene, rays, count, options->depth, sums);
     return 1;
 }
 
@@ -118,7 +116,7 @@ void rayo_render_row_shaded(const rayo_camera *camera,
     double rays = (double)sample_count(options) * sample_count(options);
     int packets =
         options->shade == RAYO_SHADE_PHONG && sample_count(options) == 1;
-    rayo_vec3 ahead[4];
+    rayo_vec3 ahead[RAYO_SCENE_PACKET];
     uint32_t i, first = 0, count = 0;
     if (options->shade == RAYO_SHADE_HIT)
         memset(out, 0, ((size_t)camera->width + 7) / 8);
@@ -128,7 +126,9 @@ void rayo_render_row_shaded(const rayo_camera *camera,
         if (packets) {
             if (i >= first + count) {
                 first = i;
-                count = camera->width - i < 4 ? camera->width - i : 4;
+                count = camera->width - i < RAYO_SCENE_PACKET
+                            ? camera->width - i
+                            : RAYO_SCENE_PACKET;
                 if (!phong_sums(camera, scene, options, stop, i, row, count,
                                 ahead))
                     return;

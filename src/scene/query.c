@@ -186,18 +186,13 @@ static int occluded_brute(const rayo_scene *scene, const rayo_ray *ray,
     return 0;
 }
 
-int rayo_scene_occluded_counted(const rayo_scene *scene,
-                                const rayo_ray *ray, double t_min,
-                                double t_max, size_t skip,
-                                rayo_scene_stats *stats)
+/* 1 when a plane other than object skip blocks the ray within
+ * (t_min, t_max); each plane tested is counted. */
+static int planes_block(const rayo_scene *scene, const rayo_ray *ray,
+                        double t_min, double t_max, size_t skip,
+                        rayo_scene_stats *stats)
 {
-    occlusion_context context;
-    rayo_bvh_cost cost = {0, 0};
     size_t i;
-    int found;
-    stats->rays++;
-    if (scene->bvh == NULL)
-        return occluded_brute(scene, ray, t_min, t_max, skip, stats);
     for (i = 0; i < scene->plane_count; i++) {
         if (scene->planes[i].object == skip)
             continue;
@@ -206,12 +201,34 @@ int rayo_scene_occluded_counted(const rayo_scene *scene,
                                  t_max) < INFINITY)
             return 1;
     }
+    return 0;
+}
+
+/* An object to skip as the hierarchy's primitive number (UINT32_MAX:
+ * none, as RAYO_NO_OBJECT and every index past it are). */
+static uint32_t skip_prim(size_t skip)
+{
+    return skip < UINT32_MAX ? (uint32_t)skip : UINT32_MAX;
+}
+
+int rayo_scene_occluded_counted(const rayo_scene *scene,
+                                const rayo_ray *ray, double t_min,
+                                double t_max, size_t skip,
+                                rayo_scene_stats *stats)
+{
+    occlusion_context context;
+    rayo_bvh_cost cost = {0, 0};
+    int found;
+    stats->rays++;
+    if (scene->bvh == NULL)
+        return occluded_brute(scene, ray, t_min, t_max, skip, stats);
+    if (planes_block(scene, ray, t_min, t_max, skip, stats))
+        return 1;
     context.scene = scene;
     context.skip = skip;
     found = rayo_bvh_wide_any(scene->bvh, ray, t_min, t_max,
-                              skip < UINT32_MAX ? (uint32_t)skip
-                                                : UINT32_MAX,
-                              occlusion_test, &context, &cost);
+                              skip_prim(skip), occlusion_test, &context,
+                              &cost);
     if (found < 0)
         found = rayo_bvh_any(scene->bvh, ray, t_min, t_max, occlusion_test,
                              &context, &cost);
@@ -285,19 +302,13 @@ unsigned rayo_scene_occluded_packet(const rayo_scene *scene,
         return blocked;
     }
     for (k = 0; k < RAYO_SCENE_PACKET; k++) {
-        size_t i;
+        rayo_scene_stats stats = {0, 0, 0};
         skip32[k] = UINT32_MAX;
         if (!((lanes >> k) & 1u))
             continue;
-        skip32[k] = skip[k] < UINT32_MAX ? (uint32_t)skip[k] : UINT32_MAX;
-        for (i = 0; i < scene->plane_count; i++) {
-            if (scene->planes[i].object == skip[k])
-                continue;
-            if (rayo_plane_intersect(&scene->planes[i].shape, &rays[k],
-                                     t_min[k], t_max[k]) < INFINITY)
-                break;
-        }
-        if (i < scene->plane_count)
+        skip32[k] = skip_prim(skip[k]);
+        if (planes_block(scene, &rays[k], t_min[k], t_max[k], skip[k],
+                         &stats))
             blocked |= 1u << k;
         else
             open |= 1u << k;

@@ -785,13 +785,14 @@ typedef struct statement {
     rayo_status (*parse)(parser *p);
 } statement;
 
+/* Spheres first: a large scene is mostly their lines. */
 static const statement statements[] = {
-    {"camera", parse_camera},     {"shade", parse_shade},
+    {"sphere", parse_sphere},     {"camera", parse_camera},
+    {"shade", parse_shade},
     {"samples", parse_samples},   {"depth", parse_depth},
     {"background", parse_background}, {"ambient", parse_ambient},
     {"light", parse_light},       {"material", parse_material},
-    {"sphere", parse_sphere},     {"plane", parse_plane},
-    {"triangle", parse_triangle},
+    {"plane", parse_plane},       {"triangle", parse_triangle},
 };
 #define STATEMENT_COUNT (sizeof statements / sizeof statements[0])
 
@@ -801,9 +802,6 @@ static rayo_status parse_statement(parser *p)
     char text[WORD_SHOW + 32];
     size_t i;
     scene_lexer_word(&p->lx, &word);
-    /* objects first: a large scene is mostly their lines */
-    if (scene_word_is(&word, "sphere"))
-        return parse_sphere(p);
     for (i = 0; i < STATEMENT_COUNT; i++)
         if (scene_word_is(&word, statements[i].keyword))
             return statements[i].parse(p);
