@@ -59,7 +59,7 @@
 
 /* The camera of camera.h: focal distance and orthonormal basis. */
 typedef struct camera {
-    vec3 origin, right, up, forward;
+    rayo_vec3 origin, right, up, forward;
     double focal;
 } camera;
 
@@ -83,38 +83,38 @@ static camera make_camera(const scene *s)
     c.origin = s->origin;
     c.focal = (double)s->width /
               (2.0 * tan(s->fov * 3.14159265358979323846 / 360.0));
-    c.right = v3(1, 0, 0);
-    c.up = v3(0, 1, 0);
-    c.forward = v3(0, 0, 1);
+    c.right = rayo_vec3_make(1, 0, 0);
+    c.up = rayo_vec3_make(0, 1, 0);
+    c.forward = rayo_vec3_make(0, 0, 1);
     if (s->aimed) {
-        vec3 f = sub(s->look_at, s->origin), right;
-        if (dot(f, f) == 0) {
+        rayo_vec3 f = rayo_vec3_sub(s->look_at, s->origin), right;
+        if (rayo_vec3_dot(f, f) == 0) {
             fprintf(stderr, "embree-rays: the look-at point equals the "
                             "camera origin\n");
             exit(2);
         }
-        f = normalize(f);
-        right = cross(s->up, f);
-        if (!(sqrt(dot(right, right)) > 1e-12 * sqrt(dot(s->up, s->up)))) {
+        f = rayo_vec3_normalize(f);
+        right = rayo_vec3_cross(s->up, f);
+        if (!(sqrt(rayo_vec3_dot(right, right)) > 1e-12 * sqrt(rayo_vec3_dot(s->up, s->up)))) {
             fprintf(stderr, "embree-rays: the up vector is parallel to the "
                             "view direction\n");
             exit(2);
         }
         c.forward = f;
-        c.right = normalize(right);
-        c.up = cross(f, c.right);
+        c.right = rayo_vec3_normalize(right);
+        c.up = rayo_vec3_cross(f, c.right);
     }
     return c;
 }
 
 /* rayo_camera_ray: the direction through pixel (i, j). */
-static vec3 pixel_direction(const camera *c, const scene *s, unsigned i,
+static rayo_vec3 pixel_direction(const camera *c, const scene *s, unsigned i,
                             unsigned j)
 {
     double x = (double)i - (double)(s->width / 2);
     double y = (double)j - (double)(s->height / 2);
-    return normalize(add(add(scale(c->right, x), scale(c->up, -y)),
-                         scale(c->forward, c->focal)));
+    return rayo_vec3_normalize(rayo_vec3_add(rayo_vec3_add(rayo_vec3_scale(c->right, x), rayo_vec3_scale(c->up, -y)),
+                         rayo_vec3_scale(c->forward, c->focal)));
 }
 
 /* ---- Embree ---- */
@@ -144,13 +144,13 @@ static RTCScene build(RTCDevice device, const scene *s, const camera *cam,
     }
     for (k = 0; planes_first == 0 && k < s->plane_count; k++) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
-        vec3 n = s->plane_normal[k];
+        rayo_vec3 n = s->plane_normal[k];
         /* The camera's foot on the plane, and the camera's right (else
          * any direction) in the plane. */
-        vec3 foot = sub(cam->origin,
-                        scale(n, dot(sub(cam->origin, s->plane_point[k]), n)));
-        vec3 u = sub(cam->right, scale(n, dot(cam->right, n)));
-        vec3 w, corner[4];
+        rayo_vec3 foot = rayo_vec3_sub(cam->origin,
+                        rayo_vec3_scale(n, rayo_vec3_dot(rayo_vec3_sub(cam->origin, s->plane_point[k]), n)));
+        rayo_vec3 u = rayo_vec3_sub(cam->right, rayo_vec3_scale(n, rayo_vec3_dot(cam->right, n)));
+        rayo_vec3 w, corner[4];
         float *v =
             rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
                                     RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4);
@@ -158,19 +158,19 @@ static RTCScene build(RTCDevice device, const scene *s, const camera *cam,
             rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
                                     RTC_FORMAT_UINT4, 4 * sizeof(unsigned), 1);
         int c;
-        if (!(dot(u, u) > 1e-12))
-            u = cross(n, fabs(n.x) < 0.9 ? v3(1, 0, 0) : v3(0, 1, 0));
-        u = normalize(u);
-        w = cross(n, u);
-        u = scale(u, PLANE_HALF_SIZE);
-        w = scale(w, PLANE_HALF_SIZE);
+        if (!(rayo_vec3_dot(u, u) > 1e-12))
+            u = rayo_vec3_cross(n, fabs(n.x) < 0.9 ? rayo_vec3_make(1, 0, 0) : rayo_vec3_make(0, 1, 0));
+        u = rayo_vec3_normalize(u);
+        w = rayo_vec3_cross(n, u);
+        u = rayo_vec3_scale(u, PLANE_HALF_SIZE);
+        w = rayo_vec3_scale(w, PLANE_HALF_SIZE);
         /* Embree splits a quad v0 v1 v2 v3 along v1-v3, where float
          * rounding of so large triangles lets rays through: that seam is
          * laid along the camera's right through its foot, out of view. */
-        corner[0] = sub(foot, w);
-        corner[1] = add(foot, u);
-        corner[2] = add(foot, w);
-        corner[3] = sub(foot, u);
+        corner[0] = rayo_vec3_sub(foot, w);
+        corner[1] = rayo_vec3_add(foot, u);
+        corner[2] = rayo_vec3_add(foot, w);
+        corner[3] = rayo_vec3_sub(foot, u);
         for (c = 0; c < 4; c++) {
             v[3 * c] = (float)corner[c].x;
             v[3 * c + 1] = (float)corner[c].y;
@@ -267,7 +267,7 @@ static void trace_single(const job *jb, pass *out)
     rtcInitIntersectContext(&context);
     for (j = 0; j < s->height; j++)
         for (i = 0; i < s->width; i++) {
-            vec3 d = pixel_direction(&jb->cam, s, i, j);
+            rayo_vec3 d = pixel_direction(&jb->cam, s, i, j);
             struct RTCRayHit rh;
             int hit, plane;
             float plane_t = 0;
@@ -385,10 +385,10 @@ static void trace_packets(const job *jb, pass *out)
             for (k = 0; k < 16; k++) {
                 unsigned i = ti + (unsigned)(k & 3),
                          j = tj + (unsigned)(k >> 2);
-                vec3 d;
+                rayo_vec3 d;
                 valid[k] = i < s->width && j < s->height ? -1 : 0;
                 d = valid[k] ? pixel_direction(&jb->cam, s, i, j)
-                             : v3(0, 0, 1);
+                             : rayo_vec3_make(0, 0, 1);
                 rh.ray.org_x[k] = (float)jb->cam.origin.x;
                 rh.ray.org_y[k] = (float)jb->cam.origin.y;
                 rh.ray.org_z[k] = (float)jb->cam.origin.z;
@@ -598,11 +598,11 @@ int main(int argc, char **argv)
     jb.s = &s;
     jb.cam = make_camera(&s);
     for (a = 0; (size_t)a < s.plane_count; a++) {
-        vec3 n = s.plane_normal[a];
+        rayo_vec3 n = s.plane_normal[a];
         jb.plane_n[a][0] = (float)n.x;
         jb.plane_n[a][1] = (float)n.y;
         jb.plane_n[a][2] = (float)n.z;
-        jb.plane_d[a] = (float)dot(n, s.plane_point[a]);
+        jb.plane_d[a] = (float)rayo_vec3_dot(n, s.plane_point[a]);
     }
     jb.es = build(device, &s, &jb.cam, jb.planes_first);
     build_s = wall_now() - start;

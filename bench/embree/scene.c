@@ -65,9 +65,9 @@ static double number(reader *r, const char *what)
     return value;
 }
 
-static vec3 vector(reader *r, const char *what)
+static rayo_vec3 vector(reader *r, const char *what)
 {
-    vec3 v;
+    rayo_vec3 v;
     v.x = number(r, what);
     v.y = number(r, what);
     v.z = number(r, what);
@@ -117,7 +117,7 @@ static void camera_line(reader *r, scene *s)
 
 static void sphere_line(reader *r, scene *s)
 {
-    vec3 c = vector(r, "the centre's coordinates");
+    rayo_vec3 c = vector(r, "the centre's coordinates");
     double radius = number(r, "a radius");
     float *slot;
     if (!(radius > 0))
@@ -142,14 +142,14 @@ static void sphere_line(reader *r, scene *s)
 
 static void plane_line(reader *r, scene *s)
 {
-    vec3 p = vector(r, "the plane's point"), n = vector(r, "its normal");
-    if (dot(n, n) == 0)
+    rayo_vec3 p = vector(r, "the plane's point"), n = vector(r, "its normal");
+    if (rayo_vec3_dot(n, n) == 0)
         die_input(r, "expected a non-zero normal");
     if (s->plane_count == MAX_PLANES)
         die_input(r, "too many planes for this program (64)");
     trailing_material(r);
     s->plane_point[s->plane_count] = p;
-    s->plane_normal[s->plane_count++] = normalize(n);
+    s->plane_normal[s->plane_count++] = rayo_vec3_normalize(n);
 }
 
 static void light_line(reader *r, scene *s)
@@ -209,8 +209,8 @@ void read_scene(const char *path, scene *s)
     s->width = 640;
     s->height = 480;
     s->fov = 90;
-    s->look_at = v3(0, 0, 1);
-    s->up = v3(0, 1, 0);
+    s->look_at = rayo_vec3_make(0, 0, 1);
+    s->up = rayo_vec3_make(0, 1, 0);
     while (line < text + size) {
         char *end = memchr(line, '\n', (size_t)(text + size - line)), *w;
         if (end == NULL)
