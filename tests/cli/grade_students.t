@@ -112,15 +112,7 @@ if [ "$HAVE_VALGRIND" = 1 ]; then
 
     grade leak
     is "$results" "$ALL_PASS valgrind=FAIL" "leak: only valgrind fails"
-    # 480 rows of 640 ints leaked.  valgrind's scan is conservative: now
-    # and then (2 runs in 12 with clang's build of it) a stale word that
-    # points inside the last row makes that row "possibly lost", so the
-    # two kinds are added up.
-    lost=$(awk '/leak: [0-9]+ bytes in [0-9]+ blocks (definitely|possibly) lost/ {
-                    for (i = 1; i < NF; i++)
-                        if ($i == "leak:") { bytes += $(i + 1); blocks += $(i + 4) } }
-                END { print bytes + 0, blocks + 0 }' "$TMP/out")
-    is "$lost" "1228800 480" "leak: 480 rows of 640 ints, definitely or possibly lost"
+    is "$(leaks_lost)" "1228800 480" "leak: 480 rows of 640 ints lost"
     says 'leak: [0-9]+ bytes in [0-9]+ blocks definitely lost' \
         "leak: definitely lost named"
     says 'allocated in main \(main\.c:[0-9]+\)' "leak: the allocation is located"
