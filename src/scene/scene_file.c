@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "rayo/limits.h"
+#include "scene_file_impl.h"
 #include "scene_file_split.h"
 #include "scene_lexer.h"
 #include "scene_number.h"
@@ -40,6 +41,9 @@ typedef struct parser {
     size_t slot_capacity; /* a power of two, at least twice name_count */
     unsigned long camera_line, shade_line, samples_line, depth_line;
     unsigned long ambient_line, background_line;
+    unsigned long base; /* lines before the window the lexer reads */
+    unsigned parts;     /* threads a long window is read on */
+    split_set split;    /* its parts, kept for the next window */
 } parser;
 
 #define WORD_SHOW 48
@@ -516,24 +520,13 @@ static int valid_name(const scene_word *word)
     return 1;
 }
 
-/* FNV-1a over a name's bytes.  Names are looked up in a hash table, so
-   2^20 materials and 2^24 objects naming them parse in linear time. */
-static size_t name_hash(const char *text, size_t length)
-{
-    unsigned long long h = 14695981039346656037ull;
-    size_t i;
-    for (i = 0; i < length; i++) {
-        h ^= (unsigned char)text[i];
-        h *= 1099511628211ull;
-    }
-    return (size_t)h;
-}
-
-/* The slot that holds the name, or the empty slot where it would go. */
+/* The slot that holds the name, or the empty slot where it would go.
+   Names are looked up in a hash table, so 2^20 materials and 2^24
+   objects naming them parse in linear time. */
 static size_t *name_slot(const parser *p, const char *text, size_t length)
 {
     size_t mask = p->slot_capacity - 1;
-    size_t i = name_hash(text, length) & mask;
+    size_t i = scene_word_hash(text, length) & mask;
     for (;; i = (i + 1) & mask) {
         const material_name *m;
         if (p->slots[i] == 0)
@@ -850,23 +843,27 @@ static rayo_status parse_line_at(parser *p, size_t offset,
     return parse_statement(p);
 }
 
-/* A sphere read ahead (scene_file_split.c): its material looked up and
- * the sphere added now, in file order; 0 when either fails (the line is
- * then read again, to say why). */
-static int add_read_sphere(parser *p, const split_line *l)
+/* A sphere read ahead (scene_file_split.c): its material looked up (by
+ * name once a part: names are never defined twice, so a name found stays
+ * found) and the sphere added now, in file order; 0 when either fails
+ * (the line is then read again, to say why). */
+static int add_read_sphere(parser *p, split_part *part, const split_line *l)
 {
     unsigned id = 0;
     rayo_error inner;
-    if (l->material_length > 0) {
-        scene_word word;
-        material_name *m;
-        word.text = p->lx.text + l->offset + l->material_at;
-        word.length = l->material_length;
-        word.column = l->material_at + 1;
-        m = find_name(p, &word);
-        if (m == NULL)
-            return 0;
-        id = m->id;
+    if (l->name != SPLIT_NO_NAME) {
+        split_name *name = &part->names[l->name];
+        if (!name->found) {
+            size_t *slot;
+            if (p->slot_capacity == 0)
+                return 0;
+            slot = name_slot(p, name->text, name->length);
+            if (*slot == 0)
+                return 0;
+            name->id = p->names[*slot - 1].id;
+            name->found = 1;
+        }
+        id = name->id;
     }
     return rayo_scene_add_sphere_material(
                p->file->scene,
@@ -874,70 +871,87 @@ static int add_read_sphere(parser *p, const split_line *l)
                l->radius, id, &inner) == RAYO_OK;
 }
 
-/* The lines of one window's parts, in order; base: the line number
- * before the window, advanced past it. */
-static rayo_status take_parts(parser *p, const split_part *parts,
-                              size_t count, unsigned long *base)
+/* Every line of the window's parts, in order, numbered from p->base. */
+static rayo_status take_parts(parser *p)
 {
     size_t i, j;
-    for (i = 0; i < count; i++) {
-        const split_part *part = &parts[i];
+    for (i = 0; i < p->split.count; i++) {
+        split_part *part = &p->split.parts[i];
         for (j = 0; j < part->count; j++) {
             const split_line *l = &part->lines[j];
-            if (!l->sphere || !add_read_sphere(p, l)) {
+            if (!l->sphere || !add_read_sphere(p, part, l)) {
                 rayo_status status =
-                    parse_line_at(p, l->offset, *base + l->line);
+                    parse_line_at(p, l->offset, p->base + l->line);
                 if (status != RAYO_OK)
                     return status;
             }
         }
-        *base += part->line_count;
+        p->base += part->line_count;
     }
     return RAYO_OK;
 }
 
-/*
- * parse_all for a large file on several threads: SCENE_SPLIT_WINDOW
- * bytes at a time, the sphere lines read ahead in parts
- * (scene_file_split.h), then every line taken in file order.  *done is
- * 0 when nothing was read because the first parts could not be made
- * (out of memory): the caller then reads the file alone.  Out of memory
- * later, the rest is read alone from where the windows stopped.
- */
-static rayo_status parse_split(parser *p, unsigned threads, int *done)
+/* ---- the reader: a file's text, a window at a time ------------------- */
+
+struct scene_reader {
+    parser p;
+};
+
+rayo_status scene_reader_new(scene_reader **result, rayo_scene_file *file,
+                             const char *name, unsigned threads,
+                             rayo_error *err)
 {
-    size_t from = 0, length = p->lx.length;
-    unsigned long base = 0;
-    *done = 0;
-    while (from < length) {
-        split_part *parts;
-        size_t count, end = length;
-        rayo_status status;
-        if (length - from > SCENE_SPLIT_WINDOW) {
-            const char *nl = memchr(p->lx.text + from + SCENE_SPLIT_WINDOW,
-                                    '\n',
-                                    length - from - SCENE_SPLIT_WINDOW);
-            end = nl ? (size_t)(nl - p->lx.text) + 1 : length;
-        }
-        if (!scene_split_read(p->lx.name, p->lx.text, from, end, threads,
-                              &parts, &count)) {
-            if (from == 0)
-                return RAYO_OK;
-            /* the rest alone, as parse_all would go on */
-            p->lx.next_line = from;
-            p->lx.line = base;
-            *done = 0;
-            return RAYO_OK;
-        }
-        *done = 1;
-        status = take_parts(p, parts, count, &base);
-        scene_split_free(parts, count);
-        if (status != RAYO_OK)
-            return status;
-        from = end;
+    scene_reader *r;
+    rayo_status status;
+    file_defaults(file);
+    *result = NULL;
+    r = calloc(1, sizeof *r);
+    if (r == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM,
+                              "%s: out of memory reading the scene", name);
+    r->p.file = file;
+    r->p.parts = threads ? threads : rayo_cpu_count();
+    scene_lexer_init(&r->p.lx, name, "", 0, err);
+    status = rayo_scene_create(&file->scene, err);
+    if (status != RAYO_OK) {
+        free(r);
+        return status;
     }
-    p->lx.next_line = length;
+    *result = r;
     return RAYO_OK;
+}
+
+/*
+ * The window's lines, continuing the file: on several threads when it
+ * is long enough (scene_file_split.h), then taken in file order; on one
+ * when it is short, or when the parts cannot be made (out of memory).
+ */
+rayo_status scene_reader_take(scene_reader *r, const char *text,
+                              size_t length)
+{
+    parser *p = &r->p;
+    rayo_status status;
+    scene_lexer_init(&p->lx, p->lx.name, text, length, p->lx.err);
+    if (p->parts > 1 && length >= SCENE_SPLIT_MIN_BYTES &&
+        scene_split_read(&p->split, p->lx.name, text, length, p->parts))
+        return take_parts(p);
+    p->lx.line = p->base;
+    status = parse_all(p);
+    p->base = p->lx.line;
+    return status;
+}
+
+rayo_status scene_reader_end(scene_reader *r, rayo_status status)
+{
+    if (r == NULL)
+        return status;
+    scene_split_free(&r->p.split);
+    free(r->p.names);
+    free(r->p.slots);
+    if (status != RAYO_OK)
+        rayo_scene_file_free(r->p.file);
+    free(r);
+    return status;
 }
 
 rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
@@ -947,31 +961,56 @@ rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
     return rayo_scene_file_parse_threads(file, name, text, length, 0, err);
 }
 
+/* Whole lines of the text from `from`: about SCENE_WINDOW bytes, to just
+ * after a newline (or the text's end). */
+static size_t window_end(const char *text, size_t from, size_t length)
+{
+    const char *nl;
+    if (length - from <= SCENE_WINDOW)
+        return length;
+    nl = memchr(text + from + SCENE_WINDOW, '\n',
+                length - from - SCENE_WINDOW);
+    return nl ? (size_t)(nl - text) + 1 : length;
+}
+
+rayo_status scene_file_read_text(rayo_scene_file *file, const char *name,
+                                 const char *text, size_t length,
+                                 unsigned threads, rayo_error *err)
+{
+    scene_reader *r;
+    size_t from = 0;
+    rayo_status status = scene_reader_new(&r, file, name, threads, err);
+    if (status != RAYO_OK)
+        return status;
+    /* One window when it would not be split: the lexer takes any text. */
+    if (r->p.parts < 2)
+        status = scene_reader_take(r, text, length);
+    else
+        while (status == RAYO_OK && from < length) {
+            size_t end = window_end(text, from, length);
+            status = scene_reader_take(r, text + from, end - from);
+            from = end;
+        }
+    return scene_reader_end(r, status);
+}
+
 rayo_status rayo_scene_file_parse_threads(rayo_scene_file *file,
                                           const char *name, const char *text,
                                           size_t length, unsigned threads,
                                           rayo_error *err)
 {
-    parser p;
-    rayo_status status;
-    file_defaults(file);
-    memset(&p, 0, sizeof p);
-    p.file = file;
-    scene_lexer_init(&p.lx, name, text, length, err);
-    status = rayo_scene_create(&file->scene, err);
-    if (status == RAYO_OK) {
-        unsigned parts = threads ? threads : rayo_cpu_count();
-        int done = 0;
-        if (parts > 1 && length >= SCENE_SPLIT_MIN_BYTES &&
-            length <= RAYO_SCENE_MAX_BYTES)
-            status = parse_split(&p, parts, &done);
-        if (status == RAYO_OK && !done)
-            status = parse_all(&p);
-    }
+    rayo_status status =
+        scene_file_read_text(file, name, text, length, threads, err);
     if (status == RAYO_OK)
-        status = rayo_scene_prepare_threads(file->scene, threads, err);
-    free(p.names);
-    free(p.slots);
+        status = scene_file_prepare(file, threads, err);
+    return status;
+}
+
+rayo_status scene_file_prepare(rayo_scene_file *file, unsigned threads,
+                               rayo_error *err)
+{
+    rayo_status status =
+        rayo_scene_prepare_threads(file->scene, threads, err);
     if (status != RAYO_OK)
         rayo_scene_file_free(file);
     return status;

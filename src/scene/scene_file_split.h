@@ -3,10 +3,13 @@
  * several threads, ahead of the parser (scene_file.c), which then takes
  * the file's statements in order.  Private to the library.
  *
- * The text is cut into parts at line ends, one a thread.  Each part's
+ * The text is one window of the file: whole lines, at most about
+ * SCENE_WINDOW bytes of them (scene_file_impl.h).  It is cut into parts
+ * at line ends, one a thread.  Each part's
  * lines with words become records, in order: a sphere line that reads
  * cleanly (four numbers within the limits, a positive radius, nothing or
- * "material NAME" after) carries its values; any other line (every other
+ * "material NAME" after) carries its values, the name as a number in
+ * the part's table of the names its lines use; any other line (every other
  * statement, and a sphere line with anything wrong in it) is only
  * pointed at, for the parser to read as it always does.  A part stops at
  * a line the lexer refuses (too long, a NUL byte): that line is its last
@@ -25,38 +28,56 @@ typedef struct split_line {
     size_t offset;            /* where the line starts in the text */
     uint32_t line;            /* its number within its part, from 1 */
     uint32_t sphere;          /* 1: a clean sphere line */
-    uint32_t material_at;     /* its material's name: from the line's */
-    uint32_t material_length; /* start, so long; 0: no material */
+    uint32_t name;            /* its material's name in the part's names;
+                                 SPLIT_NO_NAME: none */
 } split_line;
+
+#define SPLIT_NO_NAME UINT32_MAX
+
+/* A material name that the part's clean sphere lines use, once each, so
+ * that the parser looks each up once a part, not once a line.  `id` is
+ * the parser's: filled in (with found = 1) the first time the name is
+ * found defined, in file order; a name is never defined twice, so that
+ * answer holds for the part's later lines. */
+typedef struct split_name {
+    const char *text;
+    size_t length;
+    unsigned id;
+    int found;
+} split_name;
 
 typedef struct split_part {
     split_line *lines;
     size_t count, capacity;
+    split_name *names;        /* the distinct names, in first use */
+    size_t name_count, name_capacity;
+    uint32_t *slots;          /* hash table of names: position + 1 */
+    size_t slot_capacity;     /* a power of two, > 2 name_count */
     unsigned long line_count; /* lines in the part (for the next one's
                                  numbers) */
     int failed;               /* out of memory: read the file alone */
 } split_part;
 
-/* Files at least this long (and at most RAYO_SCENE_MAX_BYTES, so line
- * numbers fit 32 bits) are split, when threads > 1. */
-#define SCENE_SPLIT_MIN_BYTES (1ul << 20)
+/* The parts of one window, kept from window to window so that their
+ * arrays (and the pages under them) serve every window. */
+typedef struct split_set {
+    split_part *parts;
+    size_t count;
+} split_set;
 
-/* The parser splits a file this much at a time (each piece cut at a line
- * end), so the records of a 256 MiB file of short lines never all exist
- * at once: at most about 60 MB of them. */
-#define SCENE_SPLIT_WINDOW (16ul << 20)
+/* A window at least this long is split, when threads > 1. */
+#define SCENE_SPLIT_MIN_BYTES (256ul << 10)
 
 /*
- * Cuts text[from, length) (from at a line's start) into parts (at most
- * `parts`, each ending after a newline but the last) and reads them on
- * as many threads; *out gets the array and *count its length.  Line
- * numbers count from the first line at from.  0 when out of memory
- * (nothing to free then).
+ * Cuts text[0, length) (whole lines) into parts (at most `parts`, each
+ * ending after a newline but the last) and reads them on as many
+ * threads, into set->parts[0, set->count).  Line numbers count from the
+ * text's first line.  0 when out of memory (set keeps what it has, for
+ * scene_split_free).
  */
-int scene_split_read(const char *name, const char *text, size_t from,
-                     size_t length, unsigned parts, split_part **out,
-                     size_t *count);
+int scene_split_read(split_set *set, const char *name, const char *text,
+                     size_t length, unsigned parts);
 
-void scene_split_free(split_part *parts, size_t count);
+void scene_split_free(split_set *set);
 
 #endif

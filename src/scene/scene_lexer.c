@@ -128,6 +128,17 @@ int scene_word_is(const scene_word *word, const char *keyword)
     return keyword[i] == '\0';
 }
 
+size_t scene_word_hash(const char *text, size_t length)
+{
+    unsigned long long h = 14695981039346656037ull;
+    size_t i;
+    for (i = 0; i < length; i++) {
+        h ^= (unsigned char)text[i];
+        h *= 1099511628211ull;
+    }
+    return (size_t)h;
+}
+
 const char *scene_word_show(const scene_word *word, char *buffer,
                             size_t size)
 {

@@ -55,6 +55,10 @@ size_t scene_lexer_column(scene_lexer *lx);
 /* 1 when word is exactly the keyword text. */
 int scene_word_is(const scene_word *word, const char *keyword);
 
+/* FNV-1a over a word's bytes: the hash the material names' tables use
+ * (scene_file.c, scene_file_split.c). */
+size_t scene_word_hash(const char *text, size_t length);
+
 /*
  * Writes word into buffer as printable text for a message: at most 40
  * bytes of it, other bytes shown as '?', "..." when cut.  buffer should

@@ -90,7 +90,7 @@ else
 fi
 
 # --- scene files ---------------------------------------------------------
-# Size: 256 MiB.  At the limit the file is read whole and refused for its
+# Size: 256 MiB.  At the limit the file is read and refused for its
 # content (a NUL on line 2), not for its size.
 if ! big && printf 'sphere 0 0 3 1\n' >f.scene && truncate -s 268435456 f.scene 2>/dev/null; then
     expect_usage_error "a 256 MiB scene file" "f.scene:2:1: " render f.scene -o f.pbm
@@ -102,10 +102,12 @@ fi
 printf 'sphere 0 0 3 1\n' >f2.scene && truncate -s 268435457 f2.scene
 expect_usage_error "a scene file of 256 MiB + 1 byte" "f2.scene: the file is larger than 268435456 bytes" render f2.scene -o f.pbm
 rm -f f.scene f2.scene
-# The same through a pipe, whose size is not known in advance.
+# The same through a pipe, whose size is not known in advance: 256 MiB +
+# 1 byte of comment lines, which read cleanly, is refused for its size.
 if ! big; then
     mkfifo scene.fifo
-    head -c 268435457 /dev/zero >scene.fifo 2>/dev/null &
+    comment=$(printf '%04000d' 0 | tr 0 '#')
+    yes "$comment" | head -c 268435457 >scene.fifo 2>/dev/null &
     expect_usage_error "256 MiB + 1 byte through a pipe" "scene.fifo: the file is larger than 268435456 bytes" render scene.fifo
     wait
 else

@@ -16,13 +16,17 @@
  * must be the one-thread ones.  A text of over 16 MiB is read in two
  * windows; errors either side of that cut too.
  */
+#define _POSIX_C_SOURCE 200809L
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "rayo.h"
 #include "tap.h"
 
+#include "../../src/scene/scene_file_impl.h"
 #include "../../src/scene/scene_file_split.h"
 #include "../../src/scene/scene_impl.h"
 
@@ -141,6 +145,16 @@ static int same_scene(const rayo_scene_file *a, const rayo_scene_file *b)
            a->depth == b->depth;
 }
 
+/* The text as the file big.scene in the current folder (a temporary
+ * one, made by main), which the loader reads a window at a time. */
+static void write_file(const text *t)
+{
+    FILE *out = fopen("big.scene", "wb");
+    if (out == NULL || fwrite(t->data, 1, t->length, out) != t->length ||
+        fclose(out) != 0)
+        abort();
+}
+
 static const unsigned thread_counts[] = {2, 3, 7};
 #define THREAD_COUNTS (sizeof thread_counts / sizeof thread_counts[0])
 
@@ -168,6 +182,19 @@ static void check_same(const char *name, const text *t)
            "%s: %u threads read the same scene", name, thread_counts[i]);
         if (good)
             rayo_scene_file_free(&many);
+    }
+    /* from the file: windows cut where the buffer's last line ends */
+    write_file(t);
+    for (i = 0; i <= THREAD_COUNTS; i++) {
+        unsigned threads = i == 0 ? 1 : thread_counts[i - 1];
+        int good = rayo_scene_file_load_threads(&many, "big.scene", threads,
+                                                &err) == RAYO_OK;
+        ok(good && same_scene(&one, &many),
+           "%s: the file on %u threads, the same scene", name, threads);
+        if (good)
+            rayo_scene_file_free(&many);
+        else
+            printf("#   %.200s\n", err.message);
     }
     rayo_scene_file_free(&one);
 }
@@ -221,6 +248,18 @@ static void check_error(const char *name, const text *t)
         if (s != s1 || (s != RAYO_OK && strcmp(one.message, many.message)))
             printf("#   got '%s'\n", s == RAYO_OK ? "ok" : many.message);
     }
+    write_file(t);
+    for (i = 0; i <= THREAD_COUNTS; i++) {
+        unsigned threads = i == 0 ? 1 : thread_counts[i - 1];
+        s = rayo_scene_file_load_threads(&f, "big.scene", threads, &many);
+        if (s == RAYO_OK)
+            rayo_scene_file_free(&f);
+        ok(s == s1 && s != RAYO_OK && strcmp(one.message, many.message) == 0,
+           "%s: the file on %u threads: the same status and message", name,
+           threads);
+        if (s != s1 || (s != RAYO_OK && strcmp(one.message, many.message)))
+            printf("#   got '%s'\n", s == RAYO_OK ? "ok" : many.message);
+    }
 }
 
 int main(void)
@@ -240,24 +279,66 @@ int main(void)
     };
     /* where: early, at the cuts of 2, 3 and 7 parts, late */
     double where[] = {0.01, 0.5, 1.0 / 3, 2.0 / 3, 1.0 / 7, 6.0 / 7, 0.999};
-    char name[160], long_line[RAYO_SCENE_MAX_LINE + 40];
+    static char long_line[RAYO_SCENE_MAX_LINE + 40];
+    char name[160], folder[] = "/tmp/t_scene_split.XXXXXX";
     size_t i, j;
+
+    if (mkdtemp(folder) == NULL || chdir(folder) != 0)
+        abort();
 
     ok(t.length > SCENE_SPLIT_MIN_BYTES, "the text is over the threshold");
     check_same("mixed scene", &t);
     {
-        /* more than one window (SCENE_SPLIT_WINDOW): errors either side
-         * of the cut */
-        text big = make_scene(7, 290000), u;
-        ok(big.length > SCENE_SPLIT_WINDOW + 100000, "a text of %lu bytes",
+        /* many windows (SCENE_WINDOW): errors either side of the cuts,
+         * and lines across them */
+        text big = make_scene(7, 60000), u;
+        static const long around[] = {-70, -1, 0, 1, 30};
+        size_t k;
+        ok(big.length > 3 * SCENE_WINDOW + 100000, "a text of %lu bytes",
            (unsigned long)big.length);
-        check_same("two windows", &big);
-        u = plant(&big, SCENE_SPLIT_WINDOW + 10, "sphere 1 2 3 4 material x");
-        check_error("just after the window's cut", &u);
+        check_same("many windows", &big);
+        for (k = 0; k < sizeof around / sizeof around[0]; k++) {
+            size_t at = (size_t)((long)(1 + k % 3) * (long)SCENE_WINDOW +
+                                 around[k]);
+            snprintf(name, sizeof name, "window cut %+ld: unknown material",
+                     around[k]);
+            u = plant(&big, at, "sphere 1 2 3 4 material x");
+            check_error(name, &u);
+            free(u.data);
+            snprintf(name, sizeof name, "window cut %+ld: a second camera",
+                     around[k]);
+            u = plant(&big, at, "camera fov 200");
+            check_error(name, &u);
+            free(u.data);
+            snprintf(name, sizeof name, "window cut %+ld: a NUL byte",
+                     around[k]);
+            u = plant(&big, at, "sphere 1 2 3 4 material m0 <NUL>");
+            check_error(name, &u);
+            free(u.data);
+        }
+        memset(long_line, 'x', sizeof long_line - 1);
+        long_line[sizeof long_line - 1] = '\0';
+        u = plant(&big, SCENE_WINDOW - 100, long_line);
+        check_error("a line too long across the first cut", &u);
         free(u.data);
-        u = plant(&big, SCENE_SPLIT_WINDOW - 10, "camera fov 200");
-        check_error("just before the window's cut", &u);
-        free(u.data);
+        {
+            /* a line longer than a window: the lexer refuses it where it
+             * starts; a NUL after the window's end changes nothing */
+            text w = {NULL, 0, 0};
+            char *huge = malloc(SCENE_WINDOW + 5000);
+            if (huge == NULL)
+                abort();
+            memset(huge, 'y', SCENE_WINDOW + 4994);
+            memcpy(huge + SCENE_WINDOW + 4994, "<NUL>", 6);
+            u = plant(&big, SCENE_WINDOW / 2, huge);
+            check_error("a line longer than a window", &u);
+            free(u.data);
+            add(&w, "sphere 0 0 0 1\n");
+            add(&w, huge);
+            check_error("a file of one huge line after one sphere", &w);
+            free(w.data);
+            free(huge);
+        }
         u = plant(&big, big.length - 5, "sphere 1 2 3");
         check_error("the last line", &u);
         free(u.data);
@@ -290,5 +371,8 @@ int main(void)
         free(v.data);
     }
     free(t.data);
+    unlink("big.scene");
+    if (chdir("/") != 0 || rmdir(folder) != 0)
+        ok(0, "the temporary folder %s is removed", folder);
     return tap_done();
 }
