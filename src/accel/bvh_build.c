@@ -39,6 +39,8 @@
 #include "bvh_impl.h"
 #include "bvh_vec4.h"
 
+#include "../core/thread_start.h"
+
 #include <float.h>
 #include <math.h>
 #include <pthread.h>
@@ -611,20 +613,11 @@ static void *stitch_worker(void *argument)
 
 static void stitch_all(builder *b, bvh_node *out)
 {
-    pthread_t helpers[64];
-    unsigned started = 0, i;
     stitcher s;
     s.b = b;
     s.out = out;
     atomic_init(&s.taken, 0);
-    for (i = 1; i < b->threads; i++) {
-        if (pthread_create(&helpers[started], NULL, stitch_worker, &s) != 0)
-            break;
-        started++;
-    }
-    (void)stitch_worker(&s);
-    for (i = 0; i < started; i++)
-        pthread_join(helpers[i], NULL);
+    thread_run_all(b->threads, stitch_worker, &s);
 }
 
 /* How many threads: the caller's wish, else one. */
@@ -641,21 +634,12 @@ static unsigned thread_count(unsigned threads, size_t count)
 
 static rayo_status build_all(builder *b, task *root, rayo_bvh *bvh)
 {
-    pthread_t helpers[64];
-    unsigned started = 0, i;
     uint32_t next = 1;
     b->tasks[0] = root;
     b->task_count = 1;
     b->pending[0] = 0;
     b->pending_count = 1;
-    for (i = 1; i < b->threads; i++) {
-        if (pthread_create(&helpers[started], NULL, worker, b) != 0)
-            break;
-        started++;
-    }
-    worker(b);
-    for (i = 0; i < started; i++)
-        pthread_join(helpers[i], NULL);
+    thread_run_all(b->threads, worker, b);
     if (b->failed)
         return RAYO_ERR_NOMEM;
     if (b->task_count == 1) { /* one task: its nodes are in final order */
@@ -680,7 +664,7 @@ typedef struct convert_job {
     builder *b;
     size_t begin, end;
     fbox bounds, centres; /* of its items */
-    pthread_t thread;
+    thread_slot slot;
 } convert_job;
 
 static void *convert(void *argument)
@@ -709,6 +693,7 @@ static void *convert(void *argument)
 static void convert_all(builder *b, size_t count, fbox *bounds, fbox *centres)
 {
     convert_job jobs[64];
+    thread_place place;
     unsigned n = b->threads, i, started;
     vec4f lo[2], hi[2];
     for (i = 0; i < n; i++) {
@@ -716,15 +701,17 @@ static void convert_all(builder *b, size_t count, fbox *bounds, fbox *centres)
         jobs[i].begin = count * i / n;
         jobs[i].end = count * (i + 1) / n;
     }
+    if (n > 1)
+        thread_place_init(&place);
     for (started = 1; started < n; started++)
-        if (pthread_create(&jobs[started].thread, NULL, convert,
-                           &jobs[started]) != 0)
+        if (thread_start(&jobs[started].slot, &place, convert,
+                         &jobs[started]) != 0)
             break;
     for (i = started; i < n; i++) /* threads that did not start */
         convert(&jobs[i]);
     convert(&jobs[0]);
     for (i = 1; i < started; i++)
-        pthread_join(jobs[i].thread, NULL);
+        pthread_join(jobs[i].slot.thread, NULL);
     lo[0] = lo[1] = v4_infinity();
     hi[0] = hi[1] = v4_set1(-INFINITY);
     for (i = 0; i < n; i++) {

@@ -31,6 +31,8 @@
 #include "bvh_wide_impl.h"
 #include "bvh_wide_isa.h"
 
+#include "../core/thread_start.h"
+
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
@@ -407,20 +409,9 @@ static void *split_worker(void *argument)
 /* Runs the phase on up to `threads` threads (the caller one of them). */
 static void split_run(splitter *s, unsigned threads)
 {
-    pthread_t helpers[FRONTIER_MAX];
-    unsigned started = 0, i;
     unsigned jobs = split_jobs(s);
     atomic_store(&s->taken, 0);
-    if (threads > jobs)
-        threads = jobs;
-    for (i = 1; i < threads; i++) {
-        if (pthread_create(&helpers[started], NULL, split_worker, s) != 0)
-            break;
-        started++;
-    }
-    (void)split_worker(s);
-    for (i = 0; i < started; i++)
-        pthread_join(helpers[i], NULL);
+    thread_run_all(threads < jobs ? threads : jobs, split_worker, s);
 }
 
 rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,

@@ -23,7 +23,7 @@
  * changes the state wakes sleepers only when there are some: futex
  * wake-ups cost tens of microseconds on a virtual machine.  For the same
  * reason helpers are started on another CPU than the caller's
- * (helper_cpus), and the caller spins while they end (join_helper).
+ * (thread_start.h), and the caller spins while they end (join_helper).
  *
  * A render stops within a ray of being asked (render_stop.h): the rows
  * poll the stop inside their bands, a band abandoned for it is never
@@ -35,8 +35,7 @@
  * takes runs (plain PBM, writer_runs.h), bands of the span path travel
  * as runs of black pixels, which that writer spells without scanning.
  */
-#define _GNU_SOURCE /* sched_getaffinity, sched_getcpu, CPU_COUNT, thread
-                       affinity, pthread_tryjoin_np */
+#define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT, pthread_tryjoin_np */
 
 #include "rayo/render.h"
 
@@ -50,6 +49,7 @@
 
 #include "rayo/limits.h"
 
+#include "../core/thread_start.h"
 #include "../formats/writer_runs.h"
 #include "row_plan.h"
 
@@ -61,13 +61,6 @@
 #define SLOTS_PER_THREAD 3u
 _Static_assert(SLOTS_PER_THREAD < sizeof(unsigned) * 8,
                "a thread's free slots are bits of an unsigned");
-/* Helpers are started on chosen CPUs (helper_cpus) with glibc's
- * pthread_attr_setaffinity_np; elsewhere, wherever the system puts them. */
-#if defined(__GLIBC__) && defined(CPU_COUNT)
-#define STEER_HELPERS 1
-#else
-#define STEER_HELPERS 0
-#endif
 /* Frames projected to take less than this stay on the calling thread. */
 #define SERIAL_BELOW_SECONDS 0.0002
 /* How long a thread with nothing to do spins before it sleeps. */
@@ -95,7 +88,6 @@ typedef struct band_job {
                                  them; else NULL */
     rayo_row_runs *runs;   /* with runs_writer: rows_per_band a slot */
 
-    const struct helper_cpus *cpus; /* where helpers start (run_parallel) */
 
     pthread_mutex_t lock;
     pthread_cond_t changed; /* a band was rendered or delivered, or stop */
@@ -288,77 +280,15 @@ static int claim_and_render(band_job *job, unsigned thread)
 }
 
 typedef struct helper {
-    pthread_t thread;
+    thread_slot slot; /* started on another CPU (thread_start.h) */
     band_job *job;
     unsigned index; /* 1, 2, ...: the calling thread is 0 */
 } helper;
-
-/*
- * Where helpers start.  Left to itself, Linux often puts a new thread on
- * the CPU of the thread that creates it, even with another CPU idle, and
- * there it waits until the creator (rendering, never sleeping) is
- * preempted or done: on the development machine half the helpers of a
- * half-millisecond frame rendered nothing.  So a helper is created
- * allowed only the CPUs other than the caller's, and, once running
- * there, is given back all the CPUs the process may use.
- */
-typedef struct helper_cpus {
-#if STEER_HELPERS
-    cpu_set_t allowed; /* the process's CPUs, for helpers once started */
-    cpu_set_t start;   /* those less the calling thread's */
-#endif
-    int steer;         /* 1 when start is set and not empty */
-} helper_cpus;
-
-static void helper_cpus_init(helper_cpus *cpus)
-{
-    cpus->steer = 0;
-#if STEER_HELPERS
-    {
-        int here = sched_getcpu();
-        if (here < 0 || here >= CPU_SETSIZE ||
-            sched_getaffinity(0, sizeof cpus->allowed, &cpus->allowed) != 0)
-            return;
-        cpus->start = cpus->allowed;
-        CPU_CLR(here, &cpus->start);
-        cpus->steer = CPU_COUNT(&cpus->start) > 0;
-    }
-#endif
-}
-
-/* Creates a helper thread, started on cpus->start when steering (and
- * anywhere when that fails); 0 on success. */
-static int helper_create(helper *h, const helper_cpus *cpus,
-                         void *(*body)(void *))
-{
-#if STEER_HELPERS
-    if (cpus->steer) {
-        pthread_attr_t attr;
-        int created = 0;
-        if (pthread_attr_init(&attr) == 0) {
-            created = pthread_attr_setaffinity_np(&attr, sizeof cpus->start,
-                                                  &cpus->start) == 0 &&
-                      pthread_create(&h->thread, &attr, body, h) == 0;
-            pthread_attr_destroy(&attr);
-        }
-        if (created)
-            return 0;
-    }
-#else
-    (void)cpus;
-#endif
-    return pthread_create(&h->thread, NULL, body, h) != 0 ? -1 : 0;
-}
 
 static void *helper_main(void *argument)
 {
     const helper *self = argument;
     band_job *job = self->job;
-#if STEER_HELPERS
-    if (job->cpus->steer)
-        pthread_setaffinity_np(pthread_self(), sizeof job->cpus->allowed,
-                               &job->cpus->allowed);
-#endif
     pthread_mutex_lock(&job->lock);
     while (!job->stop && job->next_band < job->band_count)
         if (!claim_and_render(job, self->index))
@@ -401,7 +331,7 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
                                 void *context, rayo_error *err)
 {
     helper *helpers = malloc((threads - 1) * sizeof *helpers);
-    helper_cpus cpus;
+    thread_place place;
     rayo_status status = RAYO_OK;
     unsigned started = 0, i;
     uint32_t band = first;
@@ -420,12 +350,12 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     atomic_init(&job->version, 0);
     pthread_mutex_init(&job->lock, NULL);
     pthread_cond_init(&job->changed, NULL);
-    helper_cpus_init(&cpus);
-    job->cpus = &cpus;
+    thread_place_init(&place);
     for (i = 0; i + 1 < threads; i++) {
         helpers[started].job = job;
         helpers[started].index = started + 1;
-        if (helper_create(&helpers[started], &cpus, helper_main) != 0)
+        if (thread_start(&helpers[started].slot, &place, helper_main,
+                         &helpers[started]) != 0)
             break;
         started++;
     }
@@ -463,7 +393,7 @@ static rayo_status run_parallel(band_job *job, unsigned threads,
     announce(job);
     pthread_mutex_unlock(&job->lock);
     for (i = 0; i < started; i++)
-        join_helper(helpers[i].thread, job->spin);
+        join_helper(helpers[i].slot.thread, job->spin);
     pthread_cond_destroy(&job->changed);
     pthread_mutex_destroy(&job->lock);
     free(helpers);

@@ -23,6 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../core/thread_start.h"
 #include "rayo/scene_file.h"
 #include "scene_lexer.h"
 #include "scene_number.h"
@@ -31,7 +32,7 @@ typedef struct part_job {
     const char *name, *text;
     size_t begin, end;
     split_part *part;
-    pthread_t thread;
+    thread_slot slot;
 } part_job;
 
 static split_line *add_line(split_part *part, const scene_lexer *lx)
@@ -200,6 +201,7 @@ int scene_split_read(split_set *set, const char *name, const char *text,
                      size_t length, unsigned parts)
 {
     part_job jobs[64];
+    thread_place place;
     size_t begin = 0;
     unsigned n = parts < 1 ? 1 : parts > 64 ? 64 : parts, i, started;
     if (set->count < n) {
@@ -228,15 +230,16 @@ int scene_split_read(split_set *set, const char *name, const char *text,
     }
     for (i = n; i < set->count; i++) /* from a window cut in more parts */
         part_reset(&set->parts[i]);
+    thread_place_init(&place);
     for (started = 1; started < n; started++)
-        if (pthread_create(&jobs[started].thread, NULL, read_part,
-                           &jobs[started]) != 0)
+        if (thread_start(&jobs[started].slot, &place, read_part,
+                         &jobs[started]) != 0)
             break;
     for (i = started; i < n; i++) /* those that did not start */
         read_part(&jobs[i]);
     read_part(&jobs[0]);
     for (i = 1; i < started; i++)
-        pthread_join(jobs[i].thread, NULL);
+        pthread_join(jobs[i].slot.thread, NULL);
     for (i = 0; i < n; i++)
         if (set->parts[i].failed)
             return 0;
