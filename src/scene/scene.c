@@ -44,6 +44,29 @@ static rayo_status grow(void *array_ptr, size_t *capacity, size_t count,
     return RAYO_OK;
 }
 
+/* Makes room for `wanted` elements in all, doubling at least (so a
+ * reserve per window of a file, like a grow per element, costs amortised
+ * constant time an element). */
+static rayo_status reserve(void *array_ptr, size_t *capacity, size_t wanted,
+                           size_t elem, rayo_error *err)
+{
+    size_t doubled = *capacity <= SIZE_MAX / 2 ? 2 * *capacity : SIZE_MAX;
+    void *array, *grown;
+    if (wanted <= *capacity)
+        return RAYO_OK;
+    if (doubled > wanted)
+        wanted = doubled;
+    if (wanted > SIZE_MAX / elem)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    memcpy(&array, array_ptr, sizeof array);
+    grown = realloc(array, wanted * elem);
+    if (grown == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    memcpy(array_ptr, &grown, sizeof grown);
+    *capacity = wanted;
+    return RAYO_OK;
+}
+
 #define GROW(scene, name, err)                                               \
     grow(&(scene)->name##s, &(scene)->name##_capacity,                       \
          (scene)->name##_count, sizeof *(scene)->name##s, (err))
@@ -196,6 +219,28 @@ rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,
     s->object = (uint32_t)scene->object_count;
     s->material = material;
     end_object(scene, RAYO_OBJECT_SPHERE, scene->sphere_count++);
+    return RAYO_OK;
+}
+
+rayo_status scene_reserve_spheres(rayo_scene *scene, size_t more,
+                                  rayo_error *err)
+{
+    rayo_status status;
+    if (more > RAYO_MAX_OBJECTS - scene->object_count)
+        return rayo_error_set(err, RAYO_ERR_LIMIT,
+                              "more than %lu objects in one scene",
+                              RAYO_MAX_OBJECTS);
+    status = reserve(&scene->objects, &scene->object_capacity,
+                     scene->object_count + more, sizeof *scene->objects, err);
+    if (status == RAYO_OK)
+        status = reserve(&scene->spheres, &scene->sphere_capacity,
+                         scene->sphere_count + more, sizeof *scene->spheres,
+                         err);
+    if (status != RAYO_OK)
+        return status;
+    rayo_bvh_free(scene->bvh);
+    scene->bvh = NULL;
+    scene->prepared = 0;
     return RAYO_OK;
 }
 

@@ -22,6 +22,7 @@
 #include "rayo/limits.h"
 #include "scene_file_impl.h"
 #include "scene_file_split.h"
+#include "scene_impl.h"
 #include "scene_lexer.h"
 #include "scene_number.h"
 
@@ -843,43 +844,55 @@ static rayo_status parse_line_at(parser *p, size_t offset,
     return parse_statement(p);
 }
 
-/* A sphere read ahead (scene_file_split.c): its material looked up (by
- * name once a part: names are never defined twice, so a name found stays
- * found) and the sphere added now, in file order; 0 when either fails
- * (the line is then read again, to say why). */
-static int add_read_sphere(parser *p, split_part *part, const split_line *l)
+/* The material of a sphere read ahead (scene_file_split.c), looked up
+ * by name once a part (names are never defined twice, so a name found
+ * stays found): 1 with *id, or 0 when no earlier line defines it (the
+ * line is then read again, to say so). */
+static int read_material(const parser *p, split_part *part,
+                         const split_line *l, unsigned *id)
 {
-    unsigned id = 0;
-    rayo_error inner;
-    if (l->name != SPLIT_NO_NAME) {
-        split_name *name = &part->names[l->name];
-        if (!name->found) {
-            size_t *slot;
-            if (p->slot_capacity == 0)
-                return 0;
-            slot = name_slot(p, name->text, name->length);
-            if (*slot == 0)
-                return 0;
-            name->id = p->names[*slot - 1].id;
-            name->found = 1;
-        }
-        id = name->id;
+    split_name *name;
+    *id = 0;
+    if (l->name == SPLIT_NO_NAME)
+        return 1;
+    name = &part->names[l->name];
+    if (!name->found) {
+        size_t *slot;
+        if (p->slot_capacity == 0)
+            return 0;
+        slot = name_slot(p, name->text, name->length);
+        if (*slot == 0)
+            return 0;
+        name->id = p->names[*slot - 1].id;
+        name->found = 1;
     }
-    return rayo_scene_add_sphere_material(
-               p->file->scene,
-               rayo_vec3_make(l->center[0], l->center[1], l->center[2]),
-               l->radius, id, &inner) == RAYO_OK;
+    *id = name->id;
+    return 1;
 }
 
-/* Every line of the window's parts, in order, numbered from p->base. */
+/*
+ * Every line of the window's parts, in order, numbered from p->base: a
+ * sphere read ahead is put straight into room made for the window's
+ * lines (scene_reserve_spheres), in file order; any other line is read
+ * as parse_all reads it.  When the room cannot be made (the object
+ * limit, memory), every line is read as parse_all reads it, which says
+ * where the limit is passed.
+ */
 static rayo_status take_parts(parser *p)
 {
-    size_t i, j;
+    size_t i, j, lines = 0;
+    int room;
+    for (i = 0; i < p->split.count; i++)
+        lines += p->split.parts[i].count;
+    room = scene_reserve_spheres(p->file->scene, lines, NULL) == RAYO_OK;
     for (i = 0; i < p->split.count; i++) {
         split_part *part = &p->split.parts[i];
         for (j = 0; j < part->count; j++) {
             const split_line *l = &part->lines[j];
-            if (!l->sphere || !add_read_sphere(p, part, l)) {
+            unsigned id;
+            if (room && l->sphere && read_material(p, part, l, &id)) {
+                scene_put_sphere(p->file->scene, l->center, l->radius, id);
+            } else {
                 rayo_status status =
                     parse_line_at(p, l->offset, p->base + l->line);
                 if (status != RAYO_OK)
