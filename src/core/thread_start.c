@@ -43,9 +43,9 @@ static void *trampoline(void *argument)
 {
     thread_slot *slot = argument;
 #if STEER
-    if (slot->place != NULL && slot->place->steer) {
+    if (slot->steer) {
         cpu_set_t allowed;
-        memcpy(&allowed, slot->place->allowed, sizeof allowed);
+        memcpy(&allowed, slot->allowed, sizeof allowed);
         pthread_setaffinity_np(pthread_self(), sizeof allowed, &allowed);
     }
 #endif
@@ -57,9 +57,11 @@ int thread_start(thread_slot *slot, const thread_place *place,
 {
     slot->body = body;
     slot->argument = argument;
-    slot->place = place;
+    slot->steer = place != NULL && place->steer;
+    if (slot->steer)
+        memcpy(slot->allowed, place->allowed, sizeof slot->allowed);
 #if STEER
-    if (place != NULL && place->steer) {
+    if (slot->steer) {
         pthread_attr_t attr;
         int created = 0;
         if (pthread_attr_init(&attr) == 0) {

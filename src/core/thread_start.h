@@ -24,12 +24,14 @@ typedef struct thread_place {
     int steer; /* 1 when start is set and not empty */
 } thread_place;
 
-/* A started helper: pthread_join(slot.thread) ends it. */
+/* A started helper: pthread_join(slot.thread) ends it.  It keeps its own
+ * copy of the CPUs to widen to, so the place may go first. */
 typedef struct thread_slot {
     pthread_t thread;
     void *(*body)(void *);
     void *argument;
-    const thread_place *place;
+    unsigned long allowed[16];
+    int steer;
 } thread_slot;
 
 /* Where helpers of the calling thread should start. */
