@@ -9,9 +9,10 @@
  * collinear triangle corners) are re-issued with the file, line and
  * column of the statement.  Splitting text into words is scene_lexer.c's
  * job, reading numbers scene_number.c's, reading the file from disk
- * scene_file_load.c's; a large file's sphere lines are read ahead on
- * several threads by scene_file_split.c, and taken here in file order
- * (parse_split).
+ * scene_file_load.c's; the text comes a window at a time
+ * (scene_file_impl.h: the reader), and a long window's sphere lines are
+ * read ahead on several threads by scene_file_split.c and taken here in
+ * file order (take_parts).
  */
 #include "rayo/scene_file.h"
 

@@ -13,8 +13,12 @@
  * the text is cut, of every kind (a bad number, an unknown material, a
  * material used before its line, a second camera, a NUL byte, a line too
  * long, a bad keyword): the status and the message (file, line, column)
- * must be the one-thread ones.  A text of over 16 MiB is read in two
- * windows; errors either side of that cut too.
+ * must be the one-thread ones.  Each text is also written to a file and
+ * loaded (1 MiB windows of whole lines, scene_file_load.c) on 1, 2, 3 and
+ * 7 threads: the same scene, the same error.  A text of many windows
+ * gets errors either side of the cuts, lines across them and a line
+ * longer than a window.  And the room a window's spheres go into is
+ * refused past the object limit.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -262,6 +266,32 @@ static void check_error(const char *name, const text *t)
     }
 }
 
+/* The room a window's spheres are put into (scene_reserve_spheres):
+ * refused past the object limit, with nothing changed, so the parser
+ * reads the lines itself and says which one passes it. */
+static void check_reserve(void)
+{
+    rayo_scene *scene;
+    rayo_error err;
+    rayo_status s;
+    size_t count, capacity;
+    if (rayo_scene_create(&scene, &err) != RAYO_OK) {
+        ok(0, "a scene is made");
+        return;
+    }
+    s = scene_reserve_spheres(scene, 1000, &err);
+    ok(s == RAYO_OK && scene->sphere_capacity >= 1000 &&
+           scene->object_capacity >= 1000 && scene->sphere_count == 0,
+       "room for 1000 spheres, none added");
+    count = scene->object_count;
+    capacity = scene->object_capacity;
+    s = scene_reserve_spheres(scene, RAYO_MAX_OBJECTS + 1, &err);
+    ok(s == RAYO_ERR_LIMIT && scene->object_count == count &&
+           scene->object_capacity == capacity,
+       "room past the object limit: refused, nothing changed");
+    rayo_scene_free(scene);
+}
+
 int main(void)
 {
     text t = make_scene(2026, 24000);
@@ -285,6 +315,7 @@ int main(void)
 
     if (mkdtemp(folder) == NULL || chdir(folder) != 0)
         abort();
+    check_reserve();
 
     ok(t.length > SCENE_SPLIT_MIN_BYTES, "the text is over the threshold");
     check_same("mixed scene", &t);
