@@ -16,37 +16,13 @@
 #include "rayo/limits.h"
 
 /*
- * Makes room for one more element of size elem in the array whose
- * pointer is at array_ptr (a T **, handled through memcpy so that no
- * pointer is accessed as another type).
+ * Makes room for `wanted` elements in all in the array whose pointer is
+ * at array_ptr (a T **, handled through memcpy so that no pointer is
+ * accessed as another type): at least 8, and at least double the room it
+ * had, so one more element at a time (GROW), or a window of a file's
+ * spheres at a time (scene_reserve_spheres), costs amortised constant
+ * time an element.
  */
-static rayo_status grow(void *array_ptr, size_t *capacity, size_t count,
-                        size_t elem, rayo_error *err)
-{
-    size_t wanted;
-    void *array, *grown;
-    if (count < *capacity)
-        return RAYO_OK;
-    wanted = *capacity ? *capacity : 8;
-    if (*capacity) {
-        if (wanted > SIZE_MAX / 2)
-            return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
-        wanted *= 2;
-    }
-    if (wanted > SIZE_MAX / elem)
-        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
-    memcpy(&array, array_ptr, sizeof array);
-    grown = realloc(array, wanted * elem);
-    if (grown == NULL)
-        return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
-    memcpy(array_ptr, &grown, sizeof grown);
-    *capacity = wanted;
-    return RAYO_OK;
-}
-
-/* Makes room for `wanted` elements in all, doubling at least (so a
- * reserve per window of a file, like a grow per element, costs amortised
- * constant time an element). */
 static rayo_status reserve(void *array_ptr, size_t *capacity, size_t wanted,
                            size_t elem, rayo_error *err)
 {
@@ -56,6 +32,8 @@ static rayo_status reserve(void *array_ptr, size_t *capacity, size_t wanted,
         return RAYO_OK;
     if (doubled > wanted)
         wanted = doubled;
+    if (wanted < 8)
+        wanted = 8;
     if (wanted > SIZE_MAX / elem)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     memcpy(&array, array_ptr, sizeof array);
@@ -67,9 +45,10 @@ static rayo_status reserve(void *array_ptr, size_t *capacity, size_t wanted,
     return RAYO_OK;
 }
 
+/* Room for one more element of the scene's array of `name`s. */
 #define GROW(scene, name, err)                                               \
-    grow(&(scene)->name##s, &(scene)->name##_capacity,                       \
-         (scene)->name##_count, sizeof *(scene)->name##s, (err))
+    reserve(&(scene)->name##s, &(scene)->name##_capacity,                    \
+            (scene)->name##_count + 1, sizeof *(scene)->name##s, (err))
 
 static const rayo_material default_material = {{1.0, 1.0, 1.0},
                                                1.0, 1.0, 0.0, 0.0, 0.0};
