@@ -117,6 +117,13 @@ if [ "$HAVE_VALGRIND" = 1 ]; then
         "leak: definitely lost named"
     says 'allocated in main \(main\.c:[0-9]+\)' "leak: the allocation is located"
 
+    grade interior_pointer
+    is "$results" "$ALL_PASS valgrind=FAIL" "interior pointer: only valgrind fails"
+    says '^valgrind +FAIL +leak: 2560 bytes in 1 blocks possibly lost' \
+        "interior pointer: one row of 640 ints, possibly lost"
+    says '^ +possibly lost: at exit valgrind saw only a pointer into the middle of the memory, not to its start; a leak all the same$' \
+        "interior pointer: what possibly lost means, said"
+
     grade correct
     is "$results" "$ALL_PASS valgrind=pass" "correct under valgrind: all pass"
     says '^PASS: 6 of 6 criteria passed$' "correct under valgrind: summary"
