@@ -5,13 +5,13 @@
  *
  * The text is one window of the file: whole lines, at most about
  * SCENE_WINDOW bytes of them (scene_file_impl.h).  It is cut into parts
- * at line ends, one a thread.  Each part's
- * lines with words become records, in order: a sphere line that reads
- * cleanly (four numbers within the limits, a positive radius, nothing or
- * "material NAME" after) carries its values, the name as a number in
- * the part's table of the names its lines use; any other line (every other
- * statement, and a sphere line with anything wrong in it) is only
- * pointed at, for the parser to read as it always does.  A part stops at
+ * at line ends, one a thread.  Each part's lines with words become
+ * records, in order: a sphere line that reads cleanly (four numbers
+ * within the limits, a positive radius, nothing or "material NAME"
+ * after) carries its values, the name as a number in the part's table
+ * of the names its lines use; any other line (every other statement,
+ * and a sphere line with anything wrong in it) is only pointed at, for
+ * the parser to read as it always does.  A part stops at
  * a line the lexer refuses (too long, a NUL byte): that line is its last
  * record.  Nothing here reports an error; the parser, reading the lines
  * pointed at, says exactly what it says reading the file alone.
@@ -55,7 +55,7 @@ typedef struct split_part {
     size_t slot_capacity;     /* a power of two, > 2 name_count */
     unsigned long line_count; /* lines in the part (for the next one's
                                  numbers) */
-    int failed;               /* out of memory: read the file alone */
+    int failed;               /* out of memory: the window is read alone */
 } split_part;
 
 /* The parts of one window, kept from window to window so that their
