@@ -664,7 +664,6 @@ typedef struct convert_job {
     builder *b;
     size_t begin, end;
     fbox bounds, centres; /* of its items */
-    thread_slot slot;
 } convert_job;
 
 /*
@@ -714,25 +713,14 @@ static void *convert(void *argument)
 static void convert_all(builder *b, size_t count, fbox *bounds, fbox *centres)
 {
     convert_job jobs[64];
-    thread_place place;
-    unsigned n = b->threads, i, started;
+    unsigned n = b->threads, i;
     vec4f lo[2], hi[2];
     for (i = 0; i < n; i++) {
         jobs[i].b = b;
         jobs[i].begin = count * i / n;
         jobs[i].end = count * (i + 1) / n;
     }
-    if (n > 1)
-        thread_place_init(&place);
-    for (started = 1; started < n; started++)
-        if (thread_start(&jobs[started].slot, &place, convert,
-                         &jobs[started]) != 0)
-            break;
-    for (i = started; i < n; i++) /* threads that did not start */
-        convert(&jobs[i]);
-    convert(&jobs[0]);
-    for (i = 1; i < started; i++)
-        pthread_join(jobs[i].slot.thread, NULL);
+    thread_run_each(n, convert, jobs, sizeof *jobs);
     lo[0] = lo[1] = v4_infinity();
     hi[0] = hi[1] = v4_set1(-INFINITY);
     for (i = 0; i < n; i++) {

@@ -8,6 +8,7 @@
 #include "thread_start.h"
 
 #include <sched.h>
+#include <stdatomic.h>
 #include <string.h>
 
 #if defined(__GLIBC__) && defined(CPU_COUNT)
@@ -98,4 +99,34 @@ void thread_run_all(unsigned threads, void *(*body)(void *), void *argument)
     (void)body(argument);
     for (i = 0; i < started; i++)
         pthread_join(helpers[i].thread, NULL);
+}
+
+/* thread_run_each's jobs, and how many are taken. */
+typedef struct job_list {
+    void *(*body)(void *);
+    char *jobs;
+    size_t size;
+    unsigned count;
+    atomic_uint taken;
+} job_list;
+
+static void *take_jobs(void *argument)
+{
+    job_list *list = argument;
+    unsigned i;
+    while ((i = atomic_fetch_add(&list->taken, 1)) < list->count)
+        (void)list->body(list->jobs + (size_t)i * list->size);
+    return NULL;
+}
+
+void thread_run_each(unsigned count, void *(*body)(void *), void *jobs,
+                     size_t size)
+{
+    job_list list;
+    list.body = body;
+    list.jobs = jobs;
+    list.size = size;
+    list.count = count;
+    atomic_init(&list.taken, 0);
+    thread_run_all(count, take_jobs, &list);
 }

@@ -7,7 +7,9 @@
  * the creator (working, never sleeping) is preempted or done: a helper
  * meant to share a job of a few milliseconds (a window of a scene file,
  * the copy of a hierarchy, a short frame) then shares nothing, and the
- * two take turns on one CPU.  So a helper is created allowed only the
+ * two take turns on one CPU (on the development machine half the
+ * helpers of a half-millisecond frame rendered nothing; a scene file's
+ * windows were read by the two threads in turn).  So a helper is created allowed only the
  * CPUs other than the caller's, and, once running there, is given back
  * all the CPUs the process may use.  Without glibc's affinity calls, or
  * when they fail, threads start wherever the system puts them.
@@ -16,6 +18,7 @@
 #define RAYO_THREAD_START_H
 
 #include <pthread.h>
+#include <stddef.h>
 
 /* Where helpers start: the CPUs the process may use, and those less the
  * caller's (as bits of a cpu_set_t). */
@@ -50,5 +53,12 @@ int thread_start(thread_slot *slot, const thread_place *place,
  * when all are done.  Helpers that cannot be started are done without:
  * body must share the work out itself (a counter of jobs taken). */
 void thread_run_all(unsigned threads, void *(*body)(void *), void *argument);
+
+/* body(job) for each of `count` jobs of `size` bytes from `jobs`, on
+ * `count` threads (at most THREAD_RUN_MAX) as thread_run_all: each thread
+ * takes the next job not taken, so every job is done once even when
+ * helpers cannot be started. */
+void thread_run_each(unsigned count, void *(*body)(void *), void *jobs,
+                     size_t size);
 
 #endif

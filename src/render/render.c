@@ -88,7 +88,6 @@ typedef struct band_job {
                                  them; else NULL */
     rayo_row_runs *runs;   /* with runs_writer: rows_per_band a slot */
 
-
     pthread_mutex_t lock;
     pthread_cond_t changed; /* a band was rendered or delivered, or stop */
     atomic_uint version;    /* counts those changes, for spinning */

@@ -19,7 +19,6 @@
 #include "scene_file_split.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -32,7 +31,6 @@ typedef struct part_job {
     const char *name, *text;
     size_t begin, end;
     split_part *part;
-    thread_slot slot;
 } part_job;
 
 static split_line *add_line(split_part *part, const scene_lexer *lx)
@@ -201,9 +199,8 @@ int scene_split_read(split_set *set, const char *name, const char *text,
                      size_t length, unsigned parts)
 {
     part_job jobs[64];
-    thread_place place;
     size_t begin = 0;
-    unsigned n = parts < 1 ? 1 : parts > 64 ? 64 : parts, i, started;
+    unsigned n = parts < 1 ? 1 : parts > 64 ? 64 : parts, i;
     if (set->count < n) {
         split_part *grown = realloc(set->parts, n * sizeof *grown);
         if (grown == NULL)
@@ -230,16 +227,7 @@ int scene_split_read(split_set *set, const char *name, const char *text,
     }
     for (i = n; i < set->count; i++) /* from a window cut in more parts */
         part_reset(&set->parts[i]);
-    thread_place_init(&place);
-    for (started = 1; started < n; started++)
-        if (thread_start(&jobs[started].slot, &place, read_part,
-                         &jobs[started]) != 0)
-            break;
-    for (i = started; i < n; i++) /* those that did not start */
-        read_part(&jobs[i]);
-    read_part(&jobs[0]);
-    for (i = 1; i < started; i++)
-        pthread_join(jobs[i].slot.thread, NULL);
+    thread_run_each(n, read_part, jobs, sizeof *jobs);
     for (i = 0; i < n; i++)
         if (set->parts[i].failed)
             return 0;
