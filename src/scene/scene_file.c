@@ -564,12 +564,13 @@ static int reserve_slot(parser *p)
     return 1;
 }
 
-static material_name *find_name(parser *p, const scene_word *word)
+static material_name *find_name(const parser *p, const char *text,
+                                size_t length)
 {
     size_t *slot;
     if (p->slot_capacity == 0)
         return NULL;
-    slot = name_slot(p, word->text, word->length);
+    slot = name_slot(p, text, length);
     return *slot ? &p->names[*slot - 1] : NULL;
 }
 
@@ -645,7 +646,7 @@ static rayo_status parse_material(parser *p)
                                 "'.'; at most %u bytes)",
                                 found(&name, 1, text, sizeof text),
                                 RAYO_SCENE_MAX_NAME);
-    known = find_name(p, &name);
+    known = find_name(p, name.text, name.length);
     if (known != NULL)
         return scene_lexer_fail(&p->lx, name.column, RAYO_ERR_INVALID,
                                 "material '%s' is defined again; expected a "
@@ -689,7 +690,7 @@ static rayo_status object_material(parser *p, const char *statement,
     status = need_word(p, &word, "a material name");
     if (status != RAYO_OK)
         return status;
-    m = find_name(p, &word);
+    m = find_name(p, word.text, word.length);
     if (m == NULL)
         return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_INVALID,
                                 "unknown material %s; expected a name "
@@ -858,13 +859,10 @@ static int read_material(const parser *p, split_part *part,
         return 1;
     name = &part->names[l->name];
     if (!name->found) {
-        size_t *slot;
-        if (p->slot_capacity == 0)
+        const material_name *m = find_name(p, name->text, name->length);
+        if (m == NULL)
             return 0;
-        slot = name_slot(p, name->text, name->length);
-        if (*slot == 0)
-            return 0;
-        name->id = p->names[*slot - 1].id;
+        name->id = m->id;
         name->found = 1;
     }
     *id = name->id;
