@@ -217,6 +217,16 @@ static void copy_spheres(struct bvh_wide *wide, const uint32_t *position,
     }
 }
 
+/* Zeroes the arrays where no sphere was copied (other primitives, and
+ * the lanes past the last), which the lanes read and leave out. */
+static void clear_others(struct bvh_wide *wide, size_t size)
+{
+    size_t at;
+    for (at = 0; at < size; at++)
+        if (!wide->sphere[at])
+            wide->cx[at] = wide->cy[at] = wide->cz[at] = wide->rr[at] = 0.0;
+}
+
 /* The children of the wide node made from binary node `binary`
  * (interior, or the root leaf of a one-leaf tree) into kids; how many. */
 static unsigned collapse(const bvh_node *nodes, uint32_t binary,
@@ -439,7 +449,10 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
     wide = calloc(1, sizeof *wide);
     if (wide == NULL)
         return RAYO_ERR_NOMEM;
-    wide->cx = calloc(4 * (prims + BVH_WIDE_LANES), sizeof *wide->cx);
+    /* not calloc: the copy writes the spheres' places on the threads
+     * (first writes of pages are what cost here) and clear_others the
+     * rest */
+    wide->cx = malloc(4 * (prims + BVH_WIDE_LANES) * sizeof *wide->cx);
     wide->sphere = calloc(prims + BVH_WIDE_LANES, 1);
     position = positions(bvh, prims, &top);
     if (threads > FRONTIER_MAX)
@@ -478,6 +491,7 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
         copy_spheres(wide, position, top, sphere_at, context, 0, count);
     }
     free(position);
+    clear_others(wide, prims + BVH_WIDE_LANES);
     /* 64-byte aligned: a node is two whole cache lines. */
     if (capacity > SIZE_MAX / sizeof *wide->nodes ||
         capacity > UINT32_MAX ||
