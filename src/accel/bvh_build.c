@@ -31,7 +31,7 @@
  * have made them; when all are done the arrays are stitched into the
  * order a single thread makes (each task's nodes inserted where the
  * serial build would have started that subtree, the tasks copied on the
- * threads), so the node array and
+ * threads, into the memory the items leave), so the node array and
  * the primitive order are the same bytes for any number of threads
  * (tests/unit/t_bvh_build.c).  When a thread cannot be started its
  * share is built by the others; with none, by the caller.
@@ -636,10 +636,16 @@ static unsigned thread_count(unsigned threads, size_t count)
     return threads;
 }
 
+/* nodes[0, count), in an array no larger than that when memory allows */
+static bvh_node *shrink(bvh_node *nodes, size_t count)
+{
+    bvh_node *shrunk = realloc(nodes, count * sizeof *shrunk);
+    return shrunk != NULL ? shrunk : nodes;
+}
+
 static rayo_status build_all(builder *b, task *root, rayo_bvh *bvh)
 {
     uint32_t next = 1;
-    bvh_node *shrunk;
     b->tasks[0] = root;
     b->task_count = 1;
     b->pending[0] = 0;
@@ -648,8 +654,7 @@ static rayo_status build_all(builder *b, task *root, rayo_bvh *bvh)
     if (b->failed)
         return RAYO_ERR_NOMEM;
     if (b->task_count == 1) { /* one task: its nodes are in final order */
-        shrunk = realloc(root->nodes, root->count * sizeof *shrunk);
-        bvh->nodes = shrunk ? shrunk : root->nodes;
+        bvh->nodes = shrink(root->nodes, root->count);
         bvh->node_count = root->count;
         root->nodes = NULL;
         return RAYO_OK;
@@ -664,9 +669,7 @@ static rayo_status build_all(builder *b, task *root, rayo_bvh *bvh)
     bvh->nodes = (bvh_node *)(void *)b->items[0];
     b->items[0] = b->items[1] = NULL;
     stitch_all(b, bvh->nodes);
-    shrunk = realloc(bvh->nodes, next * sizeof *shrunk);
-    if (shrunk != NULL)
-        bvh->nodes = shrunk;
+    bvh->nodes = shrink(bvh->nodes, next);
     return RAYO_OK;
 }
 
@@ -788,7 +791,7 @@ rayo_status rayo_bvh_build_from(rayo_bvh **result, rayo_bvh_box_fn box,
     b.task_capacity = 64;
     b.tasks = calloc(b.task_capacity, sizeof *b.tasks);
     b.pending = malloc(b.task_capacity * sizeof *b.pending);
-    if (b.items[0] != NULL && b.items[1] != NULL && b.index[1] != NULL &&
+    if (b.items[0] != NULL && b.index[1] != NULL &&
         bvh->prims != NULL && b.tasks != NULL && b.pending != NULL &&
         pthread_mutex_init(&b.lock, NULL) == 0) {
         if (pthread_cond_init(&b.changed, NULL) == 0) {
