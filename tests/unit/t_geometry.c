@@ -307,8 +307,8 @@ static void test_scene_queries(void)
     rayo_scene_add_sphere(s, rayo_vec3_make(0, 0, 5), 0.25, &err);
     ok(!rayo_scene_is_prepared(s), "an add undoes the preparation");
     rayo_scene_free(s);
+    /* No assertion can see a free; a crash here breaks the plan. */
     rayo_scene_free(NULL);
-    ok(1, "freeing NULL is fine");
 }
 
 static void test_ambient_background(void)

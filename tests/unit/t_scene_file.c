@@ -107,8 +107,9 @@ static void check_defaults(void)
        "the assignment's camera by default");
     is_int(rayo_scene_object_count(f.scene), 0, "no objects");
     rayo_scene_file_free(&f);
+    ok(f.scene == NULL, "a freed scene file holds no scene");
     rayo_scene_file_free(&f);
-    ok(1, "freeing twice is safe");
+    ok(f.scene == NULL, "and freeing it again changes nothing");
 }
 
 static void check_error(const char *text, rayo_status want_status,
