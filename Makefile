@@ -68,6 +68,9 @@ $(BUILD)/.deps-check:
 $(BUILD)/.deps-bench:
 	@scripts/deps.sh bench
 	@mkdir -p $(dir $@) && touch $@
+$(BUILD)/.deps-web:
+	@scripts/deps.sh web
+	@mkdir -p $(dir $@) && touch $@
 
 $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
@@ -245,7 +248,7 @@ COURSE_PNG := $(sort $(wildcard data/course/*.png))
 
 web: $(WEB_OUT)/assets.js $(WEB_ASSETS:web/%=$(WEB_OUT)/%)
 
-$(BUILD)/wasm/%.o: %.c
+$(BUILD)/wasm/%.o: %.c | $(BUILD)/.deps-web
 	@mkdir -p $(dir $@)
 	$(WASM_CC) $(WASM_CFLAGS) -c $< -o $@
 

@@ -13,6 +13,9 @@
 #                           without them (not root, no such package)
 #                           it says so and succeeds, and those rows say
 #                           skipped
+#   scripts/deps.sh web     build's, and the page's WebAssembly toolchain
+#                           (`make web`): clang, lld, wasi-libc and the
+#                           wasm32 runtime of the clang that is installed
 #
 # It installs with apt-get only when something is missing, and only as
 # root; otherwise it names the command to run and fails.  It never
@@ -25,9 +28,9 @@
 set -eu
 profile=${1:-build}
 case $profile in
-build | check | bench) ;;
+build | check | bench | web) ;;
 *)
-    echo "deps.sh: '$profile': expected build, check or bench" >&2
+    echo "deps.sh: '$profile': expected build, check, bench or web" >&2
     exit 2
     ;;
 esac
@@ -59,6 +62,25 @@ if [ "$profile" = check ]; then
     sandbox=""
     command -v bwrap >/dev/null 2>&1 || sandbox=" bubblewrap"
     add_set "the grader's sandbox" "$sandbox"
+fi
+if [ "$profile" = web ]; then
+    # What `clang --target=wasm32-wasi` needs: the linker, the C library
+    # and the builtins of the clang version that is (or will be) there.
+    wasm=""
+    command -v clang >/dev/null 2>&1 || wasm="$wasm clang"
+    command -v wasm-ld >/dev/null 2>&1 || wasm="$wasm lld"
+    [ -d "${RAYO_WASI_INCLUDE:-/usr/include/wasm32-wasi}" ] || wasm="$wasm wasi-libc"
+    version=$(clang --version 2>/dev/null | sed -n '1s/.*clang version \([0-9]*\).*/\1/p')
+    runtime=""
+    for f in "${RAYO_LLVM_LIB:-/usr/lib}"/llvm-"$version"/lib/clang/*/lib/wasi/libclang_rt.builtins-wasm32.a; do
+        [ -n "$version" ] && [ -f "$f" ] && runtime=$f
+    done
+    if [ -z "$version" ]; then
+        wasm="$wasm libclang-rt-dev-wasm32"
+    elif [ -z "$runtime" ]; then
+        wasm="$wasm libclang-rt-$version-dev-wasm32"
+    fi
+    add_set "the page's WebAssembly toolchain" "$wasm"
 fi
 optional=""
 if [ "$profile" = bench ]; then
