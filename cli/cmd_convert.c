@@ -45,9 +45,12 @@ static void print_help(void)
         "          bilevel becomes 0 (black) and 255 (white)\n"
         "  to PPM  gray is repeated in the three channels; bilevel as above\n"
         "  to PNG  kept as it is (bilevel as 1-bit gray)\n"
+        "  to BMP  colour as 24 bits (B, G, R, rows bottom up, as the "
+        "course's TP1);\n"
+        "          gray and bilevel through a palette of 8 and 1 bits\n"
         "Transparent PNG pixels are composited over white.\n\n"
         "options:\n"
-        "      --format FMT   pbm, pgm, ppm or png; needed for a '-' OUT "
+        "      --format FMT   pbm, pgm, ppm, png or bmp; needed for a '-' OUT "
         "unless the\n"
         "                     Netpbm format that holds the image as it is "
         "will do\n"
@@ -55,7 +58,7 @@ static void print_help(void)
         "      --plain        plain Netpbm (P1-P3, ASCII)\n"
         "      --raw          raw Netpbm (P4-P6); without either, a Netpbm "
         "input's\n"
-        "                     encoding is kept, and a PNG becomes raw\n"
+        "                     encoding is kept, and a PNG or BMP becomes raw\n"
         "  -v, --verbose      on stderr: what was read (format, size, "
         "maxval, bytes\n"
         "                     after the image) and what was written\n"
@@ -118,17 +121,18 @@ static int choose_format(const convert_request *req,
     if (req->format != NULL) {
         if (rayo_format_parse(req->format, format, &err) != RAYO_OK)
             return cli_usage_error("--format: '%s' is not a format; expected "
-                                   "pbm, pgm, ppm or png",
+                                   "pbm, pgm, ppm, png or bmp",
                                    req->format);
     } else if (info != NULL) {
         *format = rayo_format_netpbm_for(info);
     } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
         return cli_usage_error("convert: %s", err.message);
     }
-    if ((req->plain || req->raw) && *format == RAYO_FORMAT_PNG)
+    if ((req->plain || req->raw) && !rayo_format_is_netpbm(*format))
         return cli_usage_error("%s: applies only to PBM, PGM and PPM, "
-                               "not png",
-                               req->plain ? "--plain" : "--raw");
+                               "not %s",
+                               req->plain ? "--plain" : "--raw",
+                               rayo_format_name(*format));
     return CLI_EXIT_OK;
 }
 
@@ -139,10 +143,10 @@ static int choose_encoding(const convert_request *req,
                            rayo_write_options *options)
 {
     options->plain = req->plain ||
-                     (!req->raw && report->format != RAYO_FORMAT_PNG &&
+                     (!req->raw && rayo_format_is_netpbm(report->format) &&
                       report->plain);
     if (strcmp(req->output, "-") == 0 && cli_stdout_is_terminal() &&
-        (options->format == RAYO_FORMAT_PNG || !options->plain))
+        (!rayo_format_is_netpbm(options->format) || !options->plain))
         return cli_usage_error("refusing to write binary %s to a terminal; "
                                "give OUT, a pipe, or --plain",
                                rayo_format_name(options->format));
@@ -172,6 +176,7 @@ static rayo_status fit_layout(const rayo_image *image, rayo_format format,
             status = rayo_image_to_rgb(image, converted, err);
         break;
     case RAYO_FORMAT_PNG:
+    case RAYO_FORMAT_BMP:
         return RAYO_OK;
     }
     if (status == RAYO_OK && converted->pixels != NULL)
@@ -193,9 +198,9 @@ static void report_read(const convert_request *req, const rayo_image *image,
     cli_sayf("%s: %s%s, %lux%lu, %s, maxval %u; %llu byte%s after the "
              "image%s",
              strcmp(req->input, "-") == 0 ? "standard input" : req->input,
-             report->format == RAYO_FORMAT_PNG ? ""
-                                               : (report->plain ? "plain "
-                                                                : "raw "),
+             !rayo_format_is_netpbm(report->format)
+                 ? ""
+                 : (report->plain ? "plain " : "raw "),
              rayo_format_name(report->format), (unsigned long)info->width,
              (unsigned long)info->height, layout_name(info), info->maxval,
              (unsigned long long)report->trailing_bytes,
@@ -208,7 +213,7 @@ static void report_written(const convert_request *req, const rayo_image *fit,
 {
     cli_sayf("%s: wrote %s%s, %s, maxval %u",
              strcmp(req->output, "-") == 0 ? "standard output" : req->output,
-             options->format == RAYO_FORMAT_PNG
+             !rayo_format_is_netpbm(options->format)
                  ? ""
                  : (options->plain ? "plain " : "raw "),
              rayo_format_name(options->format), layout_name(&fit->info),

@@ -90,10 +90,11 @@ static void print_help(void)
         "  -o, --output FILE      write to FILE ('-' = standard output, "
         "the default);\n"
         "                         a file appears whole or not at all\n"
-        "      --format FMT       the mode's Netpbm format (pbm, pgm, ppm) "
-        "or png (default:\n"
-        "                         from FILE's extension, else the mode's "
-        "Netpbm format)\n"
+        "      --format FMT       the mode's Netpbm format (pbm, pgm, ppm), "
+        "png or bmp\n"
+        "                         (default: from FILE's extension, else "
+        "the mode's\n"
+        "                         Netpbm format)\n"
         "      --raw              raw Netpbm (P4-P6) instead of plain "
         "(P1-P3)\n"
         "  -j, --threads N        threads reading the scene, building its "
@@ -283,7 +284,8 @@ static rayo_format netpbm_for_shade(rayo_shade_mode mode)
 
 static const char *upper_name(rayo_format format)
 {
-    static const char *const names[] = {"PBM", "PGM", "PPM", "PNG"};
+    static const char *const names[] = {"PBM", "PGM", "PPM", "PNG",
+                                        "BMP"};
     return names[format];
 }
 
@@ -302,9 +304,9 @@ static int choose_format(const render_request *req, rayo_format *format)
     const char *ext = rayo_format_name(netpbm);
     if (req->format != NULL) {
         if (rayo_format_parse(req->format, format, &err) != RAYO_OK ||
-            (*format != netpbm && *format != RAYO_FORMAT_PNG))
+            (*format != netpbm && rayo_format_is_netpbm(*format)))
             return cli_usage_error("--format: '%s' is not accepted; expected "
-                                   "%s or png for a %s render",
+                                   "%s, png or bmp for a %s render",
                                    req->format, ext,
                                    rayo_shade_mode_name(mode));
     } else if (strcmp(req->output, "-") == 0 ||
@@ -313,12 +315,13 @@ static int choose_format(const render_request *req, rayo_format *format)
         *format = netpbm;
     } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
         return cli_usage_error("--output: cannot tell the format of '%s' "
-                               "from its extension; expected .%s or .png, "
+                               "from its extension; expected .%s, .png or "
+                               ".bmp, "
                                "or give --format",
                                req->output, ext);
-    } else if (*format != netpbm && *format != RAYO_FORMAT_PNG) {
+    } else if (*format != netpbm && rayo_format_is_netpbm(*format)) {
         return cli_usage_error("--output: '%s' is %s, which cannot hold a %s "
-                               "render; expected .%s or .png",
+                               "render; expected .%s, .png or .bmp",
                                req->output, upper_name(*format),
                                rayo_shade_mode_name(mode), ext);
     }
@@ -326,7 +329,7 @@ static int choose_format(const render_request *req, rayo_format *format)
         return cli_usage_error("--raw: applies only to %s output, not %s",
                                upper_name(netpbm), rayo_format_name(*format));
     if (strcmp(req->output, "-") == 0 && cli_stdout_is_terminal() &&
-        (*format == RAYO_FORMAT_PNG || req->raw))
+        (!rayo_format_is_netpbm(*format) || req->raw))
         return cli_usage_error("refusing to write binary %s to a terminal; "
                                "use -o FILE or a pipe",
                                upper_name(*format));

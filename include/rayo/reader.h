@@ -1,9 +1,10 @@
 /*
- * reader.h - reading Netpbm (PBM, PGM, PPM; plain and raw) and PNG files
- * into a rayo_image.
+ * reader.h - reading Netpbm (PBM, PGM, PPM; plain and raw), PNG and BMP
+ * files into a rayo_image.
  *
- * The format comes from the content's first bytes (P1-P6 or the PNG
- * signature), never from the file's name.  What each format becomes:
+ * The format comes from the content's first bytes (P1-P6, the PNG
+ * signature or "BM"), never from the file's name.  What each format
+ * becomes:
  *
  *   P1, P4               RAYO_SAMPLE_BIT (1 = black)
  *   P2, P5               1 channel, U8 when maxval <= 255, else U16
@@ -17,6 +18,15 @@
  *                        composited over white and dropped:
  *                        v' = round((v a + M (M - a)) / M), M = maxval;
  *                        low-depth gray with tRNS becomes 8-bit first
+ *   BMP 1 bit, palette of black and white
+ *                        RAYO_SAMPLE_BIT
+ *   BMP 1/4/8 bit, palette of grays
+ *                        1 channel U8
+ *   BMP other palettes, 16, 24, 32 bit
+ *                        3 channels U8 (channel masks scaled to 0-255;
+ *                        alpha ignored); rows top down or bottom up, and
+ *                        rows without padding when the file's size says
+ *                        so (the report's bmp_ fields)
  *
  * Netpbm is read as its format pages say and as tolerantly as Netpbm's
  * own tools: comments ('#' to the end of the line) anywhere in the
@@ -104,6 +114,15 @@ typedef struct rayo_read_report {
     uint64_t clamped_high, clamped_low;
     uint64_t first_high_line, first_low_line;
     long largest_found, smallest_found;
+    /*
+     * BMP only: how the file departs from the course's layout (24 bits,
+     * rows bottom up, each padded to 4 bytes): its bits a pixel, rows
+     * stored top down (a negative height), rows written without their
+     * padding (read as such because the file's size is exactly that).
+     */
+    unsigned bmp_bits;
+    int bmp_top_down;
+    int bmp_unpadded;
 } rayo_read_report;
 
 /* How to read (rayo_image_read_file_with); zeroed: as

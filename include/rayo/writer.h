@@ -1,6 +1,6 @@
 /*
  * writer.h - streaming image writers: Netpbm (PBM, PGM, PPM; plain and
- * raw) and PNG.
+ * raw), PNG and BMP.
  *
  * A writer is opened with the image's header, fed rows from top to bottom
  * (as many at a time as the caller likes) and finished; it never needs the
@@ -15,6 +15,11 @@
  *   PNG  BIT (written as 1-bit gray, black where the bit is 1), or one or
  *        three channels of U8 (8-bit) or U16 (16-bit), samples scaled to
  *        the full range when maxval is not 255 or 65535.
+ *   BMP  the course's layout (bottom-up rows padded to 4 bytes): three
+ *        channels as 24 bits B, G, R; one channel as 8 bits through a
+ *        gray palette; BIT as 1 bit through a white, black palette;
+ *        samples over 8 bits scaled to 0-255.  Rows are kept until the
+ *        image is finished (the file wants the bottom row first).
  * Converting between layouts (say colour to bilevel) is not a writer's
  * job.
  */
@@ -36,10 +41,11 @@ typedef enum rayo_format {
     RAYO_FORMAT_PBM,
     RAYO_FORMAT_PGM,
     RAYO_FORMAT_PPM,
-    RAYO_FORMAT_PNG
+    RAYO_FORMAT_PNG,
+    RAYO_FORMAT_BMP
 } rayo_format;
 
-/* "pbm", "pgm", "ppm", "png"; RAYO_ERR_INVALID for anything else. */
+/* "pbm", "pgm", "ppm", "png", "bmp"; RAYO_ERR_INVALID for anything else. */
 rayo_status rayo_format_parse(const char *name, rayo_format *format,
                               rayo_error *err);
 
@@ -50,8 +56,11 @@ rayo_status rayo_format_parse(const char *name, rayo_format *format,
 rayo_status rayo_format_from_path(const char *path, rayo_format *format,
                                   rayo_error *err);
 
-/* "pbm", "pgm", "ppm" or "png". */
+/* "pbm", "pgm", "ppm", "png" or "bmp". */
 const char *rayo_format_name(rayo_format format);
+
+/* 1 for PBM, PGM and PPM (plain or raw), 0 for PNG and BMP. */
+int rayo_format_is_netpbm(rayo_format format);
 
 /* The format that holds this layout without loss (PBM, PGM or PPM). */
 rayo_format rayo_format_netpbm_for(const rayo_image_info *info);

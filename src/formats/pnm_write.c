@@ -58,6 +58,7 @@ static rayo_status check_layout(const rayo_writer *writer, rayo_error *err)
             return RAYO_OK;
         break;
     case RAYO_FORMAT_PNG:
+    case RAYO_FORMAT_BMP:
         break;
     }
     return rayo_error_set(err, RAYO_ERR_INVALID,

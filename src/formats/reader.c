@@ -1,7 +1,8 @@
 /*
  * reader.c - the public face of the image readers: opens the source,
- * recognises the format from its first bytes (Netpbm magic or the PNG
- * signature), hands over to pnm_read.c or png_read.c, and counts what
+ * recognises the format from its first bytes (Netpbm magic, the PNG
+ * signature or BMP's "BM"), hands over to pnm_read.c, png_read.c or
+ * bmp_read.c, and counts what
  * follows the image (pnm_read.c also says what a Netpbm file's tail
  * holds).
  *
@@ -24,8 +25,8 @@ static rayo_status bad_magic(const rayo_source *src,
     if (count == 0)
         return rayo_error_set(err, RAYO_ERR_FORMAT,
                               "%s: byte 0: found an empty file; expected a "
-                              "Netpbm magic number (P1-P6) or a PNG "
-                              "signature",
+                              "Netpbm magic number (P1-P6), a PNG "
+                              "signature or a BMP's \"BM\"",
                               src->name);
     for (i = 0; i < count && i < 4; i++)
         used += (size_t)snprintf(found + used, sizeof found - used,
@@ -36,7 +37,8 @@ static rayo_status bad_magic(const rayo_source *src,
                                  bytes[i]);
     return rayo_error_set(err, RAYO_ERR_FORMAT,
                           "%s: byte 0: found \"%s\"; expected a Netpbm magic "
-                          "number (P1-P6) or a PNG signature",
+                          "number (P1-P6), a PNG signature or a BMP's "
+                          "\"BM\"",
                           src->name, found);
 }
 
@@ -52,6 +54,10 @@ static rayo_status read_image(rayo_source *src, int clamp,
         return rayo_pnm_read(src, magic[1], clamp, image, report, err);
     if (src->read_errno != 0)
         return rayo_source_end_error(src, "a magic number", err);
+    if (got == 2 && magic[0] == 'B' && magic[1] == 'M') {
+        report->format = RAYO_FORMAT_BMP;
+        return rayo_bmp_read(src, image, report, err);
+    }
     if (got == 2 && magic[0] == png_signature[0] &&
         magic[1] == png_signature[1]) {
         rayo_source_read(src, magic + 2, 6, &got);

@@ -28,4 +28,11 @@ rayo_status rayo_pnm_read(rayo_source *src, int digit, int clamp,
 rayo_status rayo_png_read(rayo_source *src, rayo_image *image,
                           rayo_error *err);
 
+/*
+ * Reads a BMP image whose "BM" has been consumed; fills report's bmp_
+ * fields and leaves the cursor after the last row.
+ */
+rayo_status rayo_bmp_read(rayo_source *src, rayo_image *image,
+                          rayo_read_report *report, rayo_error *err);
+
 #endif

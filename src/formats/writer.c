@@ -10,7 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const format_names[] = {"pbm", "pgm", "ppm", "png"};
+static const char *const format_names[] = {"pbm", "pgm", "ppm", "png",
+                                            "bmp"};
 #define FORMAT_COUNT (sizeof format_names / sizeof format_names[0])
 
 static int equal_ignoring_case(const char *a, const char *b)
@@ -42,7 +43,8 @@ rayo_status rayo_format_parse(const char *name, rayo_format *format,
     if (lookup(name, format))
         return RAYO_OK;
     return rayo_error_set(err, RAYO_ERR_INVALID,
-                          "unknown format '%s'; expected pbm, pgm, ppm or png",
+                          "unknown format '%s'; expected pbm, pgm, ppm, png "
+                          "or bmp",
                           name);
 }
 
@@ -55,7 +57,7 @@ rayo_status rayo_format_from_path(const char *path, rayo_format *format,
         return RAYO_OK;
     return rayo_error_set(err, RAYO_ERR_INVALID,
                           "cannot tell the format of '%s' from its extension; "
-                          "expected .pbm, .pgm, .ppm or .png (or give "
+                          "expected .pbm, .pgm, .ppm, .png or .bmp (or give "
                           "--format)",
                           path);
 }
@@ -63,6 +65,12 @@ rayo_status rayo_format_from_path(const char *path, rayo_format *format,
 const char *rayo_format_name(rayo_format format)
 {
     return (unsigned)format < FORMAT_COUNT ? format_names[format] : "?";
+}
+
+int rayo_format_is_netpbm(rayo_format format)
+{
+    return format == RAYO_FORMAT_PBM || format == RAYO_FORMAT_PGM ||
+           format == RAYO_FORMAT_PPM;
 }
 
 rayo_format rayo_format_netpbm_for(const rayo_image_info *info)
@@ -86,8 +94,9 @@ rayo_status rayo_writer_open(rayo_writer **result, rayo_output *out,
     writer = calloc(1, sizeof *writer);
     if (writer == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
-    writer->ops = options->format == RAYO_FORMAT_PNG ? &rayo_png_writer_ops
-                                                     : &rayo_pnm_writer_ops;
+    writer->ops = options->format == RAYO_FORMAT_PNG   ? &rayo_png_writer_ops
+                  : options->format == RAYO_FORMAT_BMP ? &rayo_bmp_writer_ops
+                                                       : &rayo_pnm_writer_ops;
     writer->out = out;
     writer->info = *info;
     writer->options = *options;
