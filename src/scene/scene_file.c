@@ -8,7 +8,7 @@
  * they expected.  Errors from the scene itself (too many objects,
  * collinear triangle corners) are re-issued with the file, line and
  * column of the statement.  Splitting text into words is scene_lexer.c's
- * job, reading numbers scene_number.c's, reading the file from disk
+ * job, reading numbers core/decimal.c's, reading the file from disk
  * scene_file_load.c's; the text comes a window at a time
  * (scene_file_impl.h: the reader), and a long window's sphere lines are
  * read ahead on several threads by scene_file_split.c and taken here in
@@ -25,7 +25,7 @@
 #include "scene_file_split.h"
 #include "scene_impl.h"
 #include "scene_lexer.h"
-#include "scene_number.h"
+#include "../core/decimal.h"
 
 typedef struct material_name {
     char text[RAYO_SCENE_MAX_NAME + 1];
@@ -84,7 +84,7 @@ static rayo_status need_word(parser *p, scene_word *word, const char *what)
 
 static int word_to_double(const scene_word *word, double *value)
 {
-    return scene_number_read(word->text, word->length, value);
+    return decimal_read(word->text, word->length, value);
 }
 
 /*

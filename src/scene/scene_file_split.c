@@ -6,7 +6,7 @@
  * into words and reading numbers, line by line, each line on its own.
  * Why the scene is the same: a record carries values only for a sphere
  * line that the parser would accept as it stands, read with the same
- * lexer (scene_lexer.c) and number reader (scene_number.c) and checked
+ * lexer (scene_lexer.c) and number reader (core/decimal.c) and checked
  * by the same rules as parse_sphere (each number finite and within
  * RAYO_SCENE_MAX_NUMBER, the radius > 0, then nothing, or 'material' and
  * one more word and nothing); the material's name is looked up (once a
@@ -25,7 +25,7 @@
 #include "../core/thread_start.h"
 #include "rayo/scene_file.h"
 #include "scene_lexer.h"
-#include "scene_number.h"
+#include "../core/decimal.h"
 
 typedef struct part_job {
     const char *name, *text;
@@ -131,7 +131,7 @@ static int clean_number(scene_lexer *lx, double *value)
 {
     scene_word word;
     return scene_lexer_word(lx, &word) &&
-           scene_number_read(word.text, word.length, value) &&
+           decimal_read(word.text, word.length, value) &&
            fabs(*value) <= RAYO_SCENE_MAX_NUMBER;
 }
 

@@ -1,8 +1,8 @@
 /*
- * scene_number.c - decimal numbers read exactly as strtod reads them
- * (scene_number.h), fast.
+ * decimal.c - decimal numbers read exactly as strtod reads them
+ * (decimal.h), fast.
  *
- * Why: strtod was a fifth of reading the 100,000-sphere field (issue 17):
+ * Why: strtod was a fifth of reading the 100,000-sphere field:
  * the field's numbers have 16 or 17 significant digits, where glibc's
  * strtod goes to multi-precision arithmetic.  Why exact: a word that is
  * a plain decimal number (sign, digits, one '.', exponent) with at most
@@ -24,14 +24,14 @@
  * strtod reads whole too.  tests/unit/t_scene_number.c compares both on
  * hundreds of thousands of random and edge-case words.
  */
-#include "scene_number.h"
+#include "decimal.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-int scene_number_read_strtod(const char *text, size_t length, double *value)
+int decimal_read_strtod(const char *text, size_t length, double *value)
 {
     char buffer[64];
     char *end;
@@ -57,7 +57,7 @@ int scene_number_read_strtod(const char *text, size_t length, double *value)
 #define POW5_LO (-100)
 #define POW5_HI 50
 static const uint64_t pow5[POW5_HI - POW5_LO + 1][2] = {
-#include "scene_number_table.h"
+#include "decimal_table.h"
 };
 
 /* The 128-bit product of a and b. */
@@ -242,11 +242,11 @@ static int read_fast(const char *s, size_t length, double *value)
     return eisel_lemire(w, (int)exponent, negative, value);
 }
 
-int scene_number_read(const char *text, size_t length, double *value)
+int decimal_read(const char *text, size_t length, double *value)
 {
     if (length == 0 || length >= 64)
         return 0;
     if (read_fast(text, length, value))
         return 1;
-    return scene_number_read_strtod(text, length, value);
+    return decimal_read_strtod(text, length, value);
 }

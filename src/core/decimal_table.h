@@ -1,4 +1,4 @@
-/* scene_number_table.h - 5^q for q in [-100, 50] as 128 bits (scene_number.c: how it is made). */
+/* decimal_table.h - 5^q for q in [-100, 50] as 128 bits (decimal.c: how it is made). */
     {0xdff9772470297ebdu, 0x59787e2b93bc56f7u}, /* 5^-100 */
     {0x8bfbea76c619ef36u, 0x57eb4edb3c55b65au}, /* 5^-99 */
     {0xaefae51477a06b03u, 0xede622920b6b23f1u}, /* 5^-98 */

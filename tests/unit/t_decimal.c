@@ -1,5 +1,5 @@
 /*
- * t_scene_number.c - the scene parser's number reading (scene_number.c)
+ * t_decimal.c - the decimal number reader (src/core/decimal.c)
  * against strtod.
  *
  * Every word is read twice, by the fast path and by the strtod path, and
@@ -17,7 +17,7 @@
 #include "rayo.h"
 #include "tap.h"
 
-#include "../../src/scene/scene_number.h"
+#include "../../src/core/decimal.h"
 
 static unsigned long mismatches, checked, fast_numbers;
 
@@ -35,8 +35,8 @@ static int same(const char *word)
 {
     double fast = 0.0, slow = 0.0;
     size_t n = strlen(word);
-    int a = scene_number_read(word, n, &fast);
-    int b = scene_number_read_strtod(word, n, &slow);
+    int a = decimal_read(word, n, &fast);
+    int b = decimal_read_strtod(word, n, &slow);
     checked++;
     if (a == b && (!a || memcmp(&fast, &slow, sizeof fast) == 0)) {
         fast_numbers += (unsigned long)a;
@@ -110,13 +110,13 @@ int main(void)
                                                sizeof edges[0]));
     {
         double v = 0;
-        ok(scene_number_read("-0", 2, &v) && signbit(v) && v == 0.0,
+        ok(decimal_read("-0", 2, &v) && signbit(v) && v == 0.0,
            "-0 reads as negative zero");
-        ok(scene_number_read("9007199254740993", 16, &v) &&
+        ok(decimal_read("9007199254740993", 16, &v) &&
                v == 9007199254740992.0,
            "2^53 + 1 rounds to even");
-        ok(scene_number_read("0.1", 3, &v) && v == 0.1, "0.1");
-        ok(!scene_number_read("1e309", 5, &v), "1e309 overflows: refused");
+        ok(decimal_read("0.1", 3, &v) && v == 0.1, "0.1");
+        ok(!decimal_read("1e309", 5, &v), "1e309 overflows: refused");
     }
 
     good = 1;
