@@ -357,7 +357,8 @@ static int build_camera(const render_request *req, rayo_camera *camera,
     return rayo_camera_spec_build(&spec, camera, err) == RAYO_OK;
 }
 
-/* One line when the scene file draws nothing or picks no camera. */
+/* One line when the scene file draws nothing or picks no camera, and one
+   for each part of a mesh file it left out. */
 static void warn_about_scene(const render_request *req)
 {
     const char *name = strcmp(req->scene_path, "-") == 0 ? "standard input"
@@ -380,6 +381,15 @@ static void warn_about_scene(const render_request *req)
                  name, (unsigned long)req->file.camera.width,
                  (unsigned long)req->file.camera.height,
                  req->file.camera.fov_degrees);
+    if (req->file.mesh_left_out > 0)
+        cli_sayf("warning: %s: %llu of its meshes' triangles have their "
+                 "corners on one line and were left out (%llu drawn)",
+                 name, req->file.mesh_left_out, req->file.mesh_triangles);
+    if (req->file.mesh_ignored > 0)
+        cli_sayf("warning: %s: %llu OBJ statements that are not 'v' or 'f' "
+                 "(normals, texture coordinates, groups, materials) were "
+                 "not used",
+                 name, req->file.mesh_ignored);
 }
 
 /* Shading mode, samples and depth: the options', else the scene's. */

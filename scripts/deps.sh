@@ -4,9 +4,10 @@
 #
 #   scripts/deps.sh build   a C compiler, make, pkg-config and libpng's
 #                           headers
-#   scripts/deps.sh check   also the Netpbm tools the tests cross-check with,
-#                           prove (perl), jq and python3, which read
-#                           their JSON, and bubblewrap, grade's sandbox
+#   scripts/deps.sh check   also the Netpbm tools and ADMesh the tests
+#                           cross-check images and meshes with, prove
+#                           (perl), jq and python3, which read their
+#                           JSON, and bubblewrap, grade's sandbox
 #   scripts/deps.sh bench   build's, and for `make bench`'s rows against
 #                           Embree and POV-Ray (bench/peers.c) python3,
 #                           libembree-dev and povray: optional, so
@@ -56,6 +57,7 @@ if [ "$profile" = check ]; then
     command -v prove >/dev/null 2>&1 || tests="$tests perl"
     command -v jq >/dev/null 2>&1 || tests="$tests jq"
     command -v python3 >/dev/null 2>&1 || tests="$tests python3"
+    command -v admesh >/dev/null 2>&1 || tests="$tests admesh"
     add_set "test tools" "$tests"
     # rayo grade runs submissions in a bubblewrap sandbox, and the tests
     # run it for real (docs/grading.md).

@@ -7,8 +7,10 @@
  * The format comes from the content, never from the name: a binary STL
  * is 84 + 50 n bytes for its count n; a file that is not, and begins with
  * "solid", is ASCII STL; one whose first statement is an OBJ keyword (v,
- * f, o, g, #, ...) is OBJ.  What a scene does with a mesh (placement,
- * material, which normals shade it) is scene_file.h's business.
+ * f, o, g, #, ...) is OBJ.  A binary header may begin "solid" too: a
+ * NUL byte in the first 84, which text never has, says binary.  What a
+ * scene does with a mesh (placement, material, which normals shade it)
+ * is scene.h's and scene_file.h's business.
  *
  * Hostile files are refused before memory is asked for what they
  * promise: a binary STL whose count needs more bytes than the file has,

@@ -38,6 +38,7 @@
 #include "rayo/ray.h"
 #include "rayo/sphere.h"
 #include "rayo/status.h"
+#include "rayo/mesh.h"
 #include "rayo/triangle.h"
 
 #ifdef __cplusplus
@@ -126,10 +127,49 @@ rayo_status rayo_scene_add_plane(rayo_scene *scene, rayo_vec3 point,
                                  rayo_vec3 normal, unsigned material,
                                  rayo_error *err);
 
-/* Adds a triangle; RAYO_ERR_INVALID when its corners are collinear. */
+/* Adds a triangle; RAYO_ERR_INVALID when its corners are collinear.
+ * It is shaded with its corners' normal (rayo_triangle_normal). */
 rayo_status rayo_scene_add_triangle(rayo_scene *scene, rayo_vec3 a,
                                     rayo_vec3 b, rayo_vec3 c,
                                     unsigned material, rayo_error *err);
+
+/*
+ * The same, shaded with the given normal (any finite length, stored
+ * normalised; turned towards the ray as every triangle's), as a mesh
+ * file's facet normal asks; a zero normal means the corners'.
+ */
+rayo_status rayo_scene_add_triangle_normal(rayo_scene *scene, rayo_vec3 a,
+                                           rayo_vec3 b, rayo_vec3 c,
+                                           rayo_vec3 normal,
+                                           unsigned material,
+                                           rayo_error *err);
+
+/* Where a mesh goes: scaled about the origin, rotated about x, then y,
+ * then z (degrees), then moved. */
+typedef struct rayo_mesh_placement {
+    double scale;          /* > 0; 1 */
+    rayo_vec3 rotate;      /* degrees; 0, 0, 0 */
+    rayo_vec3 translate;   /* 0, 0, 0 */
+    int computed_normals;  /* 1: shade with the corners' normals, not the
+                              file's; 0 */
+} rayo_mesh_placement;
+
+/* The defaults above. */
+void rayo_mesh_placement_init(rayo_mesh_placement *placement);
+
+/*
+ * Adds every triangle of mesh, placed, in material, shaded with the
+ * file's normal (turned with the mesh) unless computed_normals or the
+ * file gives none or a zero one.  Triangles whose placed corners are on
+ * one line are left out and counted in *left_out (may be NULL).
+ * RAYO_ERR_INVALID for a placement that is not finite or a scale <= 0;
+ * RAYO_ERR_LIMIT past RAYO_MAX_OBJECTS objects (the triangles added so
+ * far stay).
+ */
+rayo_status rayo_scene_add_mesh(rayo_scene *scene, const rayo_mesh *mesh,
+                                const rayo_mesh_placement *placement,
+                                unsigned material, size_t *left_out,
+                                rayo_error *err);
 
 /*
  * Adds a light.  RAYO_ERR_INVALID for an unknown kind, a non-finite

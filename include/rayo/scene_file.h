@@ -3,8 +3,8 @@
  * a camera description, a prepared scene and render settings out.
  *
  * A scene file is lines of words: a keyword (camera, shade, samples,
- * depth, background, ambient, light, material, sphere, plane, triangle)
- * and its values; '#' starts a comment.  Every failure is one line of the
+ * depth, background, ambient, light, material, sphere, plane, triangle,
+ * mesh) and its values; '#' starts a comment.  Every failure is one line of the
  * form "FILE:LINE:COL: what was found; what was expected", with the status
  * RAYO_ERR_FORMAT (a word where a number should be, an unknown keyword),
  * RAYO_ERR_INVALID (a negative radius, a zero-length direction, two
@@ -44,6 +44,10 @@ typedef struct rayo_scene_file {
     int shade_given;
     unsigned samples;         /* 1 unless a samples line */
     unsigned depth;           /* 5 unless a depth line */
+    /* What the mesh lines did: triangles added, triangles left out
+       (corners on one line once placed), OBJ statements not used (vn,
+       vt, g, ...); for the command's warnings. */
+    unsigned long long mesh_triangles, mesh_left_out, mesh_ignored;
 } rayo_scene_file;
 
 /*

@@ -94,7 +94,7 @@ static void fill_hit(const rayo_scene *scene, const rayo_ray *ray,
     }
     case RAYO_OBJECT_TRIANGLE: {
         const scene_triangle *tr = &scene->triangles[o->index];
-        rayo_vec3 n = rayo_triangle_normal(&tr->shape);
+        rayo_vec3 n = tr->normal;
         if (rayo_vec3_dot(n, ray->direction) > 0.0)
             n = rayo_vec3_scale(n, -1.0);
         hit->normal = n;

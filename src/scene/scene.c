@@ -262,9 +262,20 @@ rayo_status rayo_scene_add_triangle(rayo_scene *scene, rayo_vec3 a,
                                     rayo_vec3 b, rayo_vec3 c,
                                     unsigned material, rayo_error *err)
 {
+    rayo_vec3 none = {0.0, 0.0, 0.0};
+    return rayo_scene_add_triangle_normal(scene, a, b, c, none, material,
+                                          err);
+}
+
+rayo_status rayo_scene_add_triangle_normal(rayo_scene *scene, rayo_vec3 a,
+                                           rayo_vec3 b, rayo_vec3 c,
+                                           rayo_vec3 normal,
+                                           unsigned material, rayo_error *err)
+{
     rayo_status status;
     scene_triangle *t;
     rayo_triangle shape;
+    double length = rayo_vec3_length(normal);
     shape.a = a;
     shape.b = b;
     shape.c = c;
@@ -272,6 +283,9 @@ rayo_status rayo_scene_add_triangle(rayo_scene *scene, rayo_vec3 a,
         !rayo_vec3_is_finite(c))
         return rayo_error_set(err, RAYO_ERR_INVALID,
                               "triangle corner is not finite");
+    if (!rayo_vec3_is_finite(normal))
+        return rayo_error_set(err, RAYO_ERR_INVALID,
+                              "triangle normal is not finite");
     if (!rayo_triangle_is_valid(&shape))
         return rayo_error_set(err, RAYO_ERR_INVALID,
                               "triangle (%g, %g, %g) (%g, %g, %g) "
@@ -285,6 +299,8 @@ rayo_status rayo_scene_add_triangle(rayo_scene *scene, rayo_vec3 a,
         return status;
     t = &scene->triangles[scene->triangle_count];
     t->shape = shape;
+    t->normal = length > 0.0 ? rayo_vec3_scale(normal, 1.0 / length)
+                             : rayo_triangle_normal(&shape);
     t->object = (uint32_t)scene->object_count;
     t->material = material;
     end_object(scene, RAYO_OBJECT_TRIANGLE, scene->triangle_count++);

@@ -774,6 +774,120 @@ static rayo_status parse_triangle(parser *p)
     return RAYO_OK;
 }
 
+/* ---- meshes ------------------------------------------------------------ */
+
+/* The mesh file's path: as written when absolute, else beside the scene
+ * file (the folder of its name; the current one for standard input),
+ * never "-" (standard input is the scene's, not a mesh). */
+static char *mesh_path(const parser *p, const scene_word *word)
+{
+    const char *name = p->lx.name;
+    const char *slash = strrchr(name, '/');
+    const char *dir_text = slash != NULL ? name : "./";
+    size_t dir = word->text[0] == '/'  ? 0
+                 : slash != NULL       ? (size_t)(slash - name) + 1
+                                       : 2;
+    char *path = malloc(dir + word->length + 1);
+    if (path == NULL)
+        return NULL;
+    memcpy(path, dir_text, dir);
+    memcpy(path + dir, word->text, word->length);
+    path[dir + word->length] = '\0';
+    return path;
+}
+
+/* The words after the file: scale, rotate, translate, normals, and the
+ * material last. */
+static rayo_status mesh_options(parser *p, rayo_mesh_placement *placement,
+                                unsigned *material)
+{
+    static const char options[] = "scale, rotate, translate, normals, "
+                                  "material or the end of the 'mesh' line";
+    scene_word word;
+    char text[WORD_SHOW + 32];
+    rayo_status status = RAYO_OK;
+    *material = 0;
+    while (status == RAYO_OK) {
+        size_t column = 0;
+        if (!scene_lexer_word(&p->lx, &word))
+            return RAYO_OK;
+        if (scene_word_is(&word, "scale")) {
+            status = need_number(p, "the mesh's scale", &placement->scale,
+                                 &column);
+            if (status == RAYO_OK && !(placement->scale > 0.0))
+                return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
+                                        "scale %g is not accepted; expected "
+                                        "a number > 0",
+                                        placement->scale);
+        } else if (scene_word_is(&word, "rotate")) {
+            status = need_vector(p, "the mesh's rotation (degrees)",
+                                 &placement->rotate, NULL);
+        } else if (scene_word_is(&word, "translate")) {
+            status = need_vector(p, "the mesh's translation",
+                                 &placement->translate, NULL);
+        } else if (scene_word_is(&word, "normals")) {
+            status = need_word(p, &word, "file or computed");
+            if (status != RAYO_OK)
+                return status;
+            if (scene_word_is(&word, "file") ||
+                scene_word_is(&word, "computed"))
+                placement->computed_normals =
+                    scene_word_is(&word, "computed");
+            else
+                return scene_lexer_fail(&p->lx, word.column,
+                                        RAYO_ERR_FORMAT,
+                                        "%s; expected file or computed",
+                                        found(&word, 1, text, sizeof text));
+        } else if (scene_word_is(&word, "material")) {
+            /* object_material reads the keyword again. */
+            p->lx.pos = (size_t)(word.text - p->lx.text);
+            return object_material(p, "mesh", material);
+        } else {
+            return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                    "%s; expected %s",
+                                    found(&word, 1, text, sizeof text),
+                                    options);
+        }
+    }
+    return status;
+}
+
+static rayo_status parse_mesh(parser *p)
+{
+    scene_word word;
+    rayo_mesh_placement placement;
+    rayo_mesh mesh;
+    rayo_mesh_report report;
+    unsigned material;
+    size_t left_out = 0;
+    rayo_error inner;
+    char *path;
+    rayo_status status = need_word(p, &word, "a mesh file (STL or OBJ)");
+    if (status != RAYO_OK)
+        return status;
+    rayo_mesh_placement_init(&placement);
+    path = mesh_path(p, &word);
+    if (path == NULL)
+        return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_NOMEM,
+                                "out of memory");
+    status = mesh_options(p, &placement, &material);
+    if (status == RAYO_OK &&
+        rayo_mesh_read_file(path, &mesh, &report, &inner) != RAYO_OK)
+        status = scene_lexer_fail(&p->lx, word.column, inner.status, "%s",
+                                  inner.message);
+    free(path);
+    if (status != RAYO_OK)
+        return status;
+    if (rayo_scene_add_mesh(p->file->scene, &mesh, &placement, material,
+                            &left_out, &inner) != RAYO_OK)
+        status = scene_failed(p, &inner);
+    p->file->mesh_triangles += mesh.count - left_out;
+    p->file->mesh_left_out += left_out;
+    p->file->mesh_ignored += report.ignored;
+    rayo_mesh_free(&mesh);
+    return status;
+}
+
 /* ---- statements ------------------------------------------------------ */
 
 typedef struct statement {
@@ -789,6 +903,7 @@ static const statement statements[] = {
     {"background", parse_background}, {"ambient", parse_ambient},
     {"light", parse_light},       {"material", parse_material},
     {"plane", parse_plane},       {"triangle", parse_triangle},
+    {"mesh", parse_mesh},
 };
 #define STATEMENT_COUNT (sizeof statements / sizeof statements[0])
 
@@ -804,7 +919,7 @@ static rayo_status parse_statement(parser *p)
     return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
                             "unknown keyword %s; expected camera, shade, "
                             "samples, depth, background, ambient, light, "
-                            "material, sphere, plane or triangle",
+                            "material, sphere, plane, triangle or mesh",
                             quoted(&word, text, sizeof text));
 }
 
@@ -817,6 +932,9 @@ static void file_defaults(rayo_scene_file *file)
     file->shade_given = 0;
     file->samples = 1;
     file->depth = 5;
+    file->mesh_triangles = 0;
+    file->mesh_left_out = 0;
+    file->mesh_ignored = 0;
 }
 
 static rayo_status parse_all(parser *p)

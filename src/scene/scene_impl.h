@@ -31,6 +31,8 @@ typedef struct scene_plane {
 
 typedef struct scene_triangle {
     rayo_triangle shape;
+    rayo_vec3 normal; /* unit; the corners' (rayo_triangle_normal) or a
+                         mesh file's own */
     uint32_t object;
     uint32_t material;
 } scene_triangle;

@@ -37,13 +37,13 @@ is "$status" 0 "bare machine: exit 0"
 is "$(cat "$TMP/err")" "rayo: updating the package lists (apt's output: $TMP/deps.log)
 rayo: installing build tools: gcc libc6-dev make pkg-config
 rayo: installing libpng's headers: libpng-dev
-rayo: installing test tools: netpbm perl jq python3
+rayo: installing test tools: netpbm perl jq python3 admesh
 rayo: installing the grader's sandbox: bubblewrap" "one line per package set"
 is "$(wc -c <"$TMP/out" | tr -d ' ')" 0 "nothing on stdout"
 is "$(grep -c noise "$TMP/deps.log")" 250 "apt's output is in the log (an update, four installs)"
 is "$(cut -d' ' -f1-3 "$APT_CALLS" | sort -u)" "-o DPkg::Lock::Timeout=600 install
 -o DPkg::Lock::Timeout=600 update" "every apt-get waits for the lock (600 s)"
-grep -q "install -y --no-install-recommends netpbm perl jq python3" "$APT_CALLS"
+grep -q "install -y --no-install-recommends netpbm perl jq python3 admesh" "$APT_CALLS"
 ok $? "a set's packages in one apt-get install"
 : >"$APT_CALLS"
 status=0
