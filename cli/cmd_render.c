@@ -76,13 +76,14 @@ static void print_help(void)
         "                         (or at the scene's look-at point)\n"
         "      --shade MODE       hit (black/white, PBM), course-gray (PGM), "
         "course-color\n"
-        "                         (PPM) or phong (PPM); default: the "
-        "scene's 'shade',\n"
-        "                         else phong for a scene, hit without one\n"
+        "                         (PPM), phong (PPM) or course-tp1 (PPM); "
+        "default: the\n"
+        "                         scene's 'shade', else phong for a scene, "
+        "hit without one\n"
         "      --samples N        N x N rays per pixel, stratified (1-16; "
         "default 1)\n"
-        "      --depth N          phong: mirror bounces followed (0-64; "
-        "default 5)\n"
+        "      --depth N          phong, course-tp1: mirror bounces followed\n"
+        "                         (0-64; default 5)\n"
         "      --sphere CX,CY,CZ,R\n"
         "                         a sphere (repeatable; R > 0); the first "
         "replaces the\n"
@@ -204,7 +205,7 @@ static int parse_request(int argc, char **argv, render_request *req)
             if (rayo_shade_mode_parse(optarg, &req->shade, NULL) != RAYO_OK)
                 return cli_usage_error("--shade: '%s' is not accepted; "
                                        "expected hit, course-gray, "
-                                       "course-color or phong",
+                                       "course-color, phong or course-tp1",
                                        optarg);
             req->shade_given = 1;
             break;
@@ -277,6 +278,7 @@ static rayo_format netpbm_for_shade(rayo_shade_mode mode)
         return RAYO_FORMAT_PGM;
     case RAYO_SHADE_COURSE_COLOR:
     case RAYO_SHADE_PHONG:
+    case RAYO_SHADE_COURSE_TP1:
         return RAYO_FORMAT_PPM;
     }
     return RAYO_FORMAT_PBM;
@@ -400,6 +402,7 @@ static void render_settings(const render_request *req,
     if (req->scene_path != NULL) {
         options->samples = req->file.samples;
         options->depth = req->file.depth;
+        options->tp1 = req->file.tp1;
     }
     if (req->samples != 0)
         options->samples = (unsigned)req->samples;

@@ -28,12 +28,27 @@ typedef enum rayo_shade_mode {
     RAYO_SHADE_HIT,          /* bilevel: black (1) where the ray hits */
     RAYO_SHADE_COURSE_GRAY,  /* gray: the course's scene 2 model, exactly */
     RAYO_SHADE_COURSE_COLOR, /* RGB: the course's scene 3 model, exactly */
-    RAYO_SHADE_PHONG         /* RGB: ambient, diffuse, specular, shadows,
+    RAYO_SHADE_PHONG,        /* RGB: ambient, diffuse, specular, shadows,
                                 mirror reflections */
+    RAYO_SHADE_COURSE_TP1    /* RGB: the course's TP1 statement's Phong
+                                with reflections, exactly */
 } rayo_shade_mode;
 
 /*
- * "hit", "course-gray", "course-color" or "phong" into *mode;
+ * How course-tp1 reads what the TP1 statement leaves open
+ * (docs/shading.md); the defaults are what most submissions do.
+ */
+typedef struct rayo_tp1_reading {
+    int tinted_reflection; /* 1: C' = (C + kr I) (x) M; 0: C (x) M + kr I */
+    int shadows_to_light;  /* 1: only what lies between P and a point
+                              light shadows it; 0: anything in the
+                              light's direction, as the statement words */
+    double epsilon;        /* how far past P reflected and shadow rays
+                              start; 1e-6, the statement's example */
+} rayo_tp1_reading;
+
+/*
+ * "hit", "course-gray", "course-color", "phong" or "course-tp1" into *mode;
  * RAYO_ERR_INVALID (naming the accepted names) for anything else.
  */
 rayo_status rayo_shade_mode_parse(const char *name, rayo_shade_mode *mode,
@@ -41,6 +56,10 @@ rayo_status rayo_shade_mode_parse(const char *name, rayo_shade_mode *mode,
 
 /* The name rayo_shade_mode_parse accepts for mode. */
 const char *rayo_shade_mode_name(rayo_shade_mode mode);
+
+/* The TP1 readings' defaults: untinted reflections, shadows from
+ * anything in the light's direction, epsilon 1e-6. */
+void rayo_tp1_reading_init(rayo_tp1_reading *reading);
 
 /* Largest --samples N (N x N rays per pixel) and reflection depth. */
 #define RAYO_MAX_SAMPLES 16u
@@ -75,10 +94,11 @@ typedef struct rayo_render_options {
     void *progress_context;
     rayo_cancel_fn cancel; /* may be NULL */
     void *cancel_context;
+    rayo_tp1_reading tp1; /* course-tp1 only */
 } rayo_render_options;
 
 /* Hit shading, 1 sample, depth 5, one thread per CPU, no progress or
- * cancel callback. */
+ * cancel callback, the TP1 readings' defaults. */
 void rayo_render_options_init(rayo_render_options *options);
 
 /* The layout of the rows this camera and shading mode produce. */

@@ -44,6 +44,7 @@ typedef struct rayo_scene_file {
     int shade_given;
     unsigned samples;         /* 1 unless a samples line */
     unsigned depth;           /* 5 unless a depth line */
+    rayo_tp1_reading tp1;     /* the shade course-tp1 line's readings */
     /* What the mesh lines did: triangles added, triangles left out
        (corners on one line once placed), OBJ statements not used (vn,
        vt, g, ...); for the command's warnings. */

@@ -129,6 +129,7 @@ void rayo_render_options_init(rayo_render_options *options)
     options->progress_context = NULL;
     options->cancel = NULL;
     options->cancel_context = NULL;
+    rayo_tp1_reading_init(&options->tp1);
 }
 
 static uint32_t band_rows(uint32_t rows, uint32_t first, uint32_t per_band)

@@ -126,6 +126,7 @@ rayo_image_info rayo_render_image_info(const rayo_camera *camera,
         return rayo_image_info_gray8(camera->width, camera->height);
     case RAYO_SHADE_COURSE_COLOR:
     case RAYO_SHADE_PHONG:
+    case RAYO_SHADE_COURSE_TP1:
         return rayo_image_info_rgb8(camera->width, camera->height);
     }
     return rayo_image_info_bit(camera->width, camera->height);

@@ -11,7 +11,8 @@
  * then turned into a sample of the mode's layout:
  *   hit           black when at least half the rays hit;
  *   course-gray   the integer part of the level (already clamped to 255);
- *   course-color  the integer part of 255 c (c already clamped to 1);
+ *   course-color, course-tp1
+ *                 the integer part of 255 c (c already clamped to 1);
  *   phong         255 c rounded to the nearest level, c clamped to [0, 1].
  * It knows nothing of what a model computes; shade_*.c do.  Before each
  * ray it polls the render's stop (render_stop.h): one ray of the slowest
@@ -36,6 +37,9 @@ static rayo_vec3 shade_one(const rayo_scene *scene,
         return rayo_shade_course_color(scene, ray);
     case RAYO_SHADE_PHONG:
         return rayo_shade_phong(scene, ray, options->depth);
+    case RAYO_SHADE_COURSE_TP1:
+        return rayo_shade_course_tp1(scene, ray, options->depth,
+                                     &options->tp1);
     }
     return rayo_vec3_make(rayo_scene_hit_any(scene, ray, 0.0), 0, 0);
 }
@@ -147,6 +151,7 @@ void rayo_render_row_shaded(const rayo_camera *camera,
             out[i] = (unsigned char)c.x;
             break;
         case RAYO_SHADE_COURSE_COLOR:
+        case RAYO_SHADE_COURSE_TP1:
             rgb[0] = course_byte(c.x);
             rgb[1] = course_byte(c.y);
             rgb[2] = course_byte(c.z);

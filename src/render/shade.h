@@ -38,6 +38,14 @@ rayo_vec3 rayo_shade_course_color(const rayo_scene *scene,
                                   const rayo_ray *ray);
 
 /*
+ * The course's TP1 model (shade_course_tp1.c): RGB, each channel clamped
+ * to 1, reflections followed for depth bounces, read as reading says.
+ */
+rayo_vec3 rayo_shade_course_tp1(const rayo_scene *scene, const rayo_ray *ray,
+                                unsigned depth,
+                                const rayo_tp1_reading *reading);
+
+/*
  * The general model: RGB, not clamped, following mirror reflections for
  * at most depth bounces.
  */

@@ -7,7 +7,8 @@
 #include "rayo/render.h"
 
 static const char *const mode_names[] = {"hit", "course-gray",
-                                         "course-color", "phong"};
+                                         "course-color", "phong",
+                                         "course-tp1"};
 #define MODE_COUNT (sizeof mode_names / sizeof mode_names[0])
 
 rayo_status rayo_shade_mode_parse(const char *name, rayo_shade_mode *mode,
@@ -22,7 +23,7 @@ rayo_status rayo_shade_mode_parse(const char *name, rayo_shade_mode *mode,
     }
     return rayo_error_set(err, RAYO_ERR_INVALID,
                           "shading mode '%s' is not known; expected hit, "
-                          "course-gray, course-color or phong",
+                          "course-gray, course-color, phong or course-tp1",
                           name);
 }
 

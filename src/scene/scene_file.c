@@ -382,6 +382,39 @@ static rayo_status parse_camera(parser *p)
 
 /* ---- render settings ------------------------------------------------- */
 
+/* course-tp1's readings of its statement: tinted-reflections,
+ * shadows-to-light, epsilon E (docs/shading.md). */
+static rayo_status tp1_readings(parser *p, rayo_tp1_reading *reading)
+{
+    scene_word word;
+    while (scene_lexer_word(&p->lx, &word)) {
+        size_t column = word.column;
+        if (scene_word_is(&word, "tinted-reflections")) {
+            reading->tinted_reflection = 1;
+        } else if (scene_word_is(&word, "shadows-to-light")) {
+            reading->shadows_to_light = 1;
+        } else if (scene_word_is(&word, "epsilon")) {
+            rayo_status status = need_number(p, "epsilon", &reading->epsilon,
+                                             &column);
+            if (status != RAYO_OK)
+                return status;
+            if (!(reading->epsilon >= 0.0 && reading->epsilon <= 1.0))
+                return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
+                                        "epsilon %g is not accepted; "
+                                        "expected a number from 0 to 1",
+                                        reading->epsilon);
+        } else {
+            char text[WORD_SHOW + 32];
+            return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
+                                    "%s; expected tinted-reflections, "
+                                    "shadows-to-light, epsilon or the end "
+                                    "of the 'shade' line",
+                                    found(&word, 1, text, sizeof text));
+        }
+    }
+    return RAYO_OK;
+}
+
 static rayo_status parse_shade(parser *p)
 {
     scene_word word;
@@ -389,7 +422,7 @@ static rayo_status parse_shade(parser *p)
     rayo_status status = once(p, &p->shade_line, "shade");
     if (status == RAYO_OK)
         status = need_word(p, &word, "a shading mode (hit, course-gray, "
-                                     "course-color or phong)");
+                                     "course-color, phong or course-tp1)");
     if (status != RAYO_OK)
         return status;
     if (word.length < sizeof name) {
@@ -401,9 +434,12 @@ static rayo_status parse_shade(parser *p)
     if (rayo_shade_mode_parse(name, &p->file->shade, NULL) != RAYO_OK)
         return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
                                 "%s; expected a shading mode: hit, "
-                                "course-gray, course-color or phong",
+                                "course-gray, course-color, phong or "
+                                "course-tp1",
                                 found(&word, 1, text, sizeof text));
     p->file->shade_given = 1;
+    if (p->file->shade == RAYO_SHADE_COURSE_TP1)
+        return tp1_readings(p, &p->file->tp1);
     return need_end(p, "shade", NULL);
 }
 
@@ -932,6 +968,7 @@ static void file_defaults(rayo_scene_file *file)
     file->shade_given = 0;
     file->samples = 1;
     file->depth = 5;
+    rayo_tp1_reading_init(&file->tp1);
     file->mesh_triangles = 0;
     file->mesh_left_out = 0;
     file->mesh_ignored = 0;

@@ -15,7 +15,7 @@ bad() {
     ok "$([ ! -e "$OUT" ]; echo $?)" "$name: no output file"
 }
 
-bad "unknown keyword" "1:1: unknown keyword 'sphear'; expected camera, shade, samples, depth, background, ambient, light, material, sphere, plane or triangle$" \
+bad "unknown keyword" "1:1: unknown keyword 'sphear'; expected camera, shade, samples, depth, background, ambient, light, material, sphere, plane, triangle or mesh$" \
     'sphear 0 0 1 1\n'
 bad "unknown keyword after comments" "3:3: unknown keyword 'cube'" \
     '# a comment\n\n  cube 1 # another\n'
@@ -55,7 +55,7 @@ bad "unknown camera setting" "1:8: found 'zoom'; expected size, width, height, f
     'camera zoom 2\n'
 bad "camera looking at itself" "1:1: look-at point equals the camera origin" \
     'camera origin 1 2 3 look-at 1 2 3\n'
-bad "unknown shading mode" "1:7: found 'gouraud'; expected a shading mode: hit, course-gray, course-color or phong$" \
+bad "unknown shading mode" "1:7: found 'gouraud'; expected a shading mode: hit, course-gray, course-color, phong or course-tp1$" \
     'shade gouraud\n'
 bad "samples out of range" "1:9: the samples per pixel side 17 is out of range; expected 1 to 16$" \
     'samples 17\n'
@@ -101,7 +101,7 @@ ok "$([ ! -e "$OUT" ]; echo $?)" "no output file after any refused scene"
 printf 'sphere 0 0 3 1\n' >"$S"
 expect_usage_error "--sphere with a scene" "--sphere: cannot be combined with the scene file" render "$S" --sphere 0,0,1,1
 expect_usage_error "two scene files" "unexpected argument 'other.scene'" render "$S" other.scene
-expect_usage_error "unknown --shade" "--shade: 'flat' is not accepted; expected hit, course-gray, course-color or phong" render "$S" --shade flat
+expect_usage_error "unknown --shade" "--shade: 'flat' is not accepted; expected hit, course-gray, course-color, phong or course-tp1" render "$S" --shade flat
 expect_usage_error "--samples 0" "--samples: '0' is out of range; expected 1 to 16" render "$S" --samples 0
 expect_usage_error "PGM for a phong render" "--output: '$TMP/x.pgm' is PGM, which cannot hold a phong render; expected .ppm, .png or .bmp" render "$S" -o "$TMP/x.pgm"
 expect_usage_error "PPM for a hit render" "--format: 'ppm' is not accepted; expected pbm, png or bmp for a hit render" render "$S" --shade hit --format ppm

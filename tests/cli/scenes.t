@@ -122,6 +122,16 @@ for n in showcase room; do
     cmp -s "$TMP/a.pnm" "$TMP/b.pnm"
     ok $? "docs/images/$n.png is the render of examples/$n.scene, --samples 3"
 done
+# And the TP1 example (its mesh found beside it), in course-tp1.
+if [ "${RAYO_VALGRIND:-0}" = 1 ]; then
+    ok 0 "docs/images/tp1.png # SKIP too slow under valgrind"
+else
+    rayo render "$EX/tp1.scene" -o "$TMP/tp1.png"
+    pngtopnm "$TMP/tp1.png" >"$TMP/a.pnm"
+    pngtopnm "$RAYO_SOURCE/docs/images/tp1.png" >"$TMP/b.pnm"
+    cmp -s "$TMP/a.pnm" "$TMP/b.pnm"
+    ok $? "docs/images/tp1.png is the render of examples/tp1.scene"
+fi
 # The example at the top of docs/scene-format.md is a valid scene.
 awk '/^```$/ && !done { if (inb) { done = 1; inb = 0 } else inb = 1; next } inb' \
     "$RAYO_SOURCE/docs/scene-format.md" >"$TMP/doc.scene"
