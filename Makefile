@@ -29,14 +29,17 @@ AR ?= ar
 # installed on a fresh machine.
 PNG_CFLAGS = $(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null)
 PNG_LIBS = $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null || echo -lpng)
+JPEG_CFLAGS = $(shell $(PKG_CONFIG) --cflags libjpeg 2>/dev/null)
+JPEG_LIBS = $(shell $(PKG_CONFIG) --libs libjpeg 2>/dev/null || echo -ljpeg)
 
 OPT ?= -O2 -g
 WARNINGS := -Wall -Wextra -Werror -pedantic -Wshadow -Wstrict-prototypes \
             -Wmissing-prototypes -Wformat=2
 CFLAGS ?=
-ALL_CFLAGS = -std=c11 $(OPT) $(WARNINGS) -Iinclude $(PNG_CFLAGS) $(CFLAGS) \
+ALL_CFLAGS = -std=c11 $(OPT) $(WARNINGS) -Iinclude $(PNG_CFLAGS) \
+              $(JPEG_CFLAGS) $(CFLAGS) \
               -MMD -MP
-LDLIBS = $(PNG_LIBS) -lpthread -lm
+LDLIBS = $(PNG_LIBS) $(JPEG_LIBS) -lpthread -lm
 
 LIB_SRC := $(sort $(shell find src -name '*.c'))
 CLI_SRC := $(sort $(wildcard cli/*.c))
@@ -222,8 +225,9 @@ clean:
 # libclang-rt-*-dev-wasm32) into $(BUILD)/web/, a static site.  libpng,
 # threads and files are the browser's business there: the library's
 # sources build unchanged against web/wasm/include (pthread.h, png.h),
-# with src/formats/png_read.c and src/io/output.c (and output_target.c,
-# its replacing of files) replaced by web/wasm/ files, and src/grade/
+# with src/formats/png_read.c, jpeg_read.c and jpeg_write.c, and
+# src/io/output.c (and output_target.c, its replacing of files) replaced
+# by web/wasm/ files, and src/grade/
 # (which runs compilers) left out.  `make
 # check-web` drives Chromium with Playwright (tests/web/); it skips when
 # either is missing, and `make check` runs it when Chromium is installed.
@@ -232,8 +236,8 @@ WASM_CC ?= clang
 WASM_CFLAGS = --target=wasm32-wasi -std=c11 -O2 $(WARNINGS) \
               -Wno-gnu-statement-expression -Iweb/wasm/include -Iinclude \
               -MMD -MP
-WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/io/output.c \
-                 src/io/output_target.c src/grade/%,$(LIB_SRC))
+WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/formats/jpeg_%.c \
+                 src/io/output.c src/io/output_target.c src/grade/%,$(LIB_SRC))
 WASM_SRC := $(WASM_LIB_SRC) $(sort $(wildcard web/wasm/*.c))
 WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o)
 WEB_ASSETS := $(sort $(wildcard web/*.html web/*.js web/*.css))

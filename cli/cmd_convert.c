@@ -24,6 +24,7 @@ typedef struct convert_request {
     const char *output;
     const char *format; /* NULL: from the output's name */
     int plain, raw;     /* --plain, --raw; neither: the input's encoding */
+    unsigned long quality; /* --quality, JPEG: 0 for libjpeg's 90 */
     int verbose;
     char course_path[4096]; /* IN as course:NAME, resolved */
 } convert_request;
@@ -32,11 +33,11 @@ static void print_help(void)
 {
     printf(
         "usage: rayo convert [OPTIONS] IN OUT\n\n"
-        "Reads IN (PBM, PGM, PPM plain or raw, or PNG; the format is "
-        "recognised from\nthe content) and writes it to OUT in the format "
-        "of OUT's extension (.pbm,\n.pgm, .ppm, .png) or of --format.  "
-        "'-' is standard input or output; IN may be course:ej1, course:ej2 "
-        "or course:ej3,\nthe course's reference images.\n\n"
+        "Reads IN (PBM, PGM, PPM plain or raw, PNG, BMP or JPEG; the format "
+        "is\nrecognised from the content) and writes it to OUT in the format "
+        "of OUT's\nextension (.pbm, .pgm, .ppm, .png, .bmp, .jpg) or of "
+        "--format.  '-' is\nstandard input or output; IN may be course:ej1, "
+        "course:ej2 or course:ej3,\nthe course's reference images.\n\n"
         "When the target cannot hold the image as it is, it is converted:\n"
         "  to PBM  black where the pixel is darker than half the maximum\n"
         "          (colour: 2(299r+587g+114b) < 1000 maxval)\n"
@@ -48,17 +49,21 @@ static void print_help(void)
         "  to BMP  colour as 24 bits (B, G, R, rows bottom up, as the "
         "course's TP1);\n"
         "          gray and bilevel through a palette of 8 and 1 bits\n"
+        "  to JPEG colour as colour, gray and bilevel as gray; lossy "
+        "(--quality)\n"
         "Transparent PNG pixels are composited over white.\n\n"
         "options:\n"
-        "      --format FMT   pbm, pgm, ppm, png or bmp; needed for a '-' OUT "
-        "unless the\n"
-        "                     Netpbm format that holds the image as it is "
-        "will do\n"
-        "                     (PBM bilevel, PGM gray, PPM colour)\n"
+        "      --format FMT   pbm, pgm, ppm, png, bmp or jpeg; needed for a "
+        "'-' OUT\n"
+        "                     unless the Netpbm format that holds the image "
+        "as it is\n"
+        "                     will do (PBM bilevel, PGM gray, PPM colour)\n"
         "      --plain        plain Netpbm (P1-P3, ASCII)\n"
         "      --raw          raw Netpbm (P4-P6); without either, a Netpbm "
         "input's\n"
-        "                     encoding is kept, and a PNG or BMP becomes raw\n"
+        "                     encoding is kept, and a PNG, BMP or JPEG "
+        "becomes raw\n"
+        "      --quality N    JPEG quality, 1-100 (default 90)\n"
         "  -v, --verbose      on stderr: what was read (format, size, "
         "maxval, bytes\n"
         "                     after the image) and what was written\n"
@@ -75,6 +80,7 @@ static int parse_request(int argc, char **argv, convert_request *req)
         {"format", required_argument, NULL, 'F'},
         {"plain", no_argument, NULL, 'p'},
         {"raw", no_argument, NULL, 'r'},
+        {"quality", required_argument, NULL, 'Q'},
         {"verbose", no_argument, NULL, 'v'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
@@ -91,6 +97,10 @@ static int parse_request(int argc, char **argv, convert_request *req)
             break;
         case 'r':
             req->raw = 1;
+            break;
+        case 'Q':
+            if (!cli_parse_uint("--quality", optarg, 1, 100, &req->quality))
+                return CLI_EXIT_USAGE;
             break;
         case 'v':
             req->verbose = 1;
@@ -121,7 +131,7 @@ static int choose_format(const convert_request *req,
     if (req->format != NULL) {
         if (rayo_format_parse(req->format, format, &err) != RAYO_OK)
             return cli_usage_error("--format: '%s' is not a format; expected "
-                                   "pbm, pgm, ppm, png or bmp",
+                                   "pbm, pgm, ppm, png, bmp or jpeg",
                                    req->format);
     } else if (info != NULL) {
         *format = rayo_format_netpbm_for(info);
@@ -177,6 +187,7 @@ static rayo_status fit_layout(const rayo_image *image, rayo_format format,
         break;
     case RAYO_FORMAT_PNG:
     case RAYO_FORMAT_BMP:
+    case RAYO_FORMAT_JPEG:
         return RAYO_OK;
     }
     if (status == RAYO_OK && converted->pixels != NULL)
@@ -249,6 +260,8 @@ static int convert(const convert_request *req)
     /* Only a '-' OUT without --format waits for the image to decide. */
     int decided = req->format != NULL || strcmp(req->output, "-") != 0;
     memset(&converted, 0, sizeof converted);
+    memset(&options, 0, sizeof options);
+    options.quality = (unsigned)req->quality;
     rayo_error_clear(&err);
     if (decided) {
         exit_status = choose_format(req, NULL, &options.format);

@@ -31,6 +31,7 @@ typedef struct render_request {
     const char *output;  /* "-" for standard output */
     const char *format;  /* NULL: from the output's extension */
     int raw;
+    unsigned long quality; /* --quality, JPEG: 0 for libjpeg's 90 */
     unsigned long threads;
     int quiet; /* --quiet: no progress bar */
     int preview; /* --preview: the image in the terminal afterwards */
@@ -92,12 +93,13 @@ static void print_help(void)
         "the default);\n"
         "                         a file appears whole or not at all\n"
         "      --format FMT       the mode's Netpbm format (pbm, pgm, ppm), "
-        "png or bmp\n"
+        "png, bmp or jpeg\n"
         "                         (default: from FILE's extension, else "
         "the mode's\n"
         "                         Netpbm format)\n"
         "      --raw              raw Netpbm (P4-P6) instead of plain "
         "(P1-P3)\n"
+        "      --quality N        JPEG quality, 1-100 (default 90)\n"
         "  -j, --threads N        threads reading the scene, building its "
         "hierarchy\n"
         "                         and rendering (default: one per CPU)\n"
@@ -131,6 +133,7 @@ static int parse_request(int argc, char **argv, render_request *req)
         {"output", required_argument, NULL, 'o'},
         {"format", required_argument, NULL, 'F'},
         {"raw", no_argument, NULL, 'r'},
+        {"quality", required_argument, NULL, 'Q'},
         {"threads", required_argument, NULL, 'j'},
         {"quiet", no_argument, NULL, 'q'},
         {"preview", no_argument, NULL, 'P'},
@@ -192,6 +195,10 @@ static int parse_request(int argc, char **argv, render_request *req)
             break;
         case 'F':
             req->format = optarg;
+            break;
+        case 'Q':
+            if (!cli_parse_uint("--quality", optarg, 1, 100, &req->quality))
+                return CLI_EXIT_USAGE;
             break;
         case 'r':
             req->raw = 1;
@@ -287,7 +294,7 @@ static rayo_format netpbm_for_shade(rayo_shade_mode mode)
 static const char *upper_name(rayo_format format)
 {
     static const char *const names[] = {"PBM", "PGM", "PPM", "PNG",
-                                        "BMP"};
+                                        "BMP", "JPEG"};
     return names[format];
 }
 
@@ -308,7 +315,7 @@ static int choose_format(const render_request *req, rayo_format *format)
         if (rayo_format_parse(req->format, format, &err) != RAYO_OK ||
             (*format != netpbm && rayo_format_is_netpbm(*format)))
             return cli_usage_error("--format: '%s' is not accepted; expected "
-                                   "%s, png or bmp for a %s render",
+                                   "%s, png, bmp or jpeg for a %s render",
                                    req->format, ext,
                                    rayo_shade_mode_name(mode));
     } else if (strcmp(req->output, "-") == 0 ||
@@ -317,13 +324,13 @@ static int choose_format(const render_request *req, rayo_format *format)
         *format = netpbm;
     } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
         return cli_usage_error("--output: cannot tell the format of '%s' "
-                               "from its extension; expected .%s, .png or "
-                               ".bmp, "
+                               "from its extension; expected .%s, .png, "
+                               ".bmp or .jpg, "
                                "or give --format",
                                req->output, ext);
     } else if (*format != netpbm && rayo_format_is_netpbm(*format)) {
         return cli_usage_error("--output: '%s' is %s, which cannot hold a %s "
-                               "render; expected .%s, .png or .bmp",
+                               "render; expected .%s, .png, .bmp or .jpg",
                                req->output, upper_name(*format),
                                rayo_shade_mode_name(mode), ext);
     }
@@ -496,6 +503,7 @@ int cli_render(int argc, char **argv)
         return exit_status < 0 ? CLI_EXIT_OK : exit_status;
     }
     write_options.plain = !req->raw;
+    write_options.quality = (unsigned)req->quality;
     if (req->scene_path != NULL)
         warn_about_scene(req);
 

@@ -1,6 +1,6 @@
 /*
  * writer.h - streaming image writers: Netpbm (PBM, PGM, PPM; plain and
- * raw), PNG and BMP.
+ * raw), PNG, BMP and JPEG.
  *
  * A writer is opened with the image's header, fed rows from top to bottom
  * (as many at a time as the caller likes) and finished; it never needs the
@@ -20,6 +20,9 @@
  *        gray palette; BIT as 1 bit through a white, black palette;
  *        samples over 8 bits scaled to 0-255.  Rows are kept until the
  *        image is finished (the file wants the bottom row first).
+ *   JPEG three channels as colour, one channel and BIT as gray (bilevel
+ *        0 and 255), samples over 8 bits scaled; lossy, at the options'
+ *        quality.
  * Converting between layouts (say colour to bilevel) is not a writer's
  * job.
  */
@@ -42,10 +45,12 @@ typedef enum rayo_format {
     RAYO_FORMAT_PGM,
     RAYO_FORMAT_PPM,
     RAYO_FORMAT_PNG,
-    RAYO_FORMAT_BMP
+    RAYO_FORMAT_BMP,
+    RAYO_FORMAT_JPEG
 } rayo_format;
 
-/* "pbm", "pgm", "ppm", "png", "bmp"; RAYO_ERR_INVALID for anything else. */
+/* "pbm", "pgm", "ppm", "png", "bmp", "jpeg" (or "jpg"); RAYO_ERR_INVALID
+ * for anything else. */
 rayo_status rayo_format_parse(const char *name, rayo_format *format,
                               rayo_error *err);
 
@@ -56,10 +61,10 @@ rayo_status rayo_format_parse(const char *name, rayo_format *format,
 rayo_status rayo_format_from_path(const char *path, rayo_format *format,
                                   rayo_error *err);
 
-/* "pbm", "pgm", "ppm", "png" or "bmp". */
+/* "pbm", "pgm", "ppm", "png", "bmp" or "jpeg". */
 const char *rayo_format_name(rayo_format format);
 
-/* 1 for PBM, PGM and PPM (plain or raw), 0 for PNG and BMP. */
+/* 1 for PBM, PGM and PPM (plain or raw), 0 for PNG, BMP and JPEG. */
 int rayo_format_is_netpbm(rayo_format format);
 
 /* The format that holds this layout without loss (PBM, PGM or PPM). */
@@ -68,6 +73,7 @@ rayo_format rayo_format_netpbm_for(const rayo_image_info *info);
 typedef struct rayo_write_options {
     rayo_format format;
     int plain; /* Netpbm: 1 = plain (P1-P3, ASCII), 0 = raw (P4-P6) */
+    unsigned quality; /* JPEG only: 1 to 100; anything else is 90 */
 } rayo_write_options;
 
 typedef struct rayo_writer rayo_writer;

@@ -59,6 +59,7 @@ static rayo_status check_layout(const rayo_writer *writer, rayo_error *err)
         break;
     case RAYO_FORMAT_PNG:
     case RAYO_FORMAT_BMP:
+    case RAYO_FORMAT_JPEG:
         break;
     }
     return rayo_error_set(err, RAYO_ERR_INVALID,

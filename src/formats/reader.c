@@ -1,8 +1,8 @@
 /*
  * reader.c - the public face of the image readers: opens the source,
  * recognises the format from its first bytes (Netpbm magic, the PNG
- * signature or BMP's "BM"), hands over to pnm_read.c, png_read.c or
- * bmp_read.c, and counts what
+ * signature, BMP's "BM" or JPEG's FF D8), hands over to pnm_read.c,
+ * png_read.c, bmp_read.c or jpeg_read.c, and counts what
  * follows the image (pnm_read.c also says what a Netpbm file's tail
  * holds).
  *
@@ -26,7 +26,7 @@ static rayo_status bad_magic(const rayo_source *src,
         return rayo_error_set(err, RAYO_ERR_FORMAT,
                               "%s: byte 0: found an empty file; expected a "
                               "Netpbm magic number (P1-P6), a PNG "
-                              "signature or a BMP's \"BM\"",
+                              "signature, a BMP's \"BM\" or a JPEG's ff d8",
                               src->name);
     for (i = 0; i < count && i < 4; i++)
         used += (size_t)snprintf(found + used, sizeof found - used,
@@ -37,8 +37,8 @@ static rayo_status bad_magic(const rayo_source *src,
                                  bytes[i]);
     return rayo_error_set(err, RAYO_ERR_FORMAT,
                           "%s: byte 0: found \"%s\"; expected a Netpbm magic "
-                          "number (P1-P6), a PNG signature or a BMP's "
-                          "\"BM\"",
+                          "number (P1-P6), a PNG signature, a BMP's "
+                          "\"BM\" or a JPEG's ff d8",
                           src->name, found);
 }
 
@@ -54,6 +54,10 @@ static rayo_status read_image(rayo_source *src, int clamp,
         return rayo_pnm_read(src, magic[1], clamp, image, report, err);
     if (src->read_errno != 0)
         return rayo_source_end_error(src, "a magic number", err);
+    if (got == 2 && magic[0] == 0xff && magic[1] == 0xd8) {
+        report->format = RAYO_FORMAT_JPEG;
+        return rayo_jpeg_read(src, magic, image, err);
+    }
     if (got == 2 && magic[0] == 'B' && magic[1] == 'M') {
         report->format = RAYO_FORMAT_BMP;
         return rayo_bmp_read(src, image, report, err);

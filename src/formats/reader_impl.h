@@ -29,6 +29,13 @@ rayo_status rayo_png_read(rayo_source *src, rayo_image *image,
                           rayo_error *err);
 
 /*
+ * Reads a JPEG image whose first two bytes (FF D8, given) have been
+ * consumed.
+ */
+rayo_status rayo_jpeg_read(rayo_source *src, const unsigned char magic[2],
+                           rayo_image *image, rayo_error *err);
+
+/*
  * Reads a BMP image whose "BM" has been consumed; fills report's bmp_
  * fields and leaves the cursor after the last row.
  */

@@ -11,7 +11,7 @@
 #include <string.h>
 
 static const char *const format_names[] = {"pbm", "pgm", "ppm", "png",
-                                            "bmp"};
+                                            "bmp", "jpeg"};
 #define FORMAT_COUNT (sizeof format_names / sizeof format_names[0])
 
 static int equal_ignoring_case(const char *a, const char *b)
@@ -28,6 +28,10 @@ static int equal_ignoring_case(const char *a, const char *b)
 static int lookup(const char *name, rayo_format *format)
 {
     size_t i;
+    if (equal_ignoring_case(name, "jpg")) {
+        *format = RAYO_FORMAT_JPEG;
+        return 1;
+    }
     for (i = 0; i < FORMAT_COUNT; i++) {
         if (equal_ignoring_case(name, format_names[i])) {
             *format = (rayo_format)i;
@@ -43,8 +47,8 @@ rayo_status rayo_format_parse(const char *name, rayo_format *format,
     if (lookup(name, format))
         return RAYO_OK;
     return rayo_error_set(err, RAYO_ERR_INVALID,
-                          "unknown format '%s'; expected pbm, pgm, ppm, png "
-                          "or bmp",
+                          "unknown format '%s'; expected pbm, pgm, ppm, png, "
+                          "bmp or jpeg",
                           name);
 }
 
@@ -57,7 +61,8 @@ rayo_status rayo_format_from_path(const char *path, rayo_format *format,
         return RAYO_OK;
     return rayo_error_set(err, RAYO_ERR_INVALID,
                           "cannot tell the format of '%s' from its extension; "
-                          "expected .pbm, .pgm, .ppm, .png or .bmp (or give "
+                          "expected .pbm, .pgm, .ppm, .png, .bmp or .jpg "
+                          "(or give "
                           "--format)",
                           path);
 }
@@ -96,7 +101,9 @@ rayo_status rayo_writer_open(rayo_writer **result, rayo_output *out,
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     writer->ops = options->format == RAYO_FORMAT_PNG   ? &rayo_png_writer_ops
                   : options->format == RAYO_FORMAT_BMP ? &rayo_bmp_writer_ops
-                                                       : &rayo_pnm_writer_ops;
+                  : options->format == RAYO_FORMAT_JPEG
+                      ? &rayo_jpeg_writer_ops
+                      : &rayo_pnm_writer_ops;
     writer->out = out;
     writer->info = *info;
     writer->options = *options;

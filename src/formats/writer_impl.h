@@ -43,5 +43,6 @@ struct rayo_writer {
 extern const rayo_writer_ops rayo_pnm_writer_ops;
 extern const rayo_writer_ops rayo_png_writer_ops;
 extern const rayo_writer_ops rayo_bmp_writer_ops;
+extern const rayo_writer_ops rayo_jpeg_writer_ops;
 
 #endif

@@ -32,8 +32,8 @@ expect_usage_error "origin infinite" "--origin: '-inf' in '0,0,-inf' is not a fi
 expect_usage_error "unknown long option" "unknown option '--bogus'" --bogus
 expect_usage_error "unknown short option" "unknown option '-x'" -x
 expect_usage_error "missing value" "'--width' needs a value" --width
-expect_usage_error "unknown format" "--format: 'gif' is not accepted; expected pbm, png or bmp" --format gif
-expect_usage_error "unknown extension" "--output: cannot tell the format of 'out.gif' from its extension; expected .pbm, .png or .bmp, or give --format" -o out.gif
+expect_usage_error "unknown format" "--format: 'gif' is not accepted; expected pbm, png, bmp or jpeg" --format gif
+expect_usage_error "unknown extension" "--output: cannot tell the format of 'out.gif' from its extension; expected .pbm, .png, .bmp or .jpg, or give --format" -o out.gif
 expect_usage_error "no extension" "--output: cannot tell the format of 'out'" -o out
 expect_usage_error "raw with png" "--raw: applies only to PBM output, not png" --raw -o x.png
 expect_usage_error "threads zero" "--threads: '0' is out of range; expected 1 to 256" -j 0

@@ -103,6 +103,6 @@ expect_usage_error "--sphere with a scene" "--sphere: cannot be combined with th
 expect_usage_error "two scene files" "unexpected argument 'other.scene'" render "$S" other.scene
 expect_usage_error "unknown --shade" "--shade: 'flat' is not accepted; expected hit, course-gray, course-color, phong or course-tp1" render "$S" --shade flat
 expect_usage_error "--samples 0" "--samples: '0' is out of range; expected 1 to 16" render "$S" --samples 0
-expect_usage_error "PGM for a phong render" "--output: '$TMP/x.pgm' is PGM, which cannot hold a phong render; expected .ppm, .png or .bmp" render "$S" -o "$TMP/x.pgm"
-expect_usage_error "PPM for a hit render" "--format: 'ppm' is not accepted; expected pbm, png or bmp for a hit render" render "$S" --shade hit --format ppm
+expect_usage_error "PGM for a phong render" "--output: '$TMP/x.pgm' is PGM, which cannot hold a phong render; expected .ppm, .png, .bmp or .jpg" render "$S" -o "$TMP/x.pgm"
+expect_usage_error "PPM for a hit render" "--format: 'ppm' is not accepted; expected pbm, png, bmp or jpeg for a hit render" render "$S" --shade hit --format ppm
 done_testing
