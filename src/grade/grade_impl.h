@@ -57,6 +57,23 @@ rayo_status grade_write_file(const char *path, const char *text,
 rayo_status grade_read_fd(int fd, uint64_t limit, char **data, size_t *size,
                           int *cut, rayo_error *err);
 
+/* output_header.c: what an output's first bytes say it is (Netpbm's
+   magic and size, plain or raw; PNG's IHDR), read without decoding. */
+typedef struct grade_header {
+    const char *format;     /* "plain PBM", "raw PPM", "PNG", ... */
+    uint64_t width, height; /* as the header says (huge ones saturated) */
+    unsigned depth;         /* bits per sample; 0 when not said */
+} grade_header;
+/* 1 and *header filled when the output begins with a header it knows. */
+int grade_header_peek(const void *data, size_t size, grade_header *header);
+/* How many times the exercise's pixel count an output may promise and
+   still be decoded (and compared, as an image of the wrong size). */
+#define GRADE_SIZE_MARGIN 4
+/* The most pixels an output's header may promise: GRADE_SIZE_MARGIN
+   times the larger of the exercise's size and the reference's. */
+uint64_t grade_pixels_allowed(const rayo_grade_exercise *exercise,
+                              const rayo_image *reference);
+
 /* process.c: one run of a program, its limits and what became of it. */
 typedef struct grade_limits {
     double wall;          /* seconds; the process group is killed after */
