@@ -118,8 +118,10 @@ typedef struct grade_run {
     const char *program;  /* STUDENT: the built file it runs (bound
                              read-only into the sandbox at its path) */
     uint64_t out_limit;   /* bytes of standard output kept */
-    int log_fd;           /* >= 3: a pipe handed to it as this descriptor
-                             is read while it runs (valgrind's log) */
+    int log_fd;           /* >= 3: a socket handed to it as this
+                             descriptor is read while it runs (valgrind's
+                             log; grade_log_fd gives the number), and
+                             its soft RLIMIT_NOFILE lowered to it */
     int collect;          /* STUDENT: bring back the one image file
                              (.pbm .pgm .ppm .pnm) it left in its folder */
 } grade_run;
@@ -154,6 +156,10 @@ rayo_status grade_spawn(struct grade_context *ctx, const grade_run *run,
                         const grade_limits *limits, grade_captured *got,
                         rayo_error *err);
 void grade_captured_free(grade_captured *got);
+/* The descriptor for valgrind's log: below the soft RLIMIT_NOFILE the
+   grader has (so it can be placed there) and at most 1023; -1 when the
+   limit is too low for one. */
+int grade_log_fd(void);
 
 /* sandbox.c: whether the sandbox works (cached), and its command. */
 int grade_sandbox_available(char *why, size_t room);
