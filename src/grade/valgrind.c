@@ -287,13 +287,13 @@ static rayo_status report_leaks(rayo_grade_item *item, const vg_text *log,
     return status;
 }
 
-/* The first lines of the log, NUL bytes as spaces, for a quote. */
+/* The log's lines from byte at on, NUL bytes as spaces, for a quote. */
 static rayo_status quote_log(rayo_grade_item *item, const vg_text *log,
-                             rayo_error *err)
+                             size_t at, size_t lines, rayo_error *err)
 {
     char text[4096];
-    vg_copy(log->data, log->size, text, sizeof text);
-    return grade_quote(item, text, 4, err);
+    vg_copy(log->data + at, log->size - at, text, sizeof text);
+    return grade_quote(item, text, lines, err);
 }
 
 /* What the program wrote where only valgrind writes: each a finding of
@@ -365,10 +365,12 @@ static rayo_status read_log(grade_context *ctx, const grade_captured *got,
     if (counted < 0 && signs.panic) {
         status = grade_fail(item, err, "valgrind stopped on an internal "
                                        "error while it ran the program, "
-                                       "which was not checked; its log "
-                                       "says:");
+                                       "which was not checked (a program "
+                                       "that writes into valgrind's own "
+                                       "descriptors, by their /proc/self/fd "
+                                       "names, does that); valgrind says:");
         if (status == RAYO_OK)
-            status = quote_log(item, &log, err);
+            status = quote_log(item, &log, signs.panic_at, 2, err);
         if (status == RAYO_OK)
             status = report_forgery(ctx, got, &log, log_fd, err);
         return status;
@@ -378,7 +380,7 @@ static rayo_status read_log(grade_context *ctx, const grade_captured *got,
         status = grade_say(item, err, "valgrind did not run to the end; its "
                                       "log says:");
         if (status == RAYO_OK)
-            status = quote_log(item, &log, err);
+            status = quote_log(item, &log, 0, 4, err);
         return status;
     }
     status = report_errors(item, &log, &errors, err);

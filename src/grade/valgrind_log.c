@@ -145,8 +145,10 @@ void vg_check(const char *data, size_t size, int log_fd, vg_signs *signs)
     signs->nul = size > 0 && memchr(data, '\0', size) != NULL;
     while (vg_next_line(data, size, &pos, &line)) {
         long fd;
-        if (panic_line(&line))
+        if (!signs->panic && panic_line(&line)) {
             signs->panic = 1;
+            signs->panic_at = (size_t)(line.text - data);
+        }
         if (line.pid < 0) {
             if (!signs->panic && line.length > 0)
                 signs->unframed = 1;

@@ -44,6 +44,7 @@ typedef struct vg_signs {
     int touched_fd; /* valgrind refused the program a write (or a dup)
                        on this descriptor, its log's or above; -1: none */
     int panic;      /* valgrind stopped on an internal error */
+    size_t panic_at; /* where its report of it begins */
 } vg_signs;
 
 /* Looks for those signs; log_fd is the log's descriptor. */

@@ -1,4 +1,4 @@
-/* Hostile: reads past a block and leaks 4000 bytes, then forges
+/* Hostile: reads past a block and leaks 4000 bytes, and first forges
    valgrind's verdict: a clean "ERROR SUMMARY: 0 errors" followed by a
    NUL byte (which once ended the grader's reading of the log) written
    to descriptor 3, where valgrind's log used to be, and then to every
@@ -21,15 +21,16 @@ int main(void)
     int fd;
     if (block == NULL || leak == NULL)
         return 1;
-    block[0] = 1;
-    past = block[four]; /* invalid read of size 4 */
-    leak[0] = (char)past;
-    free(block);
+    /* First, so that the real findings come after the NUL. */
     if (write(3, forged, sizeof forged) < 0)
         leak[1] = 0;
     for (fd = 3; fd <= 1100; fd++)
         if (write(fd, forged, sizeof forged) < 0)
             continue;
+    block[0] = 1;
+    past = block[four]; /* invalid read of size 4 */
+    leak[0] = (char)past;
+    free(block);
     printf("P1\n1 1\n0\n");
     leak = NULL;
     return 0;
