@@ -8,15 +8,15 @@
  * The program runs again, under the same limits except address space
  * (valgrind reserves far more than the program uses) and with ten times
  * the time (memcheck is that much slower); memcheck writes its log into
- * a pipe the grader reads while it runs (descriptor 3: no file the
- * program could replace or point at /dev/null) and this file reads the
- * log's words, not its exit status.  The program shares valgrind's
- * process and so can write into that pipe too, but a pipe cannot be
- * rewound or truncated: what valgrind wrote stays, and the log is read
- * so that added lines can only add findings (every error line counts,
- * the largest leak and error counts win).  Programs it executes run
- * under valgrind too (--trace-children=yes).  Skipped when valgrind is
- * not installed.
+ * a socket the grader reads while it runs, at a descriptor in the range
+ * valgrind keeps out of the program's reach (process.c), and this file
+ * reads the log's lines as bytes (valgrind_log.c), not its exit status.
+ * The log is read as if the program could still write into it: every
+ * error line counts and the largest leak and error counts win, so added
+ * lines can only add findings, and any sign of such a write, or of
+ * valgrind's framing in the program's own output, is a finding of its
+ * own.  Programs it executes run under valgrind too
+ * (--trace-children=yes).  Skipped when valgrind is not installed.
  *
  * Where the frame valgrind names is one of the constructors exercise 3's
  * statement gives (esfera_crear, luz_crear, arreglo_agregar), the
@@ -353,8 +353,8 @@ static rayo_status read_log(grade_context *ctx, const grade_captured *got,
     }
     if (got->log_overflow)
         return grade_fail(item, err, "valgrind's log grew past 16 MiB, far "
-                                     "more than valgrind writes: the "
-                                     "program wrote into it");
+                                     "more than valgrind writes for one "
+                                     "program; the rest was not read");
     if (outcome->ending == GRADE_SIGNALED && outcome->status == SIGKILL)
         return grade_fail(item, err, "the program was killed (SIGKILL) "
                                      "under valgrind before valgrind could "
