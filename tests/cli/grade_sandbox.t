@@ -200,7 +200,10 @@ if command -v valgrind >/dev/null 2>&1; then
         grade_in --sandbox=$mode "$H/valgrind_dodge"
         says '^valgrind +FAIL +leak: ' "valgrind dodge ($mode): valgrind fails on a leak"
         is "$(leaks_lost)" "1000000 1" "valgrind dodge ($mode): the megabyte is found lost"
-        says "^ +the program wrote into the grader's channel: it tried to write to descriptor [0-9]+, where valgrind keeps its log, and valgrind refused$" \
+        # (Which sign is seen depends on the host: a grader itself run
+        # under valgrind, as check-valgrind does, cannot lower the real
+        # descriptor limit, and then the forged NUL is what shows.)
+        says "^ +the program wrote into the grader's channel: " \
             "valgrind dodge ($mode): its writes into valgrind's descriptors are a finding"
     done
     # The forged summary and NUL on descriptor 3 (once valgrind's log),
@@ -211,7 +214,7 @@ if command -v valgrind >/dev/null 2>&1; then
         says '^valgrind +FAIL +Invalid read of size 4, at main \(main\.c:[0-9]+\)$' \
             "valgrind forge ($mode): the real invalid read is reported"
         is "$(leaks_lost)" "4000 1" "valgrind forge ($mode): the real leak is reported"
-        says "^ +the program wrote into the grader's channel: it tried to write to descriptor [0-9]+, where valgrind keeps its log" \
+        says "^ +the program wrote into the grader's channel: " \
             "valgrind forge ($mode): the forgery is a finding"
         lacks 'no invalid access and no leak' "valgrind forge ($mode): no pass"
     done
