@@ -8,9 +8,10 @@
  *
  * Everything the child needs (paths, environment, descriptors, limits)
  * is worked out before fork(), so the child only calls async-signal-safe
- * functions (setsid, prctl, open, dup2, fcntl, chdir, setrlimit, execve,
- * _exit) and is safe to fork from a threaded program.  On Linux the
- * child also dies with the grader (PR_SET_PDEATHSIG), and bwrap's
+ * functions (setsid, prctl, open, dup2, fcntl, chdir, setrlimit,
+ * getrlimit, execve, _exit) and is safe to fork from a threaded
+ * program.  On Linux the child also dies with the grader
+ * (PR_SET_PDEATHSIG), and bwrap's
  * --die-with-parent takes the whole sandbox with it.  The limits are set
  * on bwrap and so hold inside.
  */
@@ -136,7 +137,9 @@ static int place(int fd, int number)
  * valgrind logs "invalid file descriptor N"), while valgrind's own
  * --log-fd=N keeps working.  The log's descriptor is placed below the
  * inherited limit (grade_log_fd) and the limit then lowered to it, last,
- * after any other limit on descriptors.
+ * after any other limit on descriptors, keeping the hard limit the child
+ * has by then (getrlimit: not on POSIX's list of async-signal-safe
+ * functions, but a bare system call that takes no lock).
  */
 static void keep_log_out_of_reach(int log_number)
 {
