@@ -255,6 +255,20 @@ else
     diag "no /usr/bin/time: the huge PNG's memory is not measured"
 fi
 
+# Both at once, as a class graded two at a time.
+if command -v valgrind >/dev/null 2>&1; then
+    mkdir "$TMP/class"
+    cp -r "$H/huge_png" "$H/valgrind_forge" "$TMP/class/"
+    status=0
+    (ulimit -v 3145728 && TMPDIR="$TMP/tmp" exec timeout 300 "$RAYO" grade --each "$TMP/class" \
+        -j 2 --csv -) >"$TMP/out" 2>"$TMP/err" || status=$?
+    is "$status" 1 "--each -j 2 over two hostile submissions: graded (exit 1)"
+    says '^"huge_png",fail,.*,fail,"the program printed a 65536x16384 PNG; the exercise asks for a plain PBM of 640x480' \
+        "--each -j 2: the huge PNG refused by its header"
+    says "^\"valgrind_forge\",fail,.*,fail,\"Invalid read of size 4, at main .*the program wrote into the grader's channel" \
+        "--each -j 2: the valgrind forge fails with its real error and the finding"
+fi
+
 # A forged report: control bytes escaped, the long line cut.
 grade_in $NV "$H/forged_report"
 is "$(tr -d '\n' <"$TMP/out" | tr -d '[:print:]' | wc -c | tr -d ' ')" 0 \
