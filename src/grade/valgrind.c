@@ -127,10 +127,12 @@ static unsigned long long leak_bytes(const vg_text *log, const char *kind,
     vg_line line;
     *blocks = 0;
     while (vg_next_line(log->data, log->size, &pos, &line)) {
-        const char *p = line.body + length, *end = line.body + line.body_length;
+        const char *p, *end = line.body + line.body_length;
         unsigned long long bytes, count = 0;
-        if (!vg_begins(&line, kind) || p >= end || *p != ':')
+        if (!vg_begins(&line, kind) || line.body_length == length ||
+            line.body[length] != ':')
             continue;
+        p = line.body + length;
         while (p < end && (*p == ' ' || *p == ':'))
             p++;
         bytes = number_at(p, end, &p);
@@ -152,10 +154,11 @@ static long long summary_errors(const vg_text *log)
     long long most = -1;
     vg_line line;
     while (vg_next_line(log->data, log->size, &pos, &line)) {
-        const char *p = line.body + strlen("ERROR SUMMARY: ");
+        const char *p;
         long long n;
         if (!vg_begins(&line, "ERROR SUMMARY: "))
             continue;
+        p = line.body + strlen("ERROR SUMMARY: ");
         n = (long long)number_at(p, line.body + line.body_length, &p);
         if (n > most)
             most = n;

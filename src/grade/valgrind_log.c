@@ -110,11 +110,11 @@ static long refused_write(const vg_line *line)
 {
     static const char head[] = "Warning: invalid file descriptor ";
     static const char middle[] = " in syscall ";
-    const char *p = line->body + sizeof head - 1;
-    const char *end = line->body + line->body_length;
+    const char *p, *end = line->body + line->body_length;
     long fd = 0;
     if (!vg_begins(line, head))
         return -1;
+    p = line->body + sizeof head - 1;
     while (p < end && *p >= '0' && *p <= '9' && fd < 100000000)
         fd = fd * 10 + (*p++ - '0');
     if ((size_t)(end - p) < sizeof middle - 1 ||
