@@ -163,12 +163,59 @@ static rayo_status load_reference(const rayo_grade_options *o,
     return o->exercise->reference(reference, err);
 }
 
+/* An output whose header promises far more pixels than the exercise's
+   (or the reference's) is refused by that header, before the checker or
+   a reader allocates and decodes it in the grader's own memory. */
+static rayo_status refuse_huge(grade_context *ctx,
+                               const rayo_image *reference, int *refused,
+                               rayo_error *err)
+{
+    const rayo_grade_exercise *e = ctx->options->exercise;
+    rayo_grade_report *r = ctx->report;
+    grade_header h;
+    uint64_t allowed = grade_pixels_allowed(e, reference);
+    rayo_status status;
+    *refused = 0;
+    if (!grade_header_peek(ctx->output, ctx->output_size, &h) ||
+        (h.width <= allowed && h.height <= allowed &&
+         h.width * h.height <= allowed))
+        return RAYO_OK;
+    *refused = 1;
+    status = grade_fail(&r->items[RAYO_GRADE_OUTPUT], err,
+                        "the program printed a %llux%llu %s; the exercise "
+                        "asks for a %s of %ux%u",
+                        (unsigned long long)h.width,
+                        (unsigned long long)h.height, h.format,
+                        e->magic == '1'   ? "plain PBM"
+                        : e->magic == '2' ? "plain PGM"
+                                          : "plain PPM",
+                        (unsigned)e->width, (unsigned)e->height);
+    if (status == RAYO_OK)
+        status = grade_say(&r->items[RAYO_GRADE_OUTPUT], err,
+                           "it was not decoded: its header promises more "
+                           "than %d times the exercise's %llu pixels",
+                           GRADE_SIZE_MARGIN,
+                           (unsigned long long)(allowed / GRADE_SIZE_MARGIN));
+    if (status == RAYO_OK)
+        status = grade_say(&r->items[RAYO_GRADE_IMAGE], err,
+                           "not compared: the output's header promises an "
+                           "image far larger than the exercise's, and it "
+                           "was not decoded");
+    return status;
+}
+
 /* The output criterion, and the pixels for the image criterion. */
-static rayo_status check_output(grade_context *ctx, rayo_image *image,
-                                int *salvaged, rayo_error *err)
+static rayo_status check_output(grade_context *ctx,
+                                const rayo_image *reference,
+                                rayo_image *image, int *salvaged,
+                                rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_OUTPUT];
-    rayo_status status = rayo_pnm_check(
+    int refused;
+    rayo_status status = refuse_huge(ctx, reference, &refused, err);
+    if (status != RAYO_OK || refused)
+        return status;
+    status = rayo_pnm_check(
         ctx->output, ctx->output_size, ctx->options->exercise->magic,
         ctx->options->exercise->width, ctx->options->exercise->height, item,
         image, err);
@@ -198,7 +245,7 @@ static rayo_status run_steps(grade_context *ctx, const rayo_image *reference,
         status = grade_step_run(ctx, err);
     if (status == RAYO_OK && report->items[RAYO_GRADE_RUN].result ==
                                  RAYO_GRADE_PASS)
-        status = check_output(ctx, &image, &salvaged, err);
+        status = check_output(ctx, reference, &image, &salvaged, err);
     if (status == RAYO_OK && image.pixels != NULL)
         status = grade_step_image(ctx, &image, reference, salvaged, err);
     else if (report->items[RAYO_GRADE_RUN].result == RAYO_GRADE_PASS)

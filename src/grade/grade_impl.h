@@ -57,6 +57,23 @@ rayo_status grade_write_file(const char *path, const char *text,
 rayo_status grade_read_fd(int fd, uint64_t limit, char **data, size_t *size,
                           int *cut, rayo_error *err);
 
+/* output_header.c: what an output's first bytes say it is (Netpbm's
+   magic and size, plain or raw; PNG's IHDR), read without decoding. */
+typedef struct grade_header {
+    const char *format;     /* "plain PBM", "raw PPM", "PNG", ... */
+    uint64_t width, height; /* as the header says (huge ones saturated) */
+    unsigned depth;         /* bits per sample; 0 when not said */
+} grade_header;
+/* 1 and *header filled when the output begins with a header it knows. */
+int grade_header_peek(const void *data, size_t size, grade_header *header);
+/* How many times the exercise's pixel count an output may promise and
+   still be decoded (and compared, as an image of the wrong size). */
+#define GRADE_SIZE_MARGIN 4
+/* The most pixels an output's header may promise: GRADE_SIZE_MARGIN
+   times the larger of the exercise's size and the reference's. */
+uint64_t grade_pixels_allowed(const rayo_grade_exercise *exercise,
+                              const rayo_image *reference);
+
 /* process.c: one run of a program, its limits and what became of it. */
 typedef struct grade_limits {
     double wall;          /* seconds; the process group is killed after */
@@ -101,8 +118,10 @@ typedef struct grade_run {
     const char *program;  /* STUDENT: the built file it runs (bound
                              read-only into the sandbox at its path) */
     uint64_t out_limit;   /* bytes of standard output kept */
-    int log_fd;           /* >= 3: a pipe handed to it as this descriptor
-                             is read while it runs (valgrind's log) */
+    int log_fd;           /* >= 3: a socket handed to it as this
+                             descriptor is read while it runs (valgrind's
+                             log; grade_log_fd gives the number), and
+                             its soft RLIMIT_NOFILE lowered to it */
     int collect;          /* STUDENT: bring back the one image file
                              (.pbm .pgm .ppm .pnm) it left in its folder */
 } grade_run;
@@ -137,6 +156,10 @@ rayo_status grade_spawn(struct grade_context *ctx, const grade_run *run,
                         const grade_limits *limits, grade_captured *got,
                         rayo_error *err);
 void grade_captured_free(grade_captured *got);
+/* The descriptor for valgrind's log: below the soft RLIMIT_NOFILE the
+   grader has (so it can be placed there) and at most 1023; -1 when the
+   limit is too low for one. */
+int grade_log_fd(void);
 
 /* sandbox.c: whether the sandbox works (cached), and its command. */
 int grade_sandbox_available(char *why, size_t room);

@@ -8,9 +8,10 @@
  *
  * Everything the child needs (paths, environment, descriptors, limits)
  * is worked out before fork(), so the child only calls async-signal-safe
- * functions (setsid, prctl, open, dup2, fcntl, chdir, setrlimit, execve,
- * _exit) and is safe to fork from a threaded program.  On Linux the
- * child also dies with the grader (PR_SET_PDEATHSIG), and bwrap's
+ * functions (setsid, prctl, open, dup2, fcntl, chdir, setrlimit,
+ * getrlimit, execve, _exit) and is safe to fork from a threaded
+ * program.  On Linux the child also dies with the grader
+ * (PR_SET_PDEATHSIG), and bwrap's
  * --die-with-parent takes the whole sandbox with it.  The limits are set
  * on bwrap and so hold inside.
  */
@@ -25,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -116,7 +118,7 @@ static void set_limit(int resource, rlim_t soft, rlim_t hard)
 
 typedef struct child_fds {
     int out, err;            /* captures */
-    int log, log_number;     /* the log pipe's write end, and its number */
+    int log, log_number;     /* the log socket's write end, its number */
     int json, name, file;    /* sandbox only; -1 when unused */
 } child_fds;
 
@@ -127,6 +129,35 @@ static int place(int fd, int number)
     if (fd == number)
         return fcntl(fd, F_SETFD, 0);
     return dup2(fd, number) < 0 ? -1 : 0;
+}
+
+/*
+ * valgrind keeps the descriptors from the soft RLIMIT_NOFILE it starts
+ * with upwards for itself: the program under it gets EBADF there (and
+ * valgrind logs "invalid file descriptor N"), while valgrind's own
+ * --log-fd=N keeps working.  The log's descriptor is placed below the
+ * inherited limit (grade_log_fd) and the limit then lowered to it, last,
+ * after any other limit on descriptors, keeping the hard limit the child
+ * has by then (getrlimit: not on POSIX's list of async-signal-safe
+ * functions, but a bare system call that takes no lock).
+ */
+static void keep_log_out_of_reach(int log_number)
+{
+    struct rlimit limit;
+    if (getrlimit(RLIMIT_NOFILE, &limit) == 0 &&
+        limit.rlim_cur > (rlim_t)log_number)
+        set_limit(RLIMIT_NOFILE, (rlim_t)log_number, limit.rlim_max);
+}
+
+int grade_log_fd(void)
+{
+    struct rlimit limit;
+    rlim_t highest = 1023;
+    if (getrlimit(RLIMIT_NOFILE, &limit) == 0 &&
+        limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= highest)
+        highest = limit.rlim_cur > 0 ? limit.rlim_cur - 1 : 0;
+    /* Above the descriptors the child is given by number. */
+    return highest > FD_FILE + 1 ? (int)highest : -1;
 }
 
 /* In the child, between fork and exec: async-signal-safe calls only. */
@@ -195,13 +226,15 @@ static void child(const char *program, char *const argv[],
     if (limits->processes > 0)
         set_limit(RLIMIT_NPROC, (rlim_t)limits->processes,
                   (rlim_t)limits->processes);
+    if (moved[2] >= 0)
+        keep_log_out_of_reach(fds->log_number);
     signal(SIGPIPE, SIG_DFL);
     signal(SIGXFSZ, SIG_DFL);
     execve(program, argv, env);
     _exit(127);
 }
 
-/* The log pipe's reader: what it holds, kept up to LOG_KEPT bytes. */
+/* The log's reader: what it holds, kept up to LOG_KEPT bytes. */
 #define LOG_KEPT ((size_t)16 << 20)
 
 typedef struct log_reader {
@@ -211,7 +244,7 @@ typedef struct log_reader {
     int overflow, failed;
 } log_reader;
 
-/* Reads what the pipe holds now (it is non-blocking). */
+/* Reads what the log holds now (it is non-blocking). */
 static void drain(log_reader *log)
 {
     char buffer[65536];
@@ -452,11 +485,16 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
         goto done;
     }
     if (run->log_fd >= 3) {
-        if (pipe(pipe_fds) != 0) {
-            status = rayo_error_set(err, RAYO_ERR_IO, "grade: pipe: %s",
+        /* A socket, not a pipe: a pipe can be opened again by its
+           /proc/self/fd name, which valgrind does not guard. */
+        if (socketpair(AF_UNIX, SOCK_STREAM, 0, pipe_fds) != 0) {
+            status = rayo_error_set(err, RAYO_ERR_IO, "grade: socketpair: "
+                                                      "%s",
                                     strerror(errno));
             goto done;
         }
+        shutdown(pipe_fds[0], SHUT_WR);
+        shutdown(pipe_fds[1], SHUT_RD);
         fcntl(pipe_fds[0], F_SETFD, FD_CLOEXEC);
         fcntl(pipe_fds[1], F_SETFD, FD_CLOEXEC);
         fcntl(pipe_fds[0], F_SETFL, O_NONBLOCK);

@@ -8,15 +8,15 @@
  * The program runs again, under the same limits except address space
  * (valgrind reserves far more than the program uses) and with ten times
  * the time (memcheck is that much slower); memcheck writes its log into
- * a pipe the grader reads while it runs (descriptor 3: no file the
- * program could replace or point at /dev/null) and this file reads the
- * log's words, not its exit status.  The program shares valgrind's
- * process and so can write into that pipe too, but a pipe cannot be
- * rewound or truncated: what valgrind wrote stays, and the log is read
- * so that added lines can only add findings (every error line counts,
- * the largest leak and error counts win).  Programs it executes run
- * under valgrind too (--trace-children=yes).  Skipped when valgrind is
- * not installed.
+ * a socket the grader reads while it runs, at a descriptor in the range
+ * valgrind keeps out of the program's reach (process.c), and this file
+ * reads the log's lines as bytes (valgrind_log.c), not its exit status.
+ * The log is read as if the program could still write into it: every
+ * error line counts and the largest leak and error counts win, so added
+ * lines can only add findings, and any sign of such a write, or of
+ * valgrind's framing in the program's own output, is a finding of its
+ * own.  Programs it executes run under valgrind too
+ * (--trace-children=yes).  Skipped when valgrind is not installed.
  *
  * Where the frame valgrind names is one of the constructors exercise 3's
  * statement gives (esfera_crear, luz_crear, arreglo_agregar), the
@@ -33,9 +33,9 @@
 #include <string.h>
 
 #include "grade_impl.h"
+#include "valgrind_log.h"
 
 #define SLOWDOWN 10.0
-#define LOG_FD 3 /* valgrind's log, a pipe the grader reads */
 #define SHOWN_ERRORS 4
 
 /* A statement's constructor, and what a leak of its blocks means. */
@@ -71,77 +71,73 @@ static const char *const error_kinds[] = {
     "Process terminating with default action of signal"};
 #define ERROR_KINDS (sizeof error_kinds / sizeof error_kinds[0])
 
-/* The log line at p without its "==PID== " prefix, into out. */
-static void strip(const char *p, char *out, size_t room)
-{
-    size_t n = strcspn(p, "\n");
-    const char *body = p;
-    if (p[0] == '=' && p[1] == '=') {
-        const char *end = strstr(p + 2, "== ");
-        if (end != NULL && (size_t)(end - p) < n) {
-            body = end + 3;
-            n -= (size_t)(body - p);
-        }
-    }
-    while (n > 0 && body[0] == ' ') {
-        body++;
-        n--;
-    }
-    snprintf(out, room, "%.*s", (int)n, body);
-}
+/* The log, as bytes. */
+typedef struct vg_text {
+    const char *data;
+    size_t size;
+} vg_text;
 
-/* The first stack frame after p that is not inside valgrind's own
-   replacements (malloc, free, ...): "main (leak.c:20)". */
-static void first_frame(const char *p, char *out, size_t room)
+/* The first stack frame in the lines after *pos that is not inside
+   valgrind's own replacements (malloc, free, ...): "main (leak.c:20)". */
+static void first_frame(const vg_text *log, size_t pos, char *out,
+                        size_t room)
 {
     int lines = 0;
+    vg_line line;
     out[0] = '\0';
-    while ((p = strchr(p, '\n')) != NULL && lines++ < 12) {
-        char line[512];
+    while (lines++ < 12 && vg_next_line(log->data, log->size, &pos, &line)) {
         const char *colon;
-        p++;
-        strip(p, line, sizeof line);
-        if (strncmp(line, "at 0x", 5) != 0 && strncmp(line, "by 0x", 5) != 0)
+        if (!vg_begins(&line, "at 0x") && !vg_begins(&line, "by 0x"))
             break;
-        if (strstr(line, "vg_replace") != NULL ||
-            strstr(line, "vgpreload") != NULL)
+        if (vg_find(&line, "vg_replace") != NULL ||
+            vg_find(&line, "vgpreload") != NULL)
             continue;
-        colon = strstr(line, ": ");
-        snprintf(out, room, "%s", colon != NULL ? colon + 2 : line);
+        colon = vg_find(&line, ": ");
+        if (colon != NULL)
+            vg_copy(colon + 2,
+                    line.body_length - (size_t)(colon + 2 - line.body), out,
+                    room);
+        else
+            vg_copy(line.body, line.body_length, out, room);
         return;
     }
 }
 
-/* The largest "KIND: N bytes in M blocks" anywhere in the log: a line
-   the program forged into the log cannot hide a larger real one. */
-static unsigned long long leak_bytes(const char *log, const char *kind,
+/* A number as valgrind writes it, digits grouped with commas; saturated. */
+static unsigned long long number_at(const char *p, const char *end,
+                                    const char **after)
+{
+    unsigned long long n = 0;
+    while (p < end && ((*p >= '0' && *p <= '9') || *p == ',')) {
+        if (*p != ',' && n < 1000000000000000000ull)
+            n = n * 10 + (unsigned long long)(*p - '0');
+        p++;
+    }
+    *after = p;
+    return n;
+}
+
+/* The largest "KIND: N bytes in M blocks" in the log: a line the
+   program forged into the log cannot hide a larger real one. */
+static unsigned long long leak_bytes(const vg_text *log, const char *kind,
                                      unsigned long long *blocks)
 {
-    const char *p = log;
+    size_t pos = 0, length = strlen(kind);
     unsigned long long most = 0;
-    size_t length = strlen(kind);
+    vg_line line;
     *blocks = 0;
-    while ((p = strstr(p, kind)) != NULL) {
+    while (vg_next_line(log->data, log->size, &pos, &line)) {
+        const char *p, *end = line.body + line.body_length;
         unsigned long long bytes, count = 0;
-        const char *q;
-        char number[64];
-        size_t i, n = 0;
-        p += length;
-        if (*p != ':')
+        if (!vg_begins(&line, kind) || line.body_length == length ||
+            line.body[length] != ':')
             continue;
-        /* "   1,234 bytes in 5 blocks": valgrind groups digits with
-           commas. */
-        while (*p == ' ' || *p == ':')
+        p = line.body + length;
+        while (p < end && (*p == ' ' || *p == ':'))
             p++;
-        for (i = 0; p[i] != '\0' && p[i] != ' ' && n + 1 < sizeof number;
-             i++)
-            if (p[i] != ',')
-                number[n++] = p[i];
-        number[n] = '\0';
-        bytes = strtoull(number, NULL, 10);
-        q = strstr(p, " in ");
-        if (q != NULL && q - p < 40)
-            count = strtoull(q + 4, NULL, 10);
+        bytes = number_at(p, end, &p);
+        if ((size_t)(end - p) > 10 && memcmp(p, " bytes in ", 10) == 0)
+            count = number_at(p + 10, end, &p);
         if (bytes > most) {
             most = bytes;
             *blocks = count;
@@ -152,43 +148,50 @@ static unsigned long long leak_bytes(const char *log, const char *kind,
 
 /* The largest count in an "ERROR SUMMARY: N errors" line; -1 when the
    log has none. */
-static long long summary_errors(const char *log)
+static long long summary_errors(const vg_text *log)
 {
-    const char *p = log;
+    size_t pos = 0;
     long long most = -1;
-    while ((p = strstr(p, "ERROR SUMMARY: ")) != NULL) {
+    vg_line line;
+    while (vg_next_line(log->data, log->size, &pos, &line)) {
+        const char *p;
         long long n;
-        p += strlen("ERROR SUMMARY: ");
-        n = strtoll(p, NULL, 10);
+        if (!vg_begins(&line, "ERROR SUMMARY: "))
+            continue;
+        p = line.body + strlen("ERROR SUMMARY: ");
+        n = (long long)number_at(p, line.body + line.body_length, &p);
         if (n > most)
             most = n;
     }
     return most;
 }
 
-static rayo_status report_errors(rayo_grade_item *item, const char *log,
+static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
                                  unsigned *count, rayo_error *err)
 {
-    const char *p = log;
+    size_t pos = 0;
     rayo_status status = RAYO_OK;
+    vg_line line;
     *count = 0;
-    while (status == RAYO_OK && (p = strstr(p, "== ")) != NULL) {
+    while (status == RAYO_OK &&
+           vg_next_line(log->data, log->size, &pos, &line)) {
         size_t k;
-        p += 3;
+        if (line.pid < 0)
+            continue;
         for (k = 0; k < ERROR_KINDS; k++) {
-            char line[512], frame[512];
-            if (strncmp(p, error_kinds[k], strlen(error_kinds[k])) != 0)
+            char text[512], frame[512];
+            if (!vg_begins(&line, error_kinds[k]))
                 continue;
             if ((*count)++ >= SHOWN_ERRORS)
                 break;
-            strip(p, line, sizeof line);
-            first_frame(p, frame, sizeof frame);
+            vg_copy(line.body, line.body_length, text, sizeof text);
+            first_frame(log, pos, frame, sizeof frame);
             if (frame[0] != '\0')
-                status = grade_fail(item, err, "%s, at %s", line, frame);
+                status = grade_fail(item, err, "%s, at %s", text, frame);
             else
-                status = grade_fail(item, err, "%s", line);
+                status = grade_fail(item, err, "%s", text);
             if (status == RAYO_OK && frame_is(frame, "arreglo_agregar") &&
-                strncmp(line, "Invalid write", 13) == 0)
+                strncmp(text, "Invalid write", 13) == 0)
                 status = grade_say(item, err, "a write past the end of v: "
                                               "grow it to n + 1 elements "
                                               "before writing v[n]");
@@ -204,18 +207,20 @@ static rayo_status report_errors(rayo_grade_item *item, const char *log,
 /* For each lost block made by one of the statement's constructors,
    once, what was not destroyed or freed. */
 static rayo_status explain_constructor_leaks(rayo_grade_item *item,
-                                             const char *log,
+                                             const vg_text *log,
                                              rayo_error *err)
 {
-    static const char record_words[] = " lost in loss record";
     int said[CONSTRUCTOR_LEAKS] = {0};
-    const char *p = log;
+    size_t pos = 0;
     rayo_status status = RAYO_OK;
-    while (status == RAYO_OK && (p = strstr(p, record_words)) != NULL) {
+    vg_line line;
+    while (status == RAYO_OK &&
+           vg_next_line(log->data, log->size, &pos, &line)) {
         char frame[512];
         size_t k;
-        first_frame(p, frame, sizeof frame);
-        p += sizeof record_words - 1;
+        if (vg_find(&line, " lost in loss record") == NULL)
+            continue;
+        first_frame(log, pos, frame, sizeof frame);
         for (k = 0; k < CONSTRUCTOR_LEAKS && status == RAYO_OK; k++) {
             if (said[k] || !frame_is(frame, constructor_leaks[k].function))
                 continue;
@@ -227,16 +232,27 @@ static rayo_status explain_constructor_leaks(rayo_grade_item *item,
     return status;
 }
 
-static rayo_status report_leaks(rayo_grade_item *item, const char *log,
+/* The position just after the first line that holds word; 0 when none
+   does (a record's line is never the log's first). */
+static size_t after_line_with(const vg_text *log, const char *word)
+{
+    size_t pos = 0;
+    vg_line line;
+    while (vg_next_line(log->data, log->size, &pos, &line))
+        if (vg_find(&line, word) != NULL)
+            return pos;
+    return 0;
+}
+
+static rayo_status report_leaks(rayo_grade_item *item, const vg_text *log,
                                 int *leaked, rayo_error *err)
 {
     static const char *const kinds[] = {"definitely lost", "indirectly lost",
                                         "possibly lost"};
     unsigned long long blocks, bytes;
     char frame[512];
-    size_t i;
+    size_t i, record;
     rayo_status status = RAYO_OK;
-    const char *record;
     *leaked = 0;
     for (i = 0; i < 3 && status == RAYO_OK; i++) {
         bytes = leak_bytes(log, kinds[i], &blocks);
@@ -252,11 +268,11 @@ static rayo_status report_leaks(rayo_grade_item *item, const char *log,
                                           "middle of the memory, not to its "
                                           "start; a leak all the same");
     }
-    record = strstr(log, "are definitely lost in loss record");
-    if (record == NULL)
-        record = strstr(log, "lost in loss record");
-    if (status == RAYO_OK && *leaked && record != NULL) {
-        first_frame(record, frame, sizeof frame);
+    record = after_line_with(log, "are definitely lost in loss record");
+    if (record == 0)
+        record = after_line_with(log, "lost in loss record");
+    if (status == RAYO_OK && *leaked && record != 0) {
+        first_frame(log, record, frame, sizeof frame);
         if (frame[0] != '\0')
             status = grade_say(item, err, "the biggest leak was allocated "
                                           "in %s",
@@ -274,16 +290,64 @@ static rayo_status report_leaks(rayo_grade_item *item, const char *log,
     return status;
 }
 
+/* The log's lines from byte at on, NUL bytes as spaces, for a quote. */
+static rayo_status quote_log(rayo_grade_item *item, const vg_text *log,
+                             size_t at, size_t lines, rayo_error *err)
+{
+    char text[4096];
+    vg_copy(log->data + at, log->size - at, text, sizeof text);
+    return grade_quote(item, text, lines, err);
+}
+
+/* What the program wrote where only valgrind writes: each a finding of
+   its own, after valgrind's, so that the real errors come first. */
+static rayo_status report_forgery(grade_context *ctx,
+                                  const grade_captured *got,
+                                  const vg_text *log, int log_fd,
+                                  rayo_error *err)
+{
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_VALGRIND];
+    rayo_status status = RAYO_OK;
+    vg_signs signs;
+    vg_check(log->data, log->size, log_fd, &signs);
+    if (signs.touched_fd >= 0)
+        status = grade_fail(item, err, "the program wrote into the "
+                                       "grader's channel: it tried to write "
+                                       "to descriptor %d, where valgrind "
+                                       "keeps its log, and valgrind "
+                                       "refused",
+                            signs.touched_fd);
+    if (status == RAYO_OK && (signs.nul || signs.unframed || signs.duplicate))
+        status = grade_fail(item, err, "the program wrote into the "
+                                       "grader's channel: valgrind's log "
+                                       "holds what valgrind does not write "
+                                       "(a NUL byte, a line without its "
+                                       "==PID== frame or a second error "
+                                       "summary from one process)");
+    if (status == RAYO_OK && (vg_framed_text(got->out, got->out_size) ||
+                              vg_framed_text(got->errors, got->errors_size)))
+        status = grade_fail(item, err, "the program wrote into the "
+                                       "grader's channel: it printed lines "
+                                       "framed like valgrind's log "
+                                       "(==PID== ...) on its standard "
+                                       "output or error; they were not "
+                                       "taken for valgrind's");
+    return status;
+}
+
 static rayo_status read_log(grade_context *ctx, const grade_captured *got,
-                            rayo_error *err)
+                            int log_fd, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_VALGRIND];
     const grade_outcome *outcome = &got->outcome;
-    const char *log = got->log != NULL ? got->log : "";
+    vg_text log;
+    vg_signs signs;
     unsigned errors;
     long long counted;
     int leaked;
     rayo_status status;
+    log.data = got->log != NULL ? got->log : "";
+    log.size = got->log != NULL ? got->log_size : 0;
     if (outcome->ending == GRADE_TIMED_OUT) {
         item->result = RAYO_GRADE_SKIPPED;
         return grade_say(item, err, "did not finish under valgrind within "
@@ -292,29 +356,45 @@ static rayo_status read_log(grade_context *ctx, const grade_captured *got,
     }
     if (got->log_overflow)
         return grade_fail(item, err, "valgrind's log grew past 16 MiB, far "
-                                     "more than valgrind writes: the "
-                                     "program wrote into it");
+                                     "more than valgrind writes for one "
+                                     "program; the rest was not read");
     if (outcome->ending == GRADE_SIGNALED && outcome->status == SIGKILL)
         return grade_fail(item, err, "the program was killed (SIGKILL) "
                                      "under valgrind before valgrind could "
                                      "check it");
     item->result = RAYO_GRADE_PASS;
-    counted = summary_errors(log);
+    counted = summary_errors(&log);
+    vg_check(log.data, log.size, log_fd, &signs);
+    if (counted < 0 && signs.panic) {
+        status = grade_fail(item, err, "valgrind stopped on an internal "
+                                       "error while it ran the program, "
+                                       "which was not checked (a program "
+                                       "that writes into valgrind's own "
+                                       "descriptors, by their /proc/self/fd "
+                                       "names, does that); valgrind says:");
+        if (status == RAYO_OK)
+            status = quote_log(item, &log, signs.panic_at, 2, err);
+        if (status == RAYO_OK)
+            status = report_forgery(ctx, got, &log, log_fd, err);
+        return status;
+    }
     if (counted < 0) {
         item->result = RAYO_GRADE_SKIPPED;
         status = grade_say(item, err, "valgrind did not run to the end; its "
                                       "log says:");
         if (status == RAYO_OK)
-            status = grade_quote(item, log, 4, err);
+            status = quote_log(item, &log, 0, 4, err);
         return status;
     }
-    status = report_errors(item, log, &errors, err);
+    status = report_errors(item, &log, &errors, err);
     if (status == RAYO_OK)
-        status = report_leaks(item, log, &leaked, err);
+        status = report_leaks(item, &log, &leaked, err);
     /* Leaks count as errors in valgrind's summary. */
     if (status == RAYO_OK && errors == 0 && !leaked && counted > 0)
         status = grade_fail(item, err, "valgrind counted %lld errors",
                             counted);
+    if (status == RAYO_OK)
+        status = report_forgery(ctx, got, &log, log_fd, err);
     if (status == RAYO_OK && item->result == RAYO_GRADE_PASS)
         status = grade_say(item, err, "no invalid access and no leak");
     return status;
@@ -324,6 +404,7 @@ rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_VALGRIND];
     char *valgrind = grade_which("valgrind");
+    int log_fd = grade_log_fd();
     char log_option[32];
     char *argv[8];
     grade_limits limits = grade_run_limits(ctx->options);
@@ -333,7 +414,13 @@ rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err)
     memset(&got, 0, sizeof got);
     if (valgrind == NULL)
         return grade_say(item, err, "valgrind is not installed");
-    snprintf(log_option, sizeof log_option, "--log-fd=%d", LOG_FD);
+    if (log_fd < 0) {
+        free(valgrind);
+        return grade_say(item, err, "not run: the limit on open files is "
+                                    "too low to give valgrind a log of its "
+                                    "own");
+    }
+    snprintf(log_option, sizeof log_option, "--log-fd=%d", log_fd);
     argv[0] = valgrind;
     argv[1] = "--leak-check=full";
     argv[2] = "--show-leak-kinds=all";
@@ -350,10 +437,10 @@ rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err)
     run.role = GRADE_ROLE_STUDENT;
     run.program = ctx->program;
     run.out_limit = 1u << 20;
-    run.log_fd = LOG_FD;
+    run.log_fd = log_fd;
     status = grade_spawn(ctx, &run, &limits, &got, err);
     if (status == RAYO_OK)
-        status = read_log(ctx, &got, err);
+        status = read_log(ctx, &got, log_fd, err);
     grade_captured_free(&got);
     free(valgrind);
     return status;

@@ -200,7 +200,73 @@ if command -v valgrind >/dev/null 2>&1; then
         grade_in --sandbox=$mode "$H/valgrind_dodge"
         says '^valgrind +FAIL +leak: ' "valgrind dodge ($mode): valgrind fails on a leak"
         is "$(leaks_lost)" "1000000 1" "valgrind dodge ($mode): the megabyte is found lost"
+        # (Which sign is seen depends on the host: a grader itself run
+        # under valgrind, as check-valgrind does, cannot lower the real
+        # descriptor limit, and then the forged NUL is what shows.)
+        says "^ +the program wrote into the grader's channel: " \
+            "valgrind dodge ($mode): its writes into valgrind's descriptors are a finding"
     done
+    # The forged summary and NUL on descriptor 3 (once valgrind's log),
+    # then on every descriptor: the real findings stay, and the attempt
+    # is a finding of its own.
+    for mode in auto off; do
+        grade_in --sandbox=$mode "$H/valgrind_forge"
+        says '^valgrind +FAIL +Invalid read of size 4, at main \(main\.c:[0-9]+\)$' \
+            "valgrind forge ($mode): the real invalid read is reported"
+        is "$(leaks_lost)" "4000 1" "valgrind forge ($mode): the real leak is reported"
+        says "^ +the program wrote into the grader's channel: " \
+            "valgrind forge ($mode): the forgery is a finding"
+        lacks 'no invalid access and no leak' "valgrind forge ($mode): no pass"
+    done
+    # A clean summary printed on standard output and error.
+    grade_in "$H/valgrind_forge_text"
+    says '^valgrind +FAIL +Conditional jump or move depends on uninitialised value\(s\), at main' \
+        "valgrind forge on stdout/stderr: the real error is reported"
+    is "$(leaks_lost)" "4000 1" "valgrind forge on stdout/stderr: the real leak is reported"
+    says "^ +the program wrote into the grader's channel: it printed lines framed like valgrind's log" \
+        "valgrind forge on stdout/stderr: the forgery is a finding"
+    # Writing into valgrind's own descriptors by their /proc names stops
+    # valgrind before its summary: a failure, not a skip.
+    grade_in "$H/valgrind_crash"
+    says '^valgrind +FAIL +valgrind stopped on an internal error while it ran the program' \
+        "valgrind crash: the criterion fails"
+    says '^ +valgrind: .*Assertion' "valgrind crash: valgrind's own line is quoted"
+fi
+
+# An image far larger than the exercise's, as a PNG of 13 MB: refused by
+# its header before anything decodes it; the grader's peak memory (GNU
+# time's maximum resident set, which covers rayo and what it waits for)
+# stays far below the 2 GiB the pixels would take.  The address space
+# is capped at 3 GiB all the same, so that a regression fails here
+# instead of taking the machine's memory.
+if [ -x /usr/bin/time ]; then
+    status=0
+    (ulimit -v 3145728 && TMPDIR="$TMP/tmp" exec timeout 120 /usr/bin/time -f '%M' \
+        -o "$TMP/peak" "$RAYO" grade $NV "$H/huge_png") >"$TMP/out" 2>"$TMP/err" || status=$?
+    is "$status" 1 "huge PNG: graded, and failed (exit 1)"
+    says '^output +FAIL +the program printed a 65536x16384 PNG; the exercise asks for a plain PBM of 640x480$' \
+        "huge PNG: refused by its header, with the sizes"
+    says '^image +skipped +not compared: the output.s header promises an image far larger' \
+        "huge PNG: not compared"
+    peak=$(tail -n 1 "$TMP/peak")
+    [ -n "$peak" ] && [ "$peak" -lt 262144 ]
+    ok $? "huge PNG: the grader's peak memory is under 256 MiB (${peak:-?} KiB)"
+else
+    diag "no /usr/bin/time: the huge PNG's memory is not measured"
+fi
+
+# Both at once, as a class graded two at a time.
+if command -v valgrind >/dev/null 2>&1; then
+    mkdir "$TMP/class"
+    cp -r "$H/huge_png" "$H/valgrind_forge" "$TMP/class/"
+    status=0
+    (ulimit -v 3145728 && TMPDIR="$TMP/tmp" exec timeout 300 "$RAYO" grade --each "$TMP/class" \
+        -j 2 --csv -) >"$TMP/out" 2>"$TMP/err" || status=$?
+    is "$status" 1 "--each -j 2 over two hostile submissions: graded (exit 1)"
+    says '^"huge_png",fail,.*,fail,"the program printed a 65536x16384 PNG; the exercise asks for a plain PBM of 640x480' \
+        "--each -j 2: the huge PNG refused by its header"
+    says "^\"valgrind_forge\",fail,.*,fail,\"Invalid read of size 4, at main .*the program wrote into the grader's channel" \
+        "--each -j 2: the valgrind forge fails with its real error and the finding"
 fi
 
 # A forged report: control bytes escaped, the long line cut.
@@ -214,8 +280,8 @@ is "$(awk 'length > 400' "$TMP/out" | wc -l | tr -d ' ')" 0 "forged report: the 
 # As an unprivileged user, where the machine allows.
 if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null 2>&1 &&
     setpriv --reuid 65534 --regid 65534 --clear-groups test -x "$RAYO"; then
-    cp -r "$H/read_outside" "$H/write_outside" "$TMP/"
-    chmod -R a+rX "$TMP/read_outside" "$TMP/write_outside"
+    cp -r "$H/read_outside" "$H/write_outside" "$H/valgrind_forge" "$H/huge_png" "$TMP/"
+    chmod -R a+rX "$TMP/read_outside" "$TMP/write_outside" "$TMP/valgrind_forge" "$TMP/huge_png"
     status=0
     (cd "$TMP" && setpriv --reuid 65534 --regid 65534 --clear-groups env HOME="$TMP/tmp" \
         TMPDIR="$TMP/tmp" "$RAYO" grade $NV --sandbox=require read_outside) \
@@ -226,6 +292,17 @@ if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null 2>&1 &&
         TMPDIR="$TMP/tmp" "$RAYO" grade $NV --sandbox=require write_outside) \
         >"$TMP/out" 2>&1
     says '^ +write refused$' "unprivileged: write outside contained"
+    if command -v valgrind >/dev/null 2>&1; then
+        (cd "$TMP" && setpriv --reuid 65534 --regid 65534 --clear-groups env HOME="$TMP/tmp" \
+            TMPDIR="$TMP/tmp" "$RAYO" grade --sandbox=require valgrind_forge) \
+            >"$TMP/out" 2>&1
+        says '^valgrind +FAIL +Invalid read of size 4' "unprivileged: valgrind forge: the real error stays"
+        says "^ +the program wrote into the grader's channel" "unprivileged: valgrind forge: the forgery is a finding"
+    fi
+    (cd "$TMP" && setpriv --reuid 65534 --regid 65534 --clear-groups env HOME="$TMP/tmp" \
+        TMPDIR="$TMP/tmp" "$RAYO" grade $NV --sandbox=require huge_png) \
+        >"$TMP/out" 2>&1
+    says '^output +FAIL +the program printed a 65536x16384 PNG' "unprivileged: huge PNG refused by its header"
 else
     diag "not root or no setpriv: the unprivileged runs are skipped"
 fi
