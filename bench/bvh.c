@@ -272,7 +272,7 @@ static void bvh_picture(const char *path)
     rayo_scene *scene = bvh_scene(BVH_FIELD, BVH_MANY, 1, NULL);
     rayo_camera camera;
     rayo_render_options options;
-    rayo_write_options write = {RAYO_FORMAT_PNG, 0};
+    rayo_write_options write = {RAYO_FORMAT_PNG, 0, 0};
     rayo_image image;
     rayo_output *out;
     rayo_error err;

@@ -32,7 +32,7 @@ int main(int argc, char **argv)
     rayo_camera camera;
     rayo_render_options options;
     rayo_image image;
-    rayo_write_options png = {RAYO_FORMAT_PNG, 0};
+    rayo_write_options png = {RAYO_FORMAT_PNG, 0, 0};
     rayo_output *out;
     rayo_error err;
     int status = 0;

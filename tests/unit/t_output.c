@@ -401,10 +401,10 @@ static void test_lost_bytes(void)
  * reference among it): the file never appears. */
 static void test_abandoned_image(void)
 {
-    static const rayo_write_options kinds[] = {{RAYO_FORMAT_PBM, 1},
-                                               {RAYO_FORMAT_PBM, 1},
-                                               {RAYO_FORMAT_PBM, 0},
-                                               {RAYO_FORMAT_PNG, 0}};
+    static const rayo_write_options kinds[] = {{RAYO_FORMAT_PBM, 1, 0},
+                                               {RAYO_FORMAT_PBM, 1, 0},
+                                               {RAYO_FORMAT_PBM, 0, 0},
+                                               {RAYO_FORMAT_PNG, 0, 0}};
     static const char *const names[] = {"plain PBM", "plain PBM by reference",
                                         "raw PBM", "PNG"};
     static unsigned char rows[300 * 8];

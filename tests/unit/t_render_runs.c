@@ -64,7 +64,7 @@ static written write_frame(const rayo_camera *camera, const rayo_scene *scene,
     int fd = mkstemp(path), failed;
     rayo_image_info info;
     rayo_render_options options;
-    rayo_write_options write_options = {RAYO_FORMAT_PBM, 1};
+    rayo_write_options write_options = {RAYO_FORMAT_PBM, 1, 0};
     rayo_output *out;
     rayo_writer *writer;
     rayo_error err;
@@ -136,7 +136,7 @@ static void both_ways(const rayo_camera *camera, const rayo_scene *scene,
 static void who_takes_runs(void)
 {
     static const rayo_write_options kinds[] = {
-        {RAYO_FORMAT_PBM, 1}, {RAYO_FORMAT_PBM, 0}, {RAYO_FORMAT_PNG, 0}};
+        {RAYO_FORMAT_PBM, 1, 0}, {RAYO_FORMAT_PBM, 0, 0}, {RAYO_FORMAT_PNG, 0, 0}};
     static const char *const names[] = {"plain PBM", "raw PBM", "PNG"};
     rayo_image_info info = rayo_image_info_bit(17, 3);
     rayo_image_info wider = rayo_image_info_bit(18, 3);
