@@ -1,0 +1,23 @@
+#!/bin/sh
+# update_pot.sh - extracts every marked message of the sources into a
+# PO template with GNU xgettext: `make pot` writes po/rayo.pot with it,
+# and tests/cli/i18n.t runs it again to check that the committed
+# template is up to date.
+#
+#   scripts/update_pot.sh OUT.pot
+#
+# The marks (docs/i18n.md): _("...") and N_("...") in the command,
+# _n("one", "many", n) for plurals, rayo_gettext(lang, "...") and
+# rayo_ngettext(lang, "one", "many", n) in the library.  Sources are
+# listed in C's byte order so the template does not depend on the
+# machine's locale or the file system's order.
+set -eu
+out=$1
+cd "$(dirname "$0")/.."
+files=$(find cli src -name '*.[ch]' | LC_ALL=C sort)
+# shellcheck disable=SC2086
+LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
+    --keyword= --keyword=_ --keyword=N_ --keyword=_n:1,2 \
+    --keyword=rayo_gettext:2 --keyword=rayo_ngettext:2,3 \
+    --add-comments=TRANSLATORS: --no-wrap --sort-by-file \
+    --output="$out" $files
