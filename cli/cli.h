@@ -101,9 +101,13 @@ void cli_vsayf(const char *format, va_list args)
  * ('77777777…' (100000 characters)).  Valid until four more quotes. */
 const char *cli_quote(const char *text);
 
-/* suggest.c: the one of names nearest to word (a typo away), or NULL. */
+/* suggest.c: the one of names nearest to word (a typo away), or NULL;
+ * cli_unknown_exercise: "OPTION: unknown exercise 'TEXT'; did you mean
+ * ej1? The exercises are ej1, ej2, ej3", returns CLI_EXIT_USAGE. */
 const char *cli_nearest(const char *word, const char *const *names,
                         size_t count);
+int cli_unknown_exercise(const char *option, const char *text,
+                         const char *const *names, size_t count);
 
 /* JSON strings (json_text.c): s with control bytes as JSON escapes and
  * bytes that are not UTF-8 as U+FFFD; cli_json_text_line first escapes
@@ -159,7 +163,8 @@ int cli_course_reference(const char *exercise, char *path, size_t room);
 int cli_image_operand(const char *operand, char *path, size_t room,
                       const char **resolved);
 
-/* 1 when standard output is a terminal (so binary output is refused). */
+/* 1 when standard output is a terminal (an image is then shown as
+   `rayo view` shows it, not written). */
 int cli_stdout_is_terminal(void);
 
 #endif

@@ -32,7 +32,7 @@ typedef struct compare_request {
 static void print_help(void)
 {
     printf(
-        "usage: rayo compare REFERENCE IMAGE [--tolerance PX] [--levels N]\n"
+        _("usage: rayo compare REFERENCE IMAGE [--tolerance PX] [--levels N]\n"
         "                    [--exercise NAME] [--diff OUT.png] [--json]\n\n"
         "Tells whether IMAGE shows what REFERENCE shows and, if not, what "
         "is likely\nwrong.  course:ej1, course:ej2 and course:ej3 name the "
@@ -98,11 +98,13 @@ static void print_help(void)
         "(unexplained),\n"
         "                      brighter the larger\n"
         "      --json          the report as one JSON object\n"
+        "      --lang es|en    the language of messages (default: from the\n"
+        "                      environment: LANGUAGE, LC_ALL, LC_MESSAGES, LANG)\n"
         "  -h, --help          this help\n\n"
         "exit status: 0 identical or consistent, 1 inconsistent or --diff "
         "could not be\nwritten, 2 bad options or an input that cannot be "
         "read (missing, unreadable,\na directory, malformed or too "
-        "large).\n");
+        "large).\n"));
 }
 
 static int parse_request(int argc, char **argv, compare_request *req)
@@ -113,6 +115,7 @@ static int parse_request(int argc, char **argv, compare_request *req)
         {"exercise", required_argument, NULL, 'e'},
         {"diff", required_argument, NULL, 'd'},
         {"json", no_argument, NULL, 'j'},
+        {"lang", required_argument, NULL, 'L'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
     int c;
@@ -125,9 +128,9 @@ static int parse_request(int argc, char **argv, compare_request *req)
                                   &req->options.tolerance))
                 return CLI_EXIT_USAGE;
             if (!(req->options.tolerance >= 0))
-                return cli_usage_error("--tolerance: '%s' is negative; "
-                                       "expected pixels, 0 or more",
-                                       optarg);
+                return cli_usage_error(_("--tolerance: %s is negative; "
+                                         "expected pixels, 0 or more"),
+                                       cli_quote(optarg));
             break;
         case 'd':
             req->diff = optarg;
@@ -143,15 +146,19 @@ static int parse_request(int argc, char **argv, compare_request *req)
             if (strcmp(optarg, "none") == 0) {
                 req->options.course = RAYO_COMPARE_COURSE_NONE;
             } else if (rayo_course_find(optarg) == RAYO_COURSE_EXERCISES) {
-                return cli_usage_error("--exercise: unknown exercise '%s'; "
-                                       "expected ej1, ej2, ej3 or none",
-                                       optarg);
+                {
+                static const char *const names[] = {"ej1", "ej2", "ej3",
+                                                    "none"};
+                return cli_unknown_exercise("--exercise", optarg, names, 4);
+            }
             } else {
                 req->options.course = (int)rayo_course_find(optarg);
             }
             break;
         case 'j':
             req->json = 1;
+            break;
+        case 'L': /* --lang: read before (lang.c) */
             break;
         case 'h':
             print_help();
@@ -162,12 +169,12 @@ static int parse_request(int argc, char **argv, compare_request *req)
     }
     if (argc - optind != 2)
         return cli_wrong_operands("compare", argc - optind,
-                                  "REFERENCE and IMAGE");
+                                  N_("REFERENCE and IMAGE"));
     req->reference = argv[optind];
     req->image = argv[optind + 1];
     if (strcmp(req->reference, "-") == 0 && strcmp(req->image, "-") == 0)
-        return cli_usage_error("compare: only one of REFERENCE and IMAGE "
-                               "can be '-' (standard input)");
+        return cli_usage_error(_("compare: only one of REFERENCE and IMAGE "
+                               "can be '-' (standard input)"));
     if ((c = cli_image_operand(req->reference, req->course_paths[0],
                                sizeof req->course_paths[0],
                                &req->reference)) != CLI_EXIT_OK ||
@@ -177,12 +184,14 @@ static int parse_request(int argc, char **argv, compare_request *req)
         return c;
     if (req->diff != NULL && (cli_same_file(req->diff, req->reference) ||
                               cli_same_file(req->diff, req->image)))
-        return cli_usage_error("--diff: '%s' is the %s; refusing to "
-                               "overwrite an input, give another file",
-                               req->diff,
-                               cli_same_file(req->diff, req->reference)
-                                   ? "reference"
-                                   : "image");
+        return cli_usage_error(cli_same_file(req->diff, req->reference)
+                                   ? _("--diff: '%s' is the reference; "
+                                       "refusing to overwrite an input, give "
+                                       "another file")
+                                   : _("--diff: '%s' is the image; refusing "
+                                       "to overwrite an input, give another "
+                                       "file"),
+                               req->diff);
     return CLI_EXIT_OK;
 }
 
@@ -192,7 +201,7 @@ static int print_report(const rayo_compare_report *report, int json)
                        : rayo_compare_format_text(report, NULL, 0);
     char *text = malloc(need + 1);
     if (text == NULL)
-        return cli_usage_error("out of memory");
+        return cli_usage_error(_("out of memory"));
     if (json)
         rayo_compare_format_json(report, text, need + 1);
     else
@@ -241,7 +250,7 @@ static int compare_images(const compare_request *req,
         return status;
     if ((status = print_report(&report, req->json)) != CLI_EXIT_OK)
         return status;
-    if ((status = cli_flush_text(stdout, "standard output")) != CLI_EXIT_OK)
+    if ((status = cli_flush_text(stdout, _("standard output"))) != CLI_EXIT_OK)
         return status;
     return report.verdict == RAYO_VERDICT_INCONSISTENT ? CLI_EXIT_FAILURE
                                                         : CLI_EXIT_OK;

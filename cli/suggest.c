@@ -5,9 +5,10 @@
  * The distance is Levenshtein's (one letter added, removed or changed
  * counts one; two neighbours swapped count one more), on bytes; a word
  * is suggested only when it is the one nearest and at most two edits
- * away, less than half of what was typed.  Words here are short names
+ * away, at most half of what was typed.  Words here are short names
  * (under 32 bytes); longer input is never near.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
@@ -56,7 +57,24 @@ const char *cli_nearest(const char *word, const char *const *names,
         }
     }
     if (best == NULL || tie || best_distance > 2 ||
-        2 * best_distance >= strlen(word))
+        2 * best_distance > strlen(word))
         return NULL;
     return best;
+}
+
+int cli_unknown_exercise(const char *option, const char *text,
+                         const char *const *names, size_t count)
+{
+    char list[256] = "";
+    const char *nearest = cli_nearest(text, names, count);
+    size_t i, used = 0;
+    for (i = 0; i < count && used < sizeof list; i++)
+        used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
+                                 i > 0 ? ", " : "", names[i]);
+    if (nearest != NULL)
+        return cli_usage_error(_("%s: unknown exercise %s; did you mean %s? "
+                                 "The exercises are %s"),
+                               option, cli_quote(text), nearest, list);
+    return cli_usage_error(_("%s: unknown exercise %s; the exercises are %s"),
+                           option, cli_quote(text), list);
 }
