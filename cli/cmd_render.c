@@ -182,8 +182,8 @@ static int parse_request(int argc, char **argv, render_request *req)
             if (!cli_parse_numbers("--sphere", optarg, 4, "CX,CY,CZ,R", v))
                 return CLI_EXIT_USAGE;
             if (!(v[3] > 0))
-                return cli_usage_error(_("--sphere: the radius in %s must "
-                                         "be greater than 0"),
+                return cli_usage_error(_("--sphere: radius in %s must be "
+                                         "greater than 0"),
                                        cli_quote(optarg));
             if (req->sphere_count == MAX_SPHERES_ON_COMMAND_LINE)
                 return cli_usage_error(_("--sphere: more than %d spheres; use "
