@@ -103,7 +103,8 @@ pot:
 
 update-po: pot
 	for po in po/*.po; do \
-	    msgmerge --quiet --update --backup=none --no-wrap $$po po/rayo.pot \
+	    msgmerge --quiet --update --backup=none --no-wrap \
+	        --add-location=file $$po po/rayo.pot \
 	        || exit 1; done
 
 $(LIB): $(LIB_OBJ)

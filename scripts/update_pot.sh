@@ -8,7 +8,9 @@
 #
 # The marks (docs/i18n.md): _("...") and N_("...") in the command,
 # _n("one", "many", n) for plurals, rayo_gettext(lang, "...") and
-# rayo_ngettext(lang, "one", "many", n) in the library.  Sources are
+# rayo_ngettext(lang, "one", "many", n) in the library.  References name
+# the file without a line number, so that the template changes only when
+# a message does, not when code moves.  Sources are
 # listed in C's byte order so the template does not depend on the
 # machine's locale or the file system's order.
 set -eu
@@ -19,5 +21,5 @@ files=$(find cli src -name '*.[ch]' | LC_ALL=C sort)
 LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
     --keyword= --keyword=_ --keyword=N_ --keyword=_n:1,2 \
     --keyword=rayo_gettext:2 --keyword=rayo_ngettext:2,3 \
-    --add-comments=TRANSLATORS: --no-wrap --sort-by-file \
+    --add-comments=TRANSLATORS: --add-location=file --no-wrap --sort-by-file \
     --output="$out" $files
