@@ -237,6 +237,7 @@ install: all
 	        $(DESTDIR)$(PREFIX)/share/locale/$$l/LC_MESSAGES/rayo.mo \
 	        || exit 1; done
 	for m in man/*/rayo.1; do \
+	    [ -f $$m ] || continue; \
 	    l=$$(basename $$(dirname $$m)); \
 	    install -d $(DESTDIR)$(PREFIX)/share/man/$$l/man1 && \
 	    install -m 644 $$m $(DESTDIR)$(PREFIX)/share/man/$$l/man1/rayo.1 \
