@@ -103,6 +103,26 @@ es --help
 grep -q "^  compare   compara una imagen con una referencia y te dice qué está mal$" "$TMP/out"
 ok $? "rayo --help: the commands' summaries in Spanish"
 
+# No English left: every --help and a sweep of the command's own errors,
+# in Spanish, hold none of these English words (the exercises' titles
+# come from the library, still English, and option values are tokens).
+stop='the|with|expected|see|default|image|when|and|of|to|is|not|file|got|unknown|must|cannot|needs|refusing'
+: >"$TMP/sweep"
+for args in "--help" "render --help" "convert --help" "compare --help" \
+    "view --help" "grade --help" "rendr" "-W x" "-W 0" "--fov 200" \
+    "--sphere 1,2,3,0" "--shade flat" "--format gif" "-o x.gif" "--raw -o x.png" \
+    "a b" "convert" "convert --plain --raw a b" "convert --format gif a b" \
+    "compare a" "compare --tolerance -1 a b" "compare --exercise ej9 a b" \
+    "view" "view --color=sometimes x" "view course:ej4" "grade /nonexistent" \
+    "grade" "grade --sandbox maybe x.c" "grade --timeout 0 x.c" \
+    "grade --points image=x x.c" "grade --exercise ej7 x.c" "--bogus" "-W"; do
+    # shellcheck disable=SC2086
+    env -u LANGUAGE LANG=es_AR.UTF-8 "$RAYO" $args >>"$TMP/sweep" 2>&1 </dev/null
+done
+grep -v -e "Ejercicio obligatorio" -e "image=" "$TMP/sweep" | grep -iwE "$stop" >"$TMP/english"
+is "$(wc -l <"$TMP/english" | tr -d ' ')" 0 "no English word in $(wc -l <"$TMP/sweep" | tr -d ' ') lines of Spanish help and errors"
+[ -s "$TMP/english" ] && head -n 5 "$TMP/english" | sed 's/^/#   /'
+
 # --- machine output does not move ---------------------------------------
 rayo -W 40 -H 30 -o "$TMP/a.pbm"
 rayo -W 40 -H 30 --sphere 2,0,3,0.8 -o "$TMP/b.pbm"
