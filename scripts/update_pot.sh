@@ -13,13 +13,24 @@
 # a message does, not when code moves.  Sources are
 # listed in C's byte order so the template does not depend on the
 # machine's locale or the file system's order.
+# A template that differs from OUT only in its creation date leaves OUT
+# as it is, so that `make pot` changes nothing when no message changed.
 set -eu
-out=$1
+out=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 cd "$(dirname "$0")/.."
 files=$(find cli src -name '*.[ch]' | LC_ALL=C sort)
+tmp="$out.tmp"
 # shellcheck disable=SC2086
 LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
     --keyword= --keyword=_ --keyword=N_ --keyword=_n:1,2 \
     --keyword=rayo_gettext:2 --keyword=rayo_ngettext:2,3 \
     --add-comments=TRANSLATORS: --add-location=file --no-wrap --sort-by-file \
-    --output="$out" $files
+    --output="$tmp" $files
+if [ -f "$out" ] &&
+    grep -v '^"POT-Creation-Date:' "$out" >"$tmp.old" &&
+    grep -v '^"POT-Creation-Date:' "$tmp" | cmp -s - "$tmp.old"; then
+    rm -f "$tmp" "$tmp.old"
+else
+    rm -f "$tmp.old"
+    mv "$tmp" "$out"
+fi
