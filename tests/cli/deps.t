@@ -35,7 +35,7 @@ status=0
 PATH=$bin RAYO_DEPS_LOG=$TMP/deps.log sh "$deps" check >"$TMP/out" 2>"$TMP/err" || status=$?
 is "$status" 0 "bare machine: exit 0"
 is "$(cat "$TMP/err")" "rayo: updating the package lists (apt's output: $TMP/deps.log)
-rayo: installing build tools: gcc libc6-dev make pkg-config
+rayo: installing build tools: gcc libc6-dev make pkg-config gettext
 rayo: installing libpng's headers: libpng-dev
 rayo: installing test tools: netpbm perl jq python3
 rayo: installing the grader's sandbox: bubblewrap" "one line per package set"
@@ -65,12 +65,12 @@ is "$(grep -c install "$APT_CALLS")" 1 "  and stops there"
 printf '#!/bin/sh\necho 1000\n' >"$bin/id"
 status=0
 PATH=$bin sh "$deps" build >"$TMP/out" 2>"$TMP/err" || status=$?
-is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config libpng-dev; run: sudo apt-get install -y gcc libc6-dev make pkg-config libpng-dev" "not root: names the command"
+is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config gettext libpng-dev; run: sudo apt-get install -y gcc libc6-dev make pkg-config gettext libpng-dev" "not root: names the command"
 
 # bench: the peers' packages (python3, libembree-dev, povray) are
 # optional.  With the build's tools present (stand-ins), a root machine
 # installs them; when it cannot, or is not root, it says so and succeeds.
-for tool in cc make pkg-config; do
+for tool in cc make pkg-config msgfmt; do
     printf '#!/bin/sh\nexit 0\n' >"$bin/$tool"
     chmod +x "$bin/$tool"
 done
