@@ -46,77 +46,79 @@ static void print_help(void)
     const rayo_grade_exercise *exercises = rayo_grade_exercises(&count);
     printf(
         _("usage: rayo grade [OPTIONS] SOURCE.c [MORE.c ...]\n"
-        "       rayo grade [OPTIONS] FOLDER\n"
-        "       rayo grade [OPTIONS] --each DIRECTORY\n\n"
-        "Checks a submission the way the course does: it compiles with "
-        "cc -std=c99\n-Wall -Werror -pedantic ... -lm; the functions the "
-        "exercise's statement asks\nfor have its signatures and return the "
-        "right values (ej1: producto_interno,\nnorma, intersecta_esfera; "
-        "ej2 and ej3: all of theirs, on inputs chosen to\nreveal the usual "
-        "mistakes); it runs with no input to exit status 0 under\nlimits; "
-        "its output is strict plain PBM, PGM or PPM of the right size; its "
-        "image\nis consistent with the reference (as 'rayo compare' "
-        "judges); and valgrind\nfinds no invalid access and no leak.  Every "
-        "failure is explained.\n\n"
-        "options:\n"
-        "      --exercise NAME    the exercise (default ej1)\n"
-        "      --reference FILE   compare with this image instead of the "
-        "exercise's\n"
-        "                         reference rendered by rayo; 'course': "
-        "the course's\n"
-        "                         own image (referencia-catedra-ejN.png)\n"
-        "      --diff OUT.png     keep the difference picture\n"
-        "      --json             the report as JSON\n"
-        "      --each             DIRECTORY holds one folder per student: "
-        "grade each,\n"
-        "                         print a table\n"
-        "  -j, --jobs N           with --each, grade N submissions at once "
-        "(default:\n"
-        "                         the number of CPUs); the table is the "
-        "same\n"
-        "      --csv FILE         also write one CSV row per submission "
-        "('-': to\n"
-        "                         standard output, instead of the report)\n"
-        "      --gradescope FILE  also write Gradescope's results.json for "
-        "the\n"
-        "                         submission (not with --each)\n"
-        "      --points LIST      points per criterion for --csv and "
-        "--gradescope\n"
-        "                         (default compile=10,functions=20,run=10,"
-        "output=10,\n"
-        "                         image=40,valgrind=10)\n"
-        "      --timeout SEC      wall-clock limit per run (default 10)\n"
-        "      --cpu SEC          CPU time limit per run (default 10)\n"
-        "      --memory MIB       address space limit (default 1024)\n"
-        "      --output-limit MIB largest file the program may write "
-        "(default 64)\n"
-        "      --processes N      process limit (default 64)\n"
-        "      --no-valgrind      skip the valgrind run\n"
-        "      --cc COMMAND       the compiler (default $CC, else cc)\n"
-        "      --sandbox MODE     auto (default): run everything in a "
-        "bubblewrap sandbox\n"
-        "                         when one can be made, else say it is "
-        "not isolated;\n"
-        "                         require: refuse to grade without it; "
-        "off: no sandbox\n"
-        "      --disk MIB         the sandbox's disk for the program "
-        "(default 256)\n"
-        "      --check            say whether the sandbox works here, "
-        "grade nothing\n"
-        "                         (exit 0 when it does, 2 when not)\n"
-        "      --lang es|en       the language of messages (default: from the\n"
-        "                         environment: LANGUAGE, LC_ALL, LC_MESSAGES, LANG)\n"
-        "  -h, --help             this help\n\n"
-        "exercises:\n"));
+          "       rayo grade [OPTIONS] FOLDER\n"
+          "       rayo grade [OPTIONS] --each DIRECTORY\n\n"
+          "Checks a submission the way the course does: it compiles with "
+          "cc -std=c99\n-Wall -Werror -pedantic ... -lm; the functions the "
+          "exercise's statement asks\nfor have its signatures and return the "
+          "right values (ej1: producto_interno,\nnorma, intersecta_esfera; "
+          "ej2 and ej3: all of theirs, on inputs chosen to\nreveal the usual "
+          "mistakes); it runs with no input to exit status 0 under\nlimits; "
+          "its output is strict plain PBM, PGM or PPM of the right size; its "
+          "image\nis consistent with the reference (as 'rayo compare' "
+          "judges); and valgrind\nfinds no invalid access and no leak.  Every "
+          "failure is explained.\n\n"
+          "options:\n"
+          "      --exercise NAME    the exercise (default ej1)\n"
+          "      --reference FILE   compare with this image instead of the "
+          "exercise's\n"
+          "                         reference rendered by rayo; 'course': "
+          "the course's\n"
+          "                         own image (referencia-catedra-ejN.png)\n"
+          "      --diff OUT.png     keep the difference picture\n"
+          "      --json             the report as JSON\n"
+          "      --each             DIRECTORY holds one folder per student: "
+          "grade each,\n"
+          "                         print a table\n"
+          "  -j, --jobs N           with --each, grade N submissions at once "
+          "(default:\n"
+          "                         the number of CPUs); the table is the "
+          "same\n"
+          "      --csv FILE         also write one CSV row per submission "
+          "('-': to\n"
+          "                         standard output, instead of the report)\n"
+          "      --gradescope FILE  also write Gradescope's results.json for "
+          "the\n"
+          "                         submission (not with --each)\n"
+          "      --points LIST      points per criterion for --csv and "
+          "--gradescope\n"
+          "                         (default compile=10,functions=20,run=10,"
+          "output=10,\n"
+          "                         image=40,valgrind=10)\n"
+          "      --timeout SEC      wall-clock limit per run (default 10)\n"
+          "      --cpu SEC          CPU time limit per run (default 10)\n"
+          "      --memory MIB       address space limit (default 1024)\n"
+          "      --output-limit MIB largest file the program may write "
+          "(default 64)\n"
+          "      --processes N      process limit (default 64)\n"
+          "      --no-valgrind      skip the valgrind run\n"
+          "      --cc COMMAND       the compiler (default $CC, else cc)\n"
+          "      --sandbox MODE     auto (default): run everything in a "
+          "bubblewrap sandbox\n"
+          "                         when one can be made, else say it is "
+          "not isolated;\n"
+          "                         require: refuse to grade without it; "
+          "off: no sandbox\n"
+          "      --disk MIB         the sandbox's disk for the program "
+          "(default 256)\n"
+          "      --check            say whether the sandbox works here, "
+          "grade nothing\n"
+          "                         (exit 0 when it does, 2 when not)\n"
+          "      --lang es|en       the language of messages (default: from "
+          "the\n"
+          "                         environment: LANGUAGE, LC_ALL, "
+          "LC_MESSAGES, LANG)\n"
+          "  -h, --help             this help\n\n"
+          "exercises:\n"));
     for (i = 0; i < count; i++)
         printf("  %-8s %s\n", exercises[i].name, exercises[i].title);
     printf(_("\nThe report's first line says how the submission was isolated "
-           "(docs/grading.md\nsays what the sandbox stops and what it does "
-           "not).\n\n"
-           "exit status: 0 everything passed, 1 something failed or an "
-           "output could not be\nwritten, 2 bad options or an input that "
-           "cannot be read (missing, unreadable,\na directory, malformed), "
-           "or --sandbox=require without a sandbox.\n"));
+             "(docs/grading.md\nsays what the sandbox stops and what it does "
+             "not).\n\n"
+             "exit status: 0 everything passed, 1 something failed or an "
+             "output could not be\nwritten, 2 bad options or an input that "
+             "cannot be read (missing, unreadable,\na directory, malformed), "
+             "or --sandbox=require without a sandbox.\n"));
 }
 
 static int parse_seconds(const char *option, const char *text, double *value)
@@ -259,41 +261,41 @@ static int parse_request(int argc, char **argv, grade_request *req)
     if (req->check) {
         if (optind < argc)
             return cli_usage_error(_("--check: grades nothing; no submission "
-                                   "is expected"));
+                                     "is expected"));
         return CLI_EXIT_OK;
     }
     if (optind >= argc)
         return cli_usage_error(_("grade: no submission given; expected "
-                               "SOURCE.c, a folder, or --each DIRECTORY"));
+                                 "SOURCE.c, a folder, or --each DIRECTORY"));
     if (req->each && argc - optind != 1)
         return cli_usage_error(_("grade: --each takes one DIRECTORY, not %d "
-                               "arguments"),
+                                 "arguments"),
                                argc - optind);
     if (req->each && req->options.diff != NULL)
         return cli_usage_error(_("--diff: applies to one submission, not to "
-                               "--each"));
+                                 "--each"));
     if (req->each && req->gradescope != NULL)
         return cli_usage_error(_("--gradescope: Gradescope grades one "
-                               "submission per run, not --each; use --csv "
-                               "for a class"));
+                                 "submission per run, not --each; use --csv "
+                                 "for a class"));
     if (req->csv != NULL && strcmp(req->csv, "-") == 0 && req->json)
         return cli_usage_error(_("--csv -: standard output already carries "
-                               "the JSON; give --csv a FILE"));
+                                 "the JSON; give --csv a FILE"));
     if (req->gradescope != NULL && strcmp(req->gradescope, "-") == 0 &&
         (req->json || (req->csv != NULL && strcmp(req->csv, "-") == 0)))
         return cli_usage_error(_("--gradescope -: standard output already "
-                               "carries the report; give a FILE"));
+                                 "carries the report; give a FILE"));
     if (req->options.reference != NULL &&
         strcmp(req->options.reference, "course") == 0) {
         const char *name = req->options.exercise->name;
         if (!cli_course_reference(name, req->course_reference,
                                   sizeof req->course_reference))
             return cli_usage_error(_("--reference course: the course's image "
-                                   "for %s (referencia-catedra-%s.png) is "
-                                   "not installed; looked in "
-                                   "$RAYO_DATA_DIR/course and beside the "
-                                   "command (../data/course, "
-                                   "../share/rayo/course)"),
+                                     "for %s (referencia-catedra-%s.png) is "
+                                     "not installed; looked in "
+                                     "$RAYO_DATA_DIR/course and beside the "
+                                     "command (../data/course, "
+                                     "../share/rayo/course)"),
                                    name, name);
         req->options.reference = req->course_reference;
     }
@@ -809,7 +811,7 @@ int cli_grade(int argc, char **argv)
         }
         if (!isolated)
             return cli_usage_error(_("grade: --sandbox=require: %s; refusing "
-                                   "to grade"), text);
+                                     "to grade"), text);
     }
     req.options.cancelled = stop_requested;
     cli_interrupt_catch();

@@ -58,69 +58,71 @@ static void print_help(void)
 {
     printf(
         _("usage: rayo [render] [OPTIONS]\n"
-        "       rayo render SCENE [OPTIONS]\n\n"
-        "Traces rays from the camera through each pixel.  With no options: "
-        "the\nassignment's sphere (centre 0.5,0.75,1.9, radius 0.8), "
-        "640x480, field of view 90,\nblack where a ray hits it, as plain "
-        "PBM (P1) on standard output.  SCENE is a\nscene file "
-        "(docs/scene-format.md): camera, lights, materials, spheres, "
-        "planes,\ntriangles; the options below override its camera and "
-        "settings.\n\n"
-        "options:\n"
-        "  -W, --width N          image width in pixels (1-65536; default "
-        "640)\n"
-        "  -H, --height N         image height in pixels (1-65536; default "
-        "480)\n"
-        "                         at most 2^30 pixels in all\n"
-        "      --fov DEG          horizontal field of view, degrees, "
-        "0 < DEG < 180 (default 90)\n"
-        "      --origin X,Y,Z     camera position (default 0,0,0); it looks "
-        "down +z, +y up\n"
-        "                         (or at the scene's look-at point)\n"
-        "      --shade MODE       hit (black/white, PBM), course-gray (PGM), "
-        "course-color\n"
-        "                         (PPM) or phong (PPM); default: the "
-        "scene's 'shade',\n"
-        "                         else phong for a scene, hit without one\n"
-        "      --samples N        N x N rays per pixel, stratified (1-16; "
-        "default 1)\n"
-        "      --depth N          phong: mirror bounces followed (0-64; "
-        "default 5)\n"
-        "      --sphere CX,CY,CZ,R\n"
-        "                         a sphere (repeatable; R > 0); the first "
-        "replaces the\n"
-        "                         assignment's sphere\n"
-        "  -o, --output FILE      write to FILE ('-' = standard output, "
-        "the default);\n"
-        "                         a file appears whole or not at all\n"
-        "      --format FMT       the mode's Netpbm format (pbm, pgm, ppm) "
-        "or png (default:\n"
-        "                         from FILE's extension, else the mode's "
-        "Netpbm format)\n"
-        "      --raw              raw Netpbm (P4-P6) instead of plain "
-        "(P1-P3)\n"
-        "  -j, --threads N        threads reading the scene, building its "
-        "hierarchy\n"
-        "                         and rendering (default: one per CPU)\n"
-        "  -q, --quiet            no progress bar (otherwise drawn on a "
-        "terminal's\n"
-        "                         stderr for renders longer than a "
-        "second)\n"
-        "      --preview          then show the image in the terminal, "
-        "as 'rayo view'\n"
-        "                         does: on stdout, or on stderr when the "
-        "image itself\n"
-        "                         goes to stdout\n"
-        "      --lang es|en       the language of messages (default: from the\n"
-        "                         environment: LANGUAGE, LC_ALL, LC_MESSAGES, LANG)\n"
-        "  -h, --help             this help\n"
-        "  -V, --version          the version\n\n"
-        "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
-        "(rows from the\ntop); its ray has direction (x, -y, w/(2 "
-        "tan(fov/2))), normalised.\n\n"
-        "exit status: 0 success, 1 the output could not be written, 2 bad "
-        "options or an\ninput that cannot be read (SCENE missing, "
-        "unreadable, a directory, malformed).\n"));
+          "       rayo render SCENE [OPTIONS]\n\n"
+          "Traces rays from the camera through each pixel.  With no options: "
+          "the\nassignment's sphere (centre 0.5,0.75,1.9, radius 0.8), "
+          "640x480, field of view 90,\nblack where a ray hits it, as plain "
+          "PBM (P1) on standard output.  SCENE is a\nscene file "
+          "(docs/scene-format.md): camera, lights, materials, spheres, "
+          "planes,\ntriangles; the options below override its camera and "
+          "settings.\n\n"
+          "options:\n"
+          "  -W, --width N          image width in pixels (1-65536; default "
+          "640)\n"
+          "  -H, --height N         image height in pixels (1-65536; default "
+          "480)\n"
+          "                         at most 2^30 pixels in all\n"
+          "      --fov DEG          horizontal field of view, degrees, "
+          "0 < DEG < 180 (default 90)\n"
+          "      --origin X,Y,Z     camera position (default 0,0,0); it looks "
+          "down +z, +y up\n"
+          "                         (or at the scene's look-at point)\n"
+          "      --shade MODE       hit (black/white, PBM), course-gray (PGM), "
+          "course-color\n"
+          "                         (PPM) or phong (PPM); default: the "
+          "scene's 'shade',\n"
+          "                         else phong for a scene, hit without one\n"
+          "      --samples N        N x N rays per pixel, stratified (1-16; "
+          "default 1)\n"
+          "      --depth N          phong: mirror bounces followed (0-64; "
+          "default 5)\n"
+          "      --sphere CX,CY,CZ,R\n"
+          "                         a sphere (repeatable; R > 0); the first "
+          "replaces the\n"
+          "                         assignment's sphere\n"
+          "  -o, --output FILE      write to FILE ('-' = standard output, "
+          "the default);\n"
+          "                         a file appears whole or not at all\n"
+          "      --format FMT       the mode's Netpbm format (pbm, pgm, ppm) "
+          "or png (default:\n"
+          "                         from FILE's extension, else the mode's "
+          "Netpbm format)\n"
+          "      --raw              raw Netpbm (P4-P6) instead of plain "
+          "(P1-P3)\n"
+          "  -j, --threads N        threads reading the scene, building its "
+          "hierarchy\n"
+          "                         and rendering (default: one per CPU)\n"
+          "  -q, --quiet            no progress bar (otherwise drawn on a "
+          "terminal's\n"
+          "                         stderr for renders longer than a "
+          "second)\n"
+          "      --preview          then show the image in the terminal, "
+          "as 'rayo view'\n"
+          "                         does: on stdout, or on stderr when the "
+          "image itself\n"
+          "                         goes to stdout\n"
+          "      --lang es|en       the language of messages (default: from "
+          "the\n"
+          "                         environment: LANGUAGE, LC_ALL, "
+          "LC_MESSAGES, LANG)\n"
+          "  -h, --help             this help\n"
+          "  -V, --version          the version\n\n"
+          "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
+          "(rows from the\ntop); its ray has direction (x, -y, w/(2 "
+          "tan(fov/2))), normalised.\n\n"
+          "exit status: 0 success, 1 the output could not be written, 2 bad "
+          "options or an\ninput that cannot be read (SCENE missing, "
+          "unreadable, a directory, malformed).\n"));
 }
 
 static int parse_request(int argc, char **argv, render_request *req)
@@ -187,7 +189,7 @@ static int parse_request(int argc, char **argv, render_request *req)
                                        cli_quote(optarg));
             if (req->sphere_count == MAX_SPHERES_ON_COMMAND_LINE)
                 return cli_usage_error(_("--sphere: more than %d spheres; use "
-                                       "a scene file"),
+                                         "a scene file"),
                                        MAX_SPHERES_ON_COMMAND_LINE);
             memcpy(req->spheres[req->sphere_count++], v, sizeof v);
             break;
@@ -251,15 +253,15 @@ static int parse_request(int argc, char **argv, render_request *req)
     if (req->scene_path != NULL && strcmp(req->output, "-") != 0 &&
         cli_same_file(req->output, req->scene_path))
         return cli_usage_error(_("--output: '%s' is the scene file; refusing "
-                               "to overwrite an input"),
+                                 "to overwrite an input"),
                                req->output);
     if (req->scene_path != NULL && req->sphere_count > 0)
         return cli_usage_error(_("--sphere: cannot be combined with the scene "
-                               "file '%s'; put the sphere in the file"),
+                                 "file '%s'; put the sphere in the file"),
                                req->scene_path);
     if ((unsigned long long)req->width * req->height > RAYO_MAX_PIXELS)
         return cli_usage_error(_("--width %lu --height %lu: %llu pixels; "
-                               "expected at most %lu (2^30)"),
+                                 "expected at most %lu (2^30)"),
                                req->width, req->height,
                                (unsigned long long)req->width * req->height,
                                RAYO_MAX_PIXELS);
@@ -321,12 +323,12 @@ static int choose_format(const render_request *req, rayo_format *format)
         *format = netpbm;
     } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
         return cli_usage_error(_("--output: cannot tell the format of '%s' "
-                               "from its extension; expected .%s or .png, "
-                               "or give --format"),
+                                 "from its extension; expected .%s or .png, "
+                                 "or give --format"),
                                req->output, ext);
     } else if (*format != netpbm && *format != RAYO_FORMAT_PNG) {
         return cli_usage_error(_("--output: '%s' is %s, which cannot hold a %s "
-                               "render; expected .%s or .png"),
+                                 "render; expected .%s or .png"),
                                req->output, upper_name(*format),
                                rayo_shade_mode_name(mode), ext);
     }
@@ -368,7 +370,7 @@ static void warn_about_scene(const render_request *req)
                     !req->origin_given;
     if (empty && no_camera)
         cli_sayf(_("warning: %s has no objects and no camera; the image is "
-                 "the background, %lux%lu"),
+                   "the background, %lux%lu"),
                  name, (unsigned long)req->file.camera.width,
                  (unsigned long)req->file.camera.height);
     else if (empty)
@@ -376,7 +378,7 @@ static void warn_about_scene(const render_request *req)
                  name);
     else if (no_camera)
         cli_sayf(_("warning: %s has no camera; using the default one: "
-                 "%lux%lu, fov %g, at 0,0,0 looking down +z"),
+                   "%lux%lu, fov %g, at 0,0,0 looking down +z"),
                  name, (unsigned long)req->file.camera.width,
                  (unsigned long)req->file.camera.height,
                  req->file.camera.fov_degrees);

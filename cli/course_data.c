@@ -94,10 +94,10 @@ int cli_image_operand(const char *operand, char *path, size_t room,
     }
     if (!cli_course_reference(name, path, room))
         return cli_usage_error(_("%s: the course's image "
-                               "(referencia-catedra-%s.png) is not "
-                               "installed; looked in $RAYO_DATA_DIR/course "
-                               "and beside the command (../data/course, "
-                               "../share/rayo/course)"),
+                                 "(referencia-catedra-%s.png) is not "
+                                 "installed; looked in $RAYO_DATA_DIR/course "
+                                 "and beside the command (../data/course, "
+                                 "../share/rayo/course)"),
                                operand, name);
     *resolved = path;
     return CLI_EXIT_OK;

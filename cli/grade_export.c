@@ -60,13 +60,13 @@ int cli_grade_points_parse(const char *text, cli_grade_points *points)
         c = criterion_named(s, (size_t)(equals - s));
         if (c < 0)
             return cli_usage_error(_("--points: '%.*s' is not a criterion; "
-                                   "expected compile, functions, run, "
-                                   "output, image or valgrind"),
+                                     "expected compile, functions, run, "
+                                     "output, image or valgrind"),
                                    (int)(equals - s), s);
         length = (size_t)(end - equals - 1);
         if (length == 0 || length >= sizeof value)
             return cli_usage_error(_("--points: %s's points '%.*s' are not a "
-                                   "number from 0 to 1000"),
+                                     "number from 0 to 1000"),
                                    rayo_grade_criterion_name(c), (int)length,
                                    equals + 1);
         memcpy(value, equals + 1, length);
