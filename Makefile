@@ -8,6 +8,8 @@
 #   make check-valgrind  the command tests under valgrind memcheck
 #   make fuzz            libFuzzer targets (fuzz/; docs/robustness.md)
 #   make install PREFIX=/usr/local
+#   make pot             po/rayo.pot from the marked messages (docs/i18n.md)
+#   make update-po       po/*.po merged with po/rayo.pot (msgmerge)
 #   make CC=clang        any C11 compiler; warnings are errors
 #   make BUILD=dir       build somewhere else (parallel work trees, sanitizers)
 #
@@ -52,6 +54,16 @@ CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 UNIT_SUPPORT_OBJ := $(UNIT_SUPPORT:%.c=$(BUILD)/obj/%.o)
 
+# The translations (po/LL.po, docs/i18n.md): compiled by msgfmt into
+# $(BUILD)/locale/LL/LC_MESSAGES/rayo.mo, and embedded in the library as
+# $(BUILD)/gen/catalogs.c, so that a copied binary and the page need no
+# file to speak them.
+PO_LANGS := $(patsubst po/%.po,%,$(sort $(wildcard po/*.po)))
+MO_FILES := $(PO_LANGS:%=$(BUILD)/locale/%/LC_MESSAGES/rayo.mo)
+CATALOG_SRC := $(BUILD)/gen/catalogs.c
+CATALOG_OBJ := $(BUILD)/obj/gen/catalogs.o
+LIB_OBJ += $(CATALOG_OBJ)
+
 LIB := $(BUILD)/librayo.a
 RAYO := $(BUILD)/rayo
 
@@ -78,6 +90,28 @@ $(BUILD)/.deps-web:
 $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(BUILD)/locale/%/LC_MESSAGES/rayo.mo: po/%.po | $(BUILD)/.deps-build
+	@mkdir -p $(dir $@)
+	msgfmt --check -o $@ $<
+
+$(CATALOG_SRC): $(MO_FILES) scripts/embed_catalogs.sh
+	@mkdir -p $(dir $@)
+	scripts/embed_catalogs.sh $@ $(BUILD)/locale $(PO_LANGS)
+
+$(CATALOG_OBJ): $(CATALOG_SRC) src/core/catalog.h
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) -Isrc/core -c $< -o $@
+
+.PHONY: pot update-po
+pot:
+	scripts/update_pot.sh po/rayo.pot
+
+update-po: pot
+	for po in po/*.po; do \
+	    msgmerge --quiet --update --backup=none --no-wrap \
+	        --add-location=file $$po po/rayo.pot \
+	        || exit 1; done
 
 $(LIB): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -203,6 +237,17 @@ install: all
 	install -m 644 include/rayo.h $(DESTDIR)$(PREFIX)/include/rayo.h
 	install -m 644 include/rayo/*.h $(DESTDIR)$(PREFIX)/include/rayo/
 	install -m 644 man/rayo.1 $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1
+	for l in $(PO_LANGS); do \
+	    install -d $(DESTDIR)$(PREFIX)/share/locale/$$l/LC_MESSAGES && \
+	    install -m 644 $(BUILD)/locale/$$l/LC_MESSAGES/rayo.mo \
+	        $(DESTDIR)$(PREFIX)/share/locale/$$l/LC_MESSAGES/rayo.mo \
+	        || exit 1; done
+	for m in man/*/rayo.1; do \
+	    [ -f $$m ] || continue; \
+	    l=$$(basename $$(dirname $$m)); \
+	    install -d $(DESTDIR)$(PREFIX)/share/man/$$l/man1 && \
+	    install -m 644 $$m $(DESTDIR)$(PREFIX)/share/man/$$l/man1/rayo.1 \
+	        || exit 1; done
 	install -d $(DESTDIR)$(PREFIX)/share/rayo/course
 	install -m 644 data/course/*.png $(DESTDIR)$(PREFIX)/share/rayo/course/
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(shell sed -n 's/^#define RAYO_VERSION "\(.*\)"/\1/p' include/rayo.h)|g' \
@@ -212,7 +257,9 @@ uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/rayo $(DESTDIR)$(PREFIX)/lib/librayo.a \
 	    $(DESTDIR)$(PREFIX)/include/rayo.h \
 	    $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1 \
-	    $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc
+	    $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc \
+	    $(PO_LANGS:%=$(DESTDIR)$(PREFIX)/share/locale/%/LC_MESSAGES/rayo.mo) \
+	    $(patsubst man/%/rayo.1,$(DESTDIR)$(PREFIX)/share/man/%/man1/rayo.1,$(wildcard man/*/rayo.1))
 	rm -rf $(DESTDIR)$(PREFIX)/include/rayo $(DESTDIR)$(PREFIX)/share/rayo
 
 clean:
@@ -239,7 +286,7 @@ WASM_CFLAGS = --target=wasm32-wasi -std=c11 -O2 $(WARNINGS) \
 WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/formats/jpeg_%.c \
                  src/io/output.c src/io/output_target.c src/grade/%,$(LIB_SRC))
 WASM_SRC := $(WASM_LIB_SRC) $(sort $(wildcard web/wasm/*.c))
-WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o)
+WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o) $(BUILD)/wasm/gen/catalogs.o
 WEB_ASSETS := $(sort $(wildcard web/*.html web/*.js web/*.css))
 WEB_OUT := $(BUILD)/web
 CHROMIUM ?= $(shell command -v chromium chromium-browser 2>/dev/null | \
@@ -255,6 +302,10 @@ web: $(WEB_OUT)/assets.js $(WEB_ASSETS:web/%=$(WEB_OUT)/%)
 $(BUILD)/wasm/%.o: %.c | $(BUILD)/.deps-web
 	@mkdir -p $(dir $@)
 	$(WASM_CC) $(WASM_CFLAGS) -c $< -o $@
+
+$(BUILD)/wasm/gen/catalogs.o: $(CATALOG_SRC) src/core/catalog.h
+	@mkdir -p $(dir $@)
+	$(WASM_CC) $(WASM_CFLAGS) -Isrc/core -c $< -o $@
 
 $(WEB_WASM): $(WASM_OBJ)
 	@mkdir -p $(dir $@)

@@ -15,6 +15,21 @@
 
 #include "rayo.h"
 
+/*
+ * lang.c: the language of the command's messages, chosen once by
+ * cli_lang_init from --lang (anywhere before "--"; a leading one, before
+ * the subcommand, is taken out of argv) or the environment; an unknown
+ * --lang is one line and CLI_EXIT_USAGE.  Every human message is marked:
+ * _("...") translates it, N_("...") marks it for a later _(), and
+ * _n("one", "many", n) picks the plural form (docs/i18n.md).
+ */
+rayo_lang cli_lang(void);
+int cli_lang_init(int *argc, char **argv);
+#define _(msgid) rayo_gettext(cli_lang(), msgid)
+#define N_(msgid) msgid
+#define _n(singular, plural, count) \
+    rayo_ngettext(cli_lang(), singular, plural, count)
+
 enum {
     CLI_EXIT_OK = 0,
     CLI_EXIT_FAILURE = 1, /* output failures; compare: inconsistent;
@@ -81,6 +96,19 @@ void cli_vsayf(const char *format, va_list args)
     ;
 
 /* Prints "rayo: MESSAGE" on stderr; returns CLI_EXIT_USAGE. */
+/* quote.c: a command-line value as a message quotes it, apostrophes
+ * included: whole when short, else a prefix and its length
+ * ('77777777…' (100000 characters)).  Valid until four more quotes. */
+const char *cli_quote(const char *text);
+
+/* suggest.c: the one of names nearest to word (a typo away), or NULL;
+ * cli_unknown_exercise: "OPTION: unknown exercise 'TEXT'; did you mean
+ * ej1? The exercises are ej1, ej2, ej3", returns CLI_EXIT_USAGE. */
+const char *cli_nearest(const char *word, const char *const *names,
+                        size_t count);
+int cli_unknown_exercise(const char *option, const char *text,
+                         const char *const *names, size_t count);
+
 /* JSON strings (json_text.c): s with control bytes as JSON escapes and
  * bytes that are not UTF-8 as U+FFFD; cli_json_text_line first escapes
  * s as the text report does (one line, \n, \x1b, ...) and cuts it at
@@ -135,7 +163,8 @@ int cli_course_reference(const char *exercise, char *path, size_t room);
 int cli_image_operand(const char *operand, char *path, size_t room,
                       const char **resolved);
 
-/* 1 when standard output is a terminal (so binary output is refused). */
+/* 1 when standard output is a terminal (an image is then shown as
+   `rayo view` shows it, not written). */
 int cli_stdout_is_terminal(void);
 
 #endif

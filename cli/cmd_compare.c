@@ -32,77 +32,80 @@ typedef struct compare_request {
 static void print_help(void)
 {
     printf(
-        "usage: rayo compare REFERENCE IMAGE [--tolerance PX] [--levels N]\n"
-        "                    [--exercise NAME] [--diff OUT.png] [--json]\n\n"
-        "Tells whether IMAGE shows what REFERENCE shows and, if not, what "
-        "is likely\nwrong.  course:ej1, course:ej2 and course:ej3 name the "
-        "course's reference\nimages, installed with rayo (a file of that "
-        "very name wins).  Two bilevel images (PBM, or only black and "
-        "white pixels) are compared as\nblack/white masks; when either is "
-        "gray or colour, values are compared (see\nbelow).  An image of "
-        "another size is laid on the reference centred.\n\n"
-        "Masks: it prints the sizes, the mismatched pixels, the IoU of the "
-        "black\nregions, the farthest mismatch from the reference's outline "
-        "(distance to the\nnearest reference pixel of the other colour), "
-        "the offset and scale between the\nblack shapes, and a verdict.\n"
-        "Gray and colour: per channel the pixels off by more than --levels, "
-        "the largest\ndifference, RMSE and PSNR; where the differing pixels "
-        "lie: at the reference's\noutlines and shadow edges, in shading "
-        "where the reference takes their value\nwithin the tolerance, or "
-        "unexplained; and a verdict.\n\n"
-        "Verdicts:\n"
-        "  identical     every pixel agrees (values: every sample within "
-        "--levels)\n"
-        "  consistent    every mismatch within the tolerance of the "
-        "outline (values:\n"
-        "                every difference explained), the shapes agreeing "
-        "there (the\n"
-        "                mismatches at most 75%% of the pixels near the "
-        "outline, and\n"
-        "                fewer than chance), and no whole-pixel shift "
-        "explains them\n"
-        "  inconsistent  anything else; then a diagnosis when one fits: "
-        "flipped,\n"
-        "                inverted, transposed, shifted, scaled, different "
-        "size, empty,\n"
-        "                not a sphere, another sphere; for values also "
-        "channels in\n"
-        "                another order, an offset, values wrapped past 255, "
-        "and the\n"
-        "                course's typical mistakes (no shadows, no ambient, "
-        "...) when\n"
-        "                the reference shows the course's scene 2 or 3\n\n"
-        "options:\n"
-        "      --tolerance PX  pixels a mismatch may be from the outline; "
-        "values: from an\n"
-        "                      edge or the same value (default 2)\n"
-        "      --levels N      gray and colour: levels (of 255) a value may "
-        "be off\n"
-        "                      and still agree (0-255, default 1)\n"
-        "      --exercise NAME the course exercise whose mistakes to try "
-        "(ej2, ej3; ej1's\n"
-        "                      images are masks), or none; default: the "
-        "one whose\n"
-        "                      scene the reference shows\n"
-        "      --diff OUT.png  write the difference picture (reference's "
-        "size; not\n"
-        "                      an input):\n"
-        "                        black, white  both agree\n"
-        "                        red           black only in the reference "
-        "(missing)\n"
-        "                        blue          black only in the image "
-        "(extra)\n"
-        "                      gray and colour: the reference dimmed, "
-        "differences\n"
-        "                      painted amber (explained) or red "
-        "(unexplained),\n"
-        "                      brighter the larger\n"
-        "      --json          the report as one JSON object\n"
-        "  -h, --help          this help\n\n"
-        "exit status: 0 identical or consistent, 1 inconsistent or --diff "
-        "could not be\nwritten, 2 bad options or an input that cannot be "
-        "read (missing, unreadable,\na directory, malformed or too "
-        "large).\n");
+        _("usage: rayo compare REFERENCE IMAGE [--tolerance PX] [--levels N]\n"
+          "                    [--exercise NAME] [--diff OUT.png] [--json]\n\n"
+          "Tells whether IMAGE shows what REFERENCE shows and, if not, what "
+          "is likely\nwrong.  course:ej1, course:ej2 and course:ej3 name the "
+          "course's reference\nimages, installed with rayo (a file of that "
+          "very name wins).  Two bilevel images (PBM, or only black and "
+          "white pixels) are compared as\nblack/white masks; when either is "
+          "gray or colour, values are compared (see\nbelow).  An image of "
+          "another size is laid on the reference centred.\n\n"
+          "Masks: it prints the sizes, the mismatched pixels, the IoU of the "
+          "black\nregions, the farthest mismatch from the reference's outline "
+          "(distance to the\nnearest reference pixel of the other colour), "
+          "the offset and scale between the\nblack shapes, and a verdict.\n"
+          "Gray and colour: per channel the pixels off by more than --levels, "
+          "the largest\ndifference, RMSE and PSNR; where the differing pixels "
+          "lie: at the reference's\noutlines and shadow edges, in shading "
+          "where the reference takes their value\nwithin the tolerance, or "
+          "unexplained; and a verdict.\n\n"
+          "Verdicts:\n"
+          "  identical     every pixel agrees (values: every sample within "
+          "--levels)\n"
+          "  consistent    every mismatch within the tolerance of the "
+          "outline (values:\n"
+          "                every difference explained), the shapes agreeing "
+          "there (the\n"
+          "                mismatches at most 75%% of the pixels near the "
+          "outline, and\n"
+          "                fewer than chance), and no whole-pixel shift "
+          "explains them\n"
+          "  inconsistent  anything else; then a diagnosis when one fits: "
+          "flipped,\n"
+          "                inverted, transposed, shifted, scaled, different "
+          "size, empty,\n"
+          "                not a sphere, another sphere; for values also "
+          "channels in\n"
+          "                another order, an offset, values wrapped past 255, "
+          "and the\n"
+          "                course's typical mistakes (no shadows, no ambient, "
+          "...) when\n"
+          "                the reference shows the course's scene 2 or 3\n\n"
+          "options:\n"
+          "      --tolerance PX  pixels a mismatch may be from the outline; "
+          "values: from an\n"
+          "                      edge or the same value (default 2)\n"
+          "      --levels N      gray and colour: levels (of 255) a value may "
+          "be off\n"
+          "                      and still agree (0-255, default 1)\n"
+          "      --exercise NAME the course exercise whose mistakes to try "
+          "(ej2, ej3; ej1's\n"
+          "                      images are masks), or none; default: the "
+          "one whose\n"
+          "                      scene the reference shows\n"
+          "      --diff OUT.png  write the difference picture (reference's "
+          "size; not\n"
+          "                      an input):\n"
+          "                        black, white  both agree\n"
+          "                        red           black only in the reference "
+          "(missing)\n"
+          "                        blue          black only in the image "
+          "(extra)\n"
+          "                      gray and colour: the reference dimmed, "
+          "differences\n"
+          "                      painted amber (explained) or red "
+          "(unexplained),\n"
+          "                      brighter the larger\n"
+          "      --json          the report as one JSON object\n"
+          "      --lang es|en    the language of messages (default: from the\n"
+          "                      environment: LANGUAGE, LC_ALL, LC_MESSAGES, "
+          "LANG)\n"
+          "  -h, --help          this help\n\n"
+          "exit status: 0 identical or consistent, 1 inconsistent or --diff "
+          "could not be\nwritten, 2 bad options or an input that cannot be "
+          "read (missing, unreadable,\na directory, malformed or too "
+          "large).\n"));
 }
 
 static int parse_request(int argc, char **argv, compare_request *req)
@@ -113,6 +116,7 @@ static int parse_request(int argc, char **argv, compare_request *req)
         {"exercise", required_argument, NULL, 'e'},
         {"diff", required_argument, NULL, 'd'},
         {"json", no_argument, NULL, 'j'},
+        {"lang", required_argument, NULL, 'L'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
     int c;
@@ -125,9 +129,9 @@ static int parse_request(int argc, char **argv, compare_request *req)
                                   &req->options.tolerance))
                 return CLI_EXIT_USAGE;
             if (!(req->options.tolerance >= 0))
-                return cli_usage_error("--tolerance: '%s' is negative; "
-                                       "expected pixels, 0 or more",
-                                       optarg);
+                return cli_usage_error(_("--tolerance: %s is negative; "
+                                         "expected pixels, 0 or more"),
+                                       cli_quote(optarg));
             break;
         case 'd':
             req->diff = optarg;
@@ -143,15 +147,19 @@ static int parse_request(int argc, char **argv, compare_request *req)
             if (strcmp(optarg, "none") == 0) {
                 req->options.course = RAYO_COMPARE_COURSE_NONE;
             } else if (rayo_course_find(optarg) == RAYO_COURSE_EXERCISES) {
-                return cli_usage_error("--exercise: unknown exercise '%s'; "
-                                       "expected ej1, ej2, ej3 or none",
-                                       optarg);
+                {
+                static const char *const names[] = {"ej1", "ej2", "ej3",
+                                                    "none"};
+                return cli_unknown_exercise("--exercise", optarg, names, 4);
+            }
             } else {
                 req->options.course = (int)rayo_course_find(optarg);
             }
             break;
         case 'j':
             req->json = 1;
+            break;
+        case 'L': /* --lang: read before (lang.c) */
             break;
         case 'h':
             print_help();
@@ -162,12 +170,12 @@ static int parse_request(int argc, char **argv, compare_request *req)
     }
     if (argc - optind != 2)
         return cli_wrong_operands("compare", argc - optind,
-                                  "REFERENCE and IMAGE");
+                                  N_("REFERENCE and IMAGE"));
     req->reference = argv[optind];
     req->image = argv[optind + 1];
     if (strcmp(req->reference, "-") == 0 && strcmp(req->image, "-") == 0)
-        return cli_usage_error("compare: only one of REFERENCE and IMAGE "
-                               "can be '-' (standard input)");
+        return cli_usage_error(_("compare: only one of REFERENCE and IMAGE "
+                                 "can be '-' (standard input)"));
     if ((c = cli_image_operand(req->reference, req->course_paths[0],
                                sizeof req->course_paths[0],
                                &req->reference)) != CLI_EXIT_OK ||
@@ -177,12 +185,14 @@ static int parse_request(int argc, char **argv, compare_request *req)
         return c;
     if (req->diff != NULL && (cli_same_file(req->diff, req->reference) ||
                               cli_same_file(req->diff, req->image)))
-        return cli_usage_error("--diff: '%s' is the %s; refusing to "
-                               "overwrite an input, give another file",
-                               req->diff,
-                               cli_same_file(req->diff, req->reference)
-                                   ? "reference"
-                                   : "image");
+        return cli_usage_error(cli_same_file(req->diff, req->reference)
+                                   ? _("--diff: '%s' is the reference; "
+                                       "refusing to overwrite an input, give "
+                                       "another file")
+                                   : _("--diff: '%s' is the image; refusing "
+                                       "to overwrite an input, give another "
+                                       "file"),
+                               req->diff);
     return CLI_EXIT_OK;
 }
 
@@ -192,7 +202,7 @@ static int print_report(const rayo_compare_report *report, int json)
                        : rayo_compare_format_text(report, NULL, 0);
     char *text = malloc(need + 1);
     if (text == NULL)
-        return cli_usage_error("out of memory");
+        return cli_usage_error(_("out of memory"));
     if (json)
         rayo_compare_format_json(report, text, need + 1);
     else
@@ -241,7 +251,7 @@ static int compare_images(const compare_request *req,
         return status;
     if ((status = print_report(&report, req->json)) != CLI_EXIT_OK)
         return status;
-    if ((status = cli_flush_text(stdout, "standard output")) != CLI_EXIT_OK)
+    if ((status = cli_flush_text(stdout, _("standard output"))) != CLI_EXIT_OK)
         return status;
     return report.verdict == RAYO_VERDICT_INCONSISTENT ? CLI_EXIT_FAILURE
                                                         : CLI_EXIT_OK;

@@ -45,76 +45,80 @@ static void print_help(void)
     size_t count, i;
     const rayo_grade_exercise *exercises = rayo_grade_exercises(&count);
     printf(
-        "usage: rayo grade [OPTIONS] SOURCE.c [MORE.c ...]\n"
-        "       rayo grade [OPTIONS] FOLDER\n"
-        "       rayo grade [OPTIONS] --each DIRECTORY\n\n"
-        "Checks a submission the way the course does: it compiles with "
-        "cc -std=c99\n-Wall -Werror -pedantic ... -lm; the functions the "
-        "exercise's statement asks\nfor have its signatures and return the "
-        "right values (ej1: producto_interno,\nnorma, intersecta_esfera; "
-        "ej2 and ej3: all of theirs, on inputs chosen to\nreveal the usual "
-        "mistakes); it runs with no input to exit status 0 under\nlimits; "
-        "its output is strict plain PBM, PGM or PPM of the right size; its "
-        "image\nis consistent with the reference (as 'rayo compare' "
-        "judges); and valgrind\nfinds no invalid access and no leak.  Every "
-        "failure is explained.\n\n"
-        "options:\n"
-        "      --exercise NAME    the exercise (default ej1)\n"
-        "      --reference FILE   compare with this image instead of the "
-        "exercise's\n"
-        "                         reference rendered by rayo; 'course': "
-        "the course's\n"
-        "                         own image (referencia-catedra-ejN.png)\n"
-        "      --diff OUT.png     keep the difference picture\n"
-        "      --json             the report as JSON\n"
-        "      --each             DIRECTORY holds one folder per student: "
-        "grade each,\n"
-        "                         print a table\n"
-        "  -j, --jobs N           with --each, grade N submissions at once "
-        "(default:\n"
-        "                         the number of CPUs); the table is the "
-        "same\n"
-        "      --csv FILE         also write one CSV row per submission "
-        "('-': to\n"
-        "                         standard output, instead of the report)\n"
-        "      --gradescope FILE  also write Gradescope's results.json for "
-        "the\n"
-        "                         submission (not with --each)\n"
-        "      --points LIST      points per criterion for --csv and "
-        "--gradescope\n"
-        "                         (default compile=10,functions=20,run=10,"
-        "output=10,\n"
-        "                         image=40,valgrind=10)\n"
-        "      --timeout SEC      wall-clock limit per run (default 10)\n"
-        "      --cpu SEC          CPU time limit per run (default 10)\n"
-        "      --memory MIB       address space limit (default 1024)\n"
-        "      --output-limit MIB largest file the program may write "
-        "(default 64)\n"
-        "      --processes N      process limit (default 64)\n"
-        "      --no-valgrind      skip the valgrind run\n"
-        "      --cc COMMAND       the compiler (default $CC, else cc)\n"
-        "      --sandbox MODE     auto (default): run everything in a "
-        "bubblewrap sandbox\n"
-        "                         when one can be made, else say it is "
-        "not isolated;\n"
-        "                         require: refuse to grade without it; "
-        "off: no sandbox\n"
-        "      --disk MIB         the sandbox's disk for the program "
-        "(default 256)\n"
-        "      --check            say whether the sandbox works here, "
-        "grade nothing\n"
-        "                         (exit 0 when it does, 2 when not)\n"
-        "  -h, --help             this help\n\n"
-        "exercises:\n");
+        _("usage: rayo grade [OPTIONS] SOURCE.c [MORE.c ...]\n"
+          "       rayo grade [OPTIONS] FOLDER\n"
+          "       rayo grade [OPTIONS] --each DIRECTORY\n\n"
+          "Checks a submission the way the course does: it compiles with "
+          "cc -std=c99\n-Wall -Werror -pedantic ... -lm; the functions the "
+          "exercise's statement asks\nfor have its signatures and return the "
+          "right values (ej1: producto_interno,\nnorma, intersecta_esfera; "
+          "ej2 and ej3: all of theirs, on inputs chosen to\nreveal the usual "
+          "mistakes); it runs with no input to exit status 0 under\nlimits; "
+          "its output is strict plain PBM, PGM or PPM of the right size; its "
+          "image\nis consistent with the reference (as 'rayo compare' "
+          "judges); and valgrind\nfinds no invalid access and no leak.  Every "
+          "failure is explained.\n\n"
+          "options:\n"
+          "      --exercise NAME    the exercise (default ej1)\n"
+          "      --reference FILE   compare with this image instead of the "
+          "exercise's\n"
+          "                         reference rendered by rayo; 'course': "
+          "the course's\n"
+          "                         own image (referencia-catedra-ejN.png)\n"
+          "      --diff OUT.png     keep the difference picture\n"
+          "      --json             the report as JSON\n"
+          "      --each             DIRECTORY holds one folder per student: "
+          "grade each,\n"
+          "                         print a table\n"
+          "  -j, --jobs N           with --each, grade N submissions at once "
+          "(default:\n"
+          "                         the number of CPUs); the table is the "
+          "same\n"
+          "      --csv FILE         also write one CSV row per submission "
+          "('-': to\n"
+          "                         standard output, instead of the report)\n"
+          "      --gradescope FILE  also write Gradescope's results.json for "
+          "the\n"
+          "                         submission (not with --each)\n"
+          "      --points LIST      points per criterion for --csv and "
+          "--gradescope\n"
+          "                         (default compile=10,functions=20,run=10,"
+          "output=10,\n"
+          "                         image=40,valgrind=10)\n"
+          "      --timeout SEC      wall-clock limit per run (default 10)\n"
+          "      --cpu SEC          CPU time limit per run (default 10)\n"
+          "      --memory MIB       address space limit (default 1024)\n"
+          "      --output-limit MIB largest file the program may write "
+          "(default 64)\n"
+          "      --processes N      process limit (default 64)\n"
+          "      --no-valgrind      skip the valgrind run\n"
+          "      --cc COMMAND       the compiler (default $CC, else cc)\n"
+          "      --sandbox MODE     auto (default): run everything in a "
+          "bubblewrap sandbox\n"
+          "                         when one can be made, else say it is "
+          "not isolated;\n"
+          "                         require: refuse to grade without it; "
+          "off: no sandbox\n"
+          "      --disk MIB         the sandbox's disk for the program "
+          "(default 256)\n"
+          "      --check            say whether the sandbox works here, "
+          "grade nothing\n"
+          "                         (exit 0 when it does, 2 when not)\n"
+          "      --lang es|en       the language of messages (default: from "
+          "the\n"
+          "                         environment: LANGUAGE, LC_ALL, "
+          "LC_MESSAGES, LANG)\n"
+          "  -h, --help             this help\n\n"
+          "exercises:\n"));
     for (i = 0; i < count; i++)
         printf("  %-8s %s\n", exercises[i].name, exercises[i].title);
-    printf("\nThe report's first line says how the submission was isolated "
-           "(docs/grading.md\nsays what the sandbox stops and what it does "
-           "not).\n\n"
-           "exit status: 0 everything passed, 1 something failed or an "
-           "output could not be\nwritten, 2 bad options or an input that "
-           "cannot be read (missing, unreadable,\na directory, malformed), "
-           "or --sandbox=require without a sandbox.\n");
+    printf(_("\nThe report's first line says how the submission was isolated "
+             "(docs/grading.md\nsays what the sandbox stops and what it does "
+             "not).\n\n"
+             "exit status: 0 everything passed, 1 something failed or an "
+             "output could not be\nwritten, 2 bad options or an input that "
+             "cannot be read (missing, unreadable,\na directory, malformed), "
+             "or --sandbox=require without a sandbox.\n"));
 }
 
 static int parse_seconds(const char *option, const char *text, double *value)
@@ -122,9 +126,9 @@ static int parse_seconds(const char *option, const char *text, double *value)
     if (!cli_parse_double(option, text, value))
         return 0;
     if (!(*value > 0 && *value <= 3600)) {
-        cli_usage_error("%s: '%s' is out of range; expected seconds, more "
-                        "than 0 and at most 3600",
-                        option, text);
+        cli_usage_error(_("%s: %s is out of range; expected seconds, more "
+                          "than 0 and at most 3600"),
+                        option, cli_quote(text));
         return 0;
     }
     return 1;
@@ -143,7 +147,7 @@ enum {
     OPT_EXERCISE = 256, OPT_REFERENCE, OPT_DIFF, OPT_JSON, OPT_EACH,
     OPT_TIMEOUT, OPT_CPU, OPT_MEMORY, OPT_OUTPUT_LIMIT, OPT_PROCESSES,
     OPT_NO_VALGRIND, OPT_CC, OPT_CSV, OPT_GRADESCOPE, OPT_POINTS,
-    OPT_SANDBOX, OPT_DISK, OPT_CHECK
+    OPT_SANDBOX, OPT_DISK, OPT_CHECK, OPT_LANG
 };
 
 static int parse_option(int c, grade_request *req)
@@ -152,10 +156,14 @@ static int parse_option(int c, grade_request *req)
     switch (c) {
     case OPT_EXERCISE:
         o->exercise = rayo_grade_exercise_find(optarg);
-        if (o->exercise == NULL)
-            return cli_usage_error("--exercise: unknown exercise '%s'; "
-                                   "see 'rayo grade --help'",
-                                   optarg);
+        if (o->exercise == NULL) {
+            const char *names[16];
+            size_t count, i;
+            const rayo_grade_exercise *all = rayo_grade_exercises(&count);
+            for (i = 0; i < count && i < 16; i++)
+                names[i] = all[i].name;
+            return cli_unknown_exercise("--exercise", optarg, names, i);
+        }
         return CLI_EXIT_OK;
     case OPT_REFERENCE: o->reference = optarg; return CLI_EXIT_OK;
     case OPT_DIFF: o->diff = optarg; return CLI_EXIT_OK;
@@ -193,14 +201,15 @@ static int parse_option(int c, grade_request *req)
         else if (strcmp(optarg, "off") == 0)
             o->sandbox = RAYO_GRADE_SANDBOX_OFF;
         else
-            return cli_usage_error("--sandbox: '%s' is not a mode; "
-                                   "expected auto, require or off",
-                                   optarg);
+            return cli_usage_error(_("--sandbox: %s is not a mode; "
+                                     "expected auto, require or off"),
+                                   cli_quote(optarg));
         return CLI_EXIT_OK;
     case OPT_DISK:
         return parse_mib("--disk", optarg, &o->disk) ? CLI_EXIT_OK
                                                      : CLI_EXIT_USAGE;
     case OPT_CHECK: req->check = 1; return CLI_EXIT_OK;
+    case OPT_LANG: return CLI_EXIT_OK; /* read before (lang.c) */
     case OPT_PROCESSES:
         return cli_parse_uint("--processes", optarg, 1, 100000,
                               &o->processes)
@@ -231,6 +240,7 @@ static int parse_request(int argc, char **argv, grade_request *req)
         {"sandbox", required_argument, NULL, OPT_SANDBOX},
         {"disk", required_argument, NULL, OPT_DISK},
         {"check", no_argument, NULL, OPT_CHECK},
+        {"lang", required_argument, NULL, OPT_LANG},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
     int c;
@@ -250,42 +260,42 @@ static int parse_request(int argc, char **argv, grade_request *req)
     }
     if (req->check) {
         if (optind < argc)
-            return cli_usage_error("--check: grades nothing; no submission "
-                                   "is expected");
+            return cli_usage_error(_("--check: grades nothing; no submission "
+                                     "is expected"));
         return CLI_EXIT_OK;
     }
     if (optind >= argc)
-        return cli_usage_error("grade: no submission given; expected "
-                               "SOURCE.c, a folder, or --each DIRECTORY");
+        return cli_usage_error(_("grade: no submission given; expected "
+                                 "SOURCE.c, a folder, or --each DIRECTORY"));
     if (req->each && argc - optind != 1)
-        return cli_usage_error("grade: --each takes one DIRECTORY, not %d "
-                               "arguments",
+        return cli_usage_error(_("grade: --each takes one DIRECTORY, not %d "
+                                 "arguments"),
                                argc - optind);
     if (req->each && req->options.diff != NULL)
-        return cli_usage_error("--diff: applies to one submission, not to "
-                               "--each");
+        return cli_usage_error(_("--diff: applies to one submission, not to "
+                                 "--each"));
     if (req->each && req->gradescope != NULL)
-        return cli_usage_error("--gradescope: Gradescope grades one "
-                               "submission per run, not --each; use --csv "
-                               "for a class");
+        return cli_usage_error(_("--gradescope: Gradescope grades one "
+                                 "submission per run, not --each; use --csv "
+                                 "for a class"));
     if (req->csv != NULL && strcmp(req->csv, "-") == 0 && req->json)
-        return cli_usage_error("--csv -: standard output already carries "
-                               "the JSON; give --csv a FILE");
+        return cli_usage_error(_("--csv -: standard output already carries "
+                                 "the JSON; give --csv a FILE"));
     if (req->gradescope != NULL && strcmp(req->gradescope, "-") == 0 &&
         (req->json || (req->csv != NULL && strcmp(req->csv, "-") == 0)))
-        return cli_usage_error("--gradescope -: standard output already "
-                               "carries the report; give a FILE");
+        return cli_usage_error(_("--gradescope -: standard output already "
+                                 "carries the report; give a FILE"));
     if (req->options.reference != NULL &&
         strcmp(req->options.reference, "course") == 0) {
         const char *name = req->options.exercise->name;
         if (!cli_course_reference(name, req->course_reference,
                                   sizeof req->course_reference))
-            return cli_usage_error("--reference course: the course's image "
-                                   "for %s (referencia-catedra-%s.png) is "
-                                   "not installed; looked in "
-                                   "$RAYO_DATA_DIR/course and beside the "
-                                   "command (../data/course, "
-                                   "../share/rayo/course)",
+            return cli_usage_error(_("--reference course: the course's image "
+                                     "for %s (referencia-catedra-%s.png) is "
+                                     "not installed; looked in "
+                                     "$RAYO_DATA_DIR/course and beside the "
+                                     "command (../data/course, "
+                                     "../share/rayo/course)"),
                                    name, name);
         req->options.reference = req->course_reference;
     }
@@ -401,17 +411,22 @@ static void print_text(const rayo_grade_report *r)
                      rayo_grade_criterion_name(c));
         }
     }
-    if (failed > 0)
-        printf("\nFAIL: %zu of %d criteria failed (%s)", failed,
-               RAYO_GRADE_CRITERIA, failed_names);
-    else
-        printf("\nPASS: %zu of %d criteria passed", RAYO_GRADE_CRITERIA -
-                                                        skipped,
-               RAYO_GRADE_CRITERIA);
+    /* The PASS and FAIL tokens stay as they are in every language. */
+    if (failed > 0) {
+        printf("\nFAIL: ");
+        printf(_n("%zu of %d criterion failed (%s)",
+                  "%zu of %d criteria failed (%s)", RAYO_GRADE_CRITERIA),
+               failed, RAYO_GRADE_CRITERIA, failed_names);
+    } else {
+        printf("\nPASS: ");
+        printf(_n("%zu of %d criterion passed", "%zu of %d criteria passed",
+                  RAYO_GRADE_CRITERIA),
+               RAYO_GRADE_CRITERIA - skipped, RAYO_GRADE_CRITERIA);
+    }
     if (skipped > 0)
-        printf(", %zu skipped", skipped);
+        printf(_n(", %zu skipped", ", %zu skipped", skipped), skipped);
     if (warnings > 0)
-        printf(", %zu warning%s", warnings, warnings == 1 ? "" : "s");
+        printf(_n(", %zu warning", ", %zu warnings", warnings), warnings);
     printf("\n");
 }
 
@@ -499,7 +514,7 @@ static FILE *start_export(char **text, size_t *size, const char *path)
     *size = 0;
     stream = open_memstream(text, size);
     if (stream == NULL)
-        cli_sayf("%s: out of memory", path);
+        cli_sayf(_("%s: out of memory"), path);
     return stream;
 }
 
@@ -510,7 +525,7 @@ static int finish_export(FILE *stream, char **text, size_t *size,
     int status;
     if (fclose(stream) != 0 || *text == NULL) {
         free(*text);
-        cli_sayf("%s: out of memory", path);
+        cli_sayf(_("%s: out of memory"), path);
         return CLI_EXIT_FAILURE;
     }
     status = write_whole(path, *text, *size);
@@ -736,7 +751,9 @@ static int grade_each(const char *dir, grade_request *req)
     if (req->json)
         printf("]\n");
     else if (!p.quiet)
-        printf("\n%zu of %zu submissions passed\n", p.passed, count);
+        printf(_n("\n%zu of %zu submission passed\n",
+                  "\n%zu of %zu submissions passed\n", count),
+               p.passed, count);
     status = p.passed == count ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
     if (p.csv != NULL) {
         if (p.cancelled || cli_interrupted() != 0) {
@@ -793,8 +810,8 @@ int cli_grade(int argc, char **argv)
             return isolated ? CLI_EXIT_OK : CLI_EXIT_USAGE;
         }
         if (!isolated)
-            return cli_usage_error("grade: --sandbox=require: %s; refusing "
-                                   "to grade", text);
+            return cli_usage_error(_("grade: --sandbox=require: %s; refusing "
+                                     "to grade"), text);
     }
     req.options.cancelled = stop_requested;
     cli_interrupt_catch();

@@ -7,6 +7,9 @@
  * 90 degree field of view, plain PBM on standard output.  A scene file
  * with nothing in it, or without a camera, still renders, with one line
  * of warning saying so (an empty picture is rarely what was meant).
+ * An image bound for a terminal (standard output on one) is shown as
+ * `rayo view` would, with one line saying how to save it, never poured
+ * out as bytes.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -55,71 +58,75 @@ static int stop_requested(void *context, uint32_t done, uint32_t total)
 static void print_help(void)
 {
     printf(
-        "usage: rayo [render] [OPTIONS]\n"
-        "       rayo render SCENE [OPTIONS]\n\n"
-        "Traces rays from the camera through each pixel.  With no options: "
-        "the\nassignment's sphere (centre 0.5,0.75,1.9, radius 0.8), "
-        "640x480, field of view 90,\nblack where a ray hits it, as plain "
-        "PBM (P1) on standard output.  SCENE is a\nscene file "
-        "(docs/scene-format.md): camera, lights, materials, spheres, "
-        "planes,\ntriangles; the options below override its camera and "
-        "settings.\n\n"
-        "options:\n"
-        "  -W, --width N          image width in pixels (1-65536; default "
-        "640)\n"
-        "  -H, --height N         image height in pixels (1-65536; default "
-        "480)\n"
-        "                         at most 2^30 pixels in all\n"
-        "      --fov DEG          horizontal field of view, degrees, "
-        "0 < DEG < 180 (default 90)\n"
-        "      --origin X,Y,Z     camera position (default 0,0,0); it looks "
-        "down +z, +y up\n"
-        "                         (or at the scene's look-at point)\n"
-        "      --shade MODE       hit (black/white, PBM), course-gray (PGM), "
-        "course-color\n"
-        "                         (PPM), phong (PPM) or course-tp1 (PPM); "
-        "default: the\n"
-        "                         scene's 'shade', else phong for a scene, "
-        "hit without one\n"
-        "      --samples N        N x N rays per pixel, stratified (1-16; "
-        "default 1)\n"
-        "      --depth N          phong, course-tp1: mirror bounces followed\n"
-        "                         (0-64; default 5)\n"
-        "      --sphere CX,CY,CZ,R\n"
-        "                         a sphere (repeatable; R > 0); the first "
-        "replaces the\n"
-        "                         assignment's sphere\n"
-        "  -o, --output FILE      write to FILE ('-' = standard output, "
-        "the default);\n"
-        "                         a file appears whole or not at all\n"
-        "      --format FMT       the mode's Netpbm format (pbm, pgm, ppm), "
-        "png, bmp or jpeg\n"
-        "                         (default: from FILE's extension, else "
-        "the mode's\n"
-        "                         Netpbm format)\n"
-        "      --raw              raw Netpbm (P4-P6) instead of plain "
-        "(P1-P3)\n"
-        "      --quality N        JPEG quality, 1-100 (default 90)\n"
-        "  -j, --threads N        threads reading the scene, building its "
-        "hierarchy\n"
-        "                         and rendering (default: one per CPU)\n"
-        "  -q, --quiet            no progress bar (otherwise drawn on a "
-        "terminal's\n"
-        "                         stderr for renders longer than a "
-        "second)\n"
-        "      --preview          then show the image in the terminal, "
-        "as 'rayo view'\n"
-        "                         does: on stdout, or on stderr when the "
-        "image itself\n"
-        "                         goes to stdout\n"
-        "  -h, --help             this help\n"
-        "  -V, --version          the version\n\n"
-        "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
-        "(rows from the\ntop); its ray has direction (x, -y, w/(2 "
-        "tan(fov/2))), normalised.\n\n"
-        "exit status: 0 success, 1 the output could not be written, 2 bad "
-        "options or an\ninput that cannot be read (SCENE missing, "
-        "unreadable, a directory, malformed).\n");
+        _("usage: rayo [render] [OPTIONS]\n"
+          "       rayo render SCENE [OPTIONS]\n\n"
+          "Traces rays from the camera through each pixel.  With no options: "
+          "the\nassignment's sphere (centre 0.5,0.75,1.9, radius 0.8), "
+          "640x480, field of view 90,\nblack where a ray hits it, as plain "
+          "PBM (P1) on standard output.  SCENE is a\nscene file "
+          "(docs/scene-format.md): camera, lights, materials, spheres, "
+          "planes,\ntriangles; the options below override its camera and "
+          "settings.\n\n"
+          "options:\n"
+          "  -W, --width N          image width in pixels (1-65536; default "
+          "640)\n"
+          "  -H, --height N         image height in pixels (1-65536; default "
+          "480)\n"
+          "                         at most 2^30 pixels in all\n"
+          "      --fov DEG          horizontal field of view, degrees, "
+          "0 < DEG < 180 (default 90)\n"
+          "      --origin X,Y,Z     camera position (default 0,0,0); it looks "
+          "down +z, +y up\n"
+          "                         (or at the scene's look-at point)\n"
+          "      --shade MODE       hit (black/white, PBM), course-gray (PGM), "
+          "course-color\n"
+          "                         (PPM), phong (PPM) or course-tp1 (PPM); "
+          "default: the\n"
+          "                         scene's 'shade', else phong for a scene, "
+          "hit without one\n"
+          "      --samples N        N x N rays per pixel, stratified (1-16; "
+          "default 1)\n"
+          "      --depth N          phong, course-tp1: mirror bounces followed\n"
+          "                         (0-64; default 5)\n"
+          "      --sphere CX,CY,CZ,R\n"
+          "                         a sphere (repeatable; R > 0); the first "
+          "replaces the\n"
+          "                         assignment's sphere\n"
+          "  -o, --output FILE      write to FILE ('-' = standard output, "
+          "the default);\n"
+          "                         a file appears whole or not at all\n"
+          "      --format FMT       the mode's Netpbm format (pbm, pgm, ppm), "
+          "png, bmp or jpeg\n"
+          "                         (default: from FILE's extension, else "
+          "the mode's\n"
+          "                         Netpbm format)\n"
+          "      --raw              raw Netpbm (P4-P6) instead of plain "
+          "(P1-P3)\n"
+          "      --quality N        JPEG quality, 1-100 (default 90)\n"
+          "  -j, --threads N        threads reading the scene, building its "
+          "hierarchy\n"
+          "                         and rendering (default: one per CPU)\n"
+          "  -q, --quiet            no progress bar (otherwise drawn on a "
+          "terminal's\n"
+          "                         stderr for renders longer than a "
+          "second)\n"
+          "      --preview          then show the image in the terminal, "
+          "as 'rayo view'\n"
+          "                         does: on stdout, or on stderr when the "
+          "image itself\n"
+          "                         goes to stdout\n"
+          "      --lang es|en       the language of messages (default: from "
+          "the\n"
+          "                         environment: LANGUAGE, LC_ALL, "
+          "LC_MESSAGES, LANG)\n"
+          "  -h, --help             this help\n"
+          "  -V, --version          the version\n\n"
+          "pixels: column i, row j is the point x = i - w/2, y = j - h/2 "
+          "(rows from the\ntop); its ray has direction (x, -y, w/(2 "
+          "tan(fov/2))), normalised.\n\n"
+          "exit status: 0 success, 1 the output could not be written, 2 bad "
+          "options or an\ninput that cannot be read (SCENE missing, "
+          "unreadable, a directory, malformed).\n"));
 }
 
 static int parse_request(int argc, char **argv, render_request *req)
@@ -140,6 +147,7 @@ static int parse_request(int argc, char **argv, render_request *req)
         {"shade", required_argument, NULL, 'S'},
         {"samples", required_argument, NULL, 'N'},
         {"depth", required_argument, NULL, 'D'},
+        {"lang", required_argument, NULL, 'L'},
         {"help", no_argument, NULL, 'h'},
         {"version", no_argument, NULL, 'V'},
         {NULL, 0, NULL, 0}};
@@ -165,10 +173,10 @@ static int parse_request(int argc, char **argv, render_request *req)
             if (!cli_parse_double("--fov", optarg, &req->fov))
                 return CLI_EXIT_USAGE;
             if (!(req->fov > 0 && req->fov < 180))
-                return cli_usage_error("--fov: '%s' is out of range; "
-                                       "expected degrees strictly between 0 "
-                                       "and 180",
-                                       optarg);
+                return cli_usage_error(_("--fov: %s is out of range; "
+                                         "expected degrees strictly between "
+                                         "0 and 180"),
+                                       cli_quote(optarg));
             req->fov_given = 1;
             break;
         case 'O':
@@ -181,12 +189,12 @@ static int parse_request(int argc, char **argv, render_request *req)
             if (!cli_parse_numbers("--sphere", optarg, 4, "CX,CY,CZ,R", v))
                 return CLI_EXIT_USAGE;
             if (!(v[3] > 0))
-                return cli_usage_error("--sphere: radius in '%s' must be "
-                                       "greater than 0",
-                                       optarg);
+                return cli_usage_error(_("--sphere: radius in %s must be "
+                                         "greater than 0"),
+                                       cli_quote(optarg));
             if (req->sphere_count == MAX_SPHERES_ON_COMMAND_LINE)
-                return cli_usage_error("--sphere: more than %d spheres; use "
-                                       "a scene file",
+                return cli_usage_error(_("--sphere: more than %d spheres; use "
+                                         "a scene file"),
                                        MAX_SPHERES_ON_COMMAND_LINE);
             memcpy(req->spheres[req->sphere_count++], v, sizeof v);
             break;
@@ -210,10 +218,11 @@ static int parse_request(int argc, char **argv, render_request *req)
             break;
         case 'S':
             if (rayo_shade_mode_parse(optarg, &req->shade, NULL) != RAYO_OK)
-                return cli_usage_error("--shade: '%s' is not accepted; "
-                                       "expected hit, course-gray, "
-                                       "course-color, phong or course-tp1",
-                                       optarg);
+                return cli_usage_error(_("--shade: %s is not accepted; "
+                                         "expected hit, course-gray, "
+                                         "course-color, phong or "
+                                         "course-tp1"),
+                                       cli_quote(optarg));
             req->shade_given = 1;
             break;
         case 'N':
@@ -233,6 +242,8 @@ static int parse_request(int argc, char **argv, render_request *req)
         case 'P':
             req->preview = 1;
             break;
+        case 'L': /* --lang: read before (lang.c) */
+            break;
         case 'h':
             print_help();
             return -1;
@@ -246,21 +257,21 @@ static int parse_request(int argc, char **argv, render_request *req)
     if (optind < argc)
         req->scene_path = argv[optind++];
     if (optind < argc)
-        return cli_usage_error("render: unexpected argument '%s'; see 'rayo "
-                               "--help'",
-                               argv[optind]);
+        return cli_usage_error(_("render: unexpected argument %s; see "
+                                 "'rayo --help'"),
+                               cli_quote(argv[optind]));
     if (req->scene_path != NULL && strcmp(req->output, "-") != 0 &&
         cli_same_file(req->output, req->scene_path))
-        return cli_usage_error("--output: '%s' is the scene file; refusing "
-                               "to overwrite an input",
+        return cli_usage_error(_("--output: '%s' is the scene file; refusing "
+                                 "to overwrite an input"),
                                req->output);
     if (req->scene_path != NULL && req->sphere_count > 0)
-        return cli_usage_error("--sphere: cannot be combined with the scene "
-                               "file '%s'; put the sphere in the file",
+        return cli_usage_error(_("--sphere: cannot be combined with the scene "
+                                 "file '%s'; put the sphere in the file"),
                                req->scene_path);
     if ((unsigned long long)req->width * req->height > RAYO_MAX_PIXELS)
-        return cli_usage_error("--width %lu --height %lu: %llu pixels; "
-                               "expected at most %lu (2^30)",
+        return cli_usage_error(_("--width %lu --height %lu: %llu pixels; "
+                                 "expected at most %lu (2^30)"),
                                req->width, req->height,
                                (unsigned long long)req->width * req->height,
                                RAYO_MAX_PIXELS);
@@ -314,34 +325,29 @@ static int choose_format(const render_request *req, rayo_format *format)
     if (req->format != NULL) {
         if (rayo_format_parse(req->format, format, &err) != RAYO_OK ||
             (*format != netpbm && rayo_format_is_netpbm(*format)))
-            return cli_usage_error("--format: '%s' is not accepted; expected "
-                                   "%s, png, bmp or jpeg for a %s render",
-                                   req->format, ext,
+            return cli_usage_error(_("--format: %s is not accepted; "
+                                     "expected %s, png, bmp or jpeg for a %s "
+                                     "render"),
+                                   cli_quote(req->format), ext,
                                    rayo_shade_mode_name(mode));
     } else if (strcmp(req->output, "-") == 0 ||
                !is_regular_or_new(req->output)) {
         /* Standard output, devices and pipes: the mode's Netpbm format. */
         *format = netpbm;
     } else if (rayo_format_from_path(req->output, format, &err) != RAYO_OK) {
-        return cli_usage_error("--output: cannot tell the format of '%s' "
-                               "from its extension; expected .%s, .png, "
-                               ".bmp or .jpg, "
-                               "or give --format",
+        return cli_usage_error(_("--output: cannot tell the format of '%s' "
+                                 "from its extension; expected .%s, .png, "
+                                 ".bmp or .jpg, or give --format"),
                                req->output, ext);
     } else if (*format != netpbm && rayo_format_is_netpbm(*format)) {
-        return cli_usage_error("--output: '%s' is %s, which cannot hold a %s "
-                               "render; expected .%s, .png, .bmp or .jpg",
+        return cli_usage_error(_("--output: '%s' is %s, which cannot hold a %s "
+                                 "render; expected .%s, .png, .bmp or .jpg"),
                                req->output, upper_name(*format),
                                rayo_shade_mode_name(mode), ext);
     }
     if (req->raw && *format != netpbm)
-        return cli_usage_error("--raw: applies only to %s output, not %s",
+        return cli_usage_error(_("--raw: applies only to %s output, not %s"),
                                upper_name(netpbm), rayo_format_name(*format));
-    if (strcmp(req->output, "-") == 0 && cli_stdout_is_terminal() &&
-        (!rayo_format_is_netpbm(*format) || req->raw))
-        return cli_usage_error("refusing to write binary %s to a terminal; "
-                               "use -o FILE or a pipe",
-                               upper_name(*format));
     return CLI_EXIT_OK;
 }
 
@@ -370,34 +376,41 @@ static int build_camera(const render_request *req, rayo_camera *camera,
    for each part of a mesh file it left out. */
 static void warn_about_scene(const render_request *req)
 {
-    const char *name = strcmp(req->scene_path, "-") == 0 ? "standard input"
+    const char *name = strcmp(req->scene_path, "-") == 0 ? _("standard input")
                                                          : req->scene_path;
     int empty = rayo_scene_object_count(req->file.scene) == 0;
     int no_camera = !req->file.camera_given && !req->width_given &&
                     !req->height_given && !req->fov_given &&
                     !req->origin_given;
     if (empty && no_camera)
-        cli_sayf("warning: %s has no objects and no camera; the image is "
-                 "the background, %lux%lu",
+        cli_sayf(_("warning: %s has no objects and no camera; the image is "
+                   "the background, %lux%lu"),
                  name, (unsigned long)req->file.camera.width,
                  (unsigned long)req->file.camera.height);
     else if (empty)
-        cli_sayf("warning: %s has no objects; the image is the background",
+        cli_sayf(_("warning: %s has no objects; the image is the background"),
                  name);
     else if (no_camera)
-        cli_sayf("warning: %s has no camera; using the default one: "
-                 "%lux%lu, fov %g, at 0,0,0 looking down +z",
+        cli_sayf(_("warning: %s has no camera; using the default one: "
+                   "%lux%lu, fov %g, at 0,0,0 looking down +z"),
                  name, (unsigned long)req->file.camera.width,
                  (unsigned long)req->file.camera.height,
                  req->file.camera.fov_degrees);
     if (req->file.mesh_left_out > 0)
-        cli_sayf("warning: %s: %llu of its meshes' triangles have their "
-                 "corners on one line and were left out (%llu drawn)",
+        cli_sayf(_n("warning: %s: %llu of its meshes' triangles has its "
+                    "corners on one line and was left out (%llu drawn)",
+                    "warning: %s: %llu of its meshes' triangles have their "
+                    "corners on one line and were left out (%llu drawn)",
+                    (unsigned long)req->file.mesh_left_out),
                  name, req->file.mesh_left_out, req->file.mesh_triangles);
     if (req->file.mesh_ignored > 0)
-        cli_sayf("warning: %s: %llu OBJ statements that are not 'v' or 'f' "
-                 "(normals, texture coordinates, groups, materials) were "
-                 "not used",
+        cli_sayf(_n("warning: %s: %llu OBJ statement that is not 'v' or 'f' "
+                    "(normals, texture coordinates, groups, materials) was "
+                    "not used",
+                    "warning: %s: %llu OBJ statements that are not 'v' or "
+                    "'f' (normals, texture coordinates, groups, materials) "
+                    "were not used",
+                    (unsigned long)req->file.mesh_ignored),
                  name, req->file.mesh_ignored);
 }
 
@@ -479,10 +492,10 @@ int cli_render(int argc, char **argv)
     rayo_error err;
     cli_progress progress;
     cli_preview *preview = NULL;
-    int exit_status;
+    int exit_status, on_terminal;
 
     if (req == NULL)
-        return cli_usage_error("out of memory");
+        return cli_usage_error(_("out of memory"));
     req->width = RAYO_SEED_WIDTH;
     req->height = RAYO_SEED_HEIGHT;
     req->fov = RAYO_SEED_FOV;
@@ -521,17 +534,20 @@ int cli_render(int argc, char **argv)
     options.cancel = cli_interrupt_cancel; /* within a ray of a signal */
     cli_interrupt_catch();
 
-    if (req->preview) {
+    on_terminal = strcmp(req->output, "-") == 0 && cli_stdout_is_terminal();
+    if (req->preview || on_terminal) {
         rayo_image_info info = rayo_render_image_info(&camera, &options);
         cli_preview_create(&preview, &info, &err);
     }
-    if (err.status == RAYO_OK)
+    if (err.status == RAYO_OK && !on_terminal)
         rayo_output_open(&out, req->output, &err);
-    /* No bar amid an image going to a terminal as text (standard output
-     * on one, or -o /dev/tty). */
+    /* No bar amid an image going to a terminal as text (-o /dev/tty). */
     cli_progress_init(&progress, req->quiet || (err.status == RAYO_OK &&
+                                                out != NULL &&
                                                 rayo_output_is_terminal(out)));
-    if (err.status == RAYO_OK) {
+    if (err.status == RAYO_OK && on_terminal) {
+        rayo_render(&camera, scene, &options, cli_preview_rows, preview, &err);
+    } else if (err.status == RAYO_OK) {
         if (render_to(out, &camera, scene, &options, &write_options,
                       preview, &err) == RAYO_OK &&
             cli_interrupted() == 0)
@@ -543,7 +559,12 @@ int cli_render(int argc, char **argv)
     if (preview != NULL && err.status == RAYO_OK && cli_interrupted() == 0) {
         /* The image on stdout keeps stdout to itself. */
         exit_status = cli_preview_print(
-            preview, strcmp(req->output, "-") == 0 ? stderr : stdout);
+            preview, strcmp(req->output, "-") == 0 && !on_terminal ? stderr
+                                                                   : stdout);
+        if (exit_status == CLI_EXIT_OK && on_terminal)
+            cli_say(_("this is a picture of the image, because standard "
+                      "output is a terminal; to save it, use 'rayo > "
+                      "esfera.pbm' or 'rayo -o esfera.png'"));
         if (exit_status != CLI_EXIT_OK) {
             cli_preview_free(preview);
             rayo_scene_free(scene);

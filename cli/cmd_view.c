@@ -22,36 +22,39 @@
 
 static void print_help(void)
 {
-    printf("usage: rayo view FILE [--cols N] [--braille | --ascii] "
-           "[--color[=WHEN]]\n\n"
-           "Shows FILE (PBM, PGM, PPM or PNG; '-' = standard input) in the "
-           "terminal, shrunk\nto fit the width, two pixels a character "
-           "cell (Unicode half blocks).\n\n"
-           "Gray and colour images are drawn in colour, each half the mean "
-           "of the pixels it\ncovers: 24-bit colour when $COLORTERM is "
-           "'truecolor' or '24bit', else xterm's\n256 colours.  Only on a "
-           "terminal, and not when $NO_COLOR is set (--color\nchanges "
-           "that).  Otherwise, and for bilevel images, the picture is a "
-           "black/white\nsilhouette (gray and colour black below half the "
-           "maximum), black pixels drawn\nas ink: half blocks, Braille "
-           "patterns (2x4) or ASCII ('#' black, '+' partly).\n\n"
-           "options:\n"
-           "      --cols N     at most N characters a line (default: "
-           "$COLUMNS, else 80)\n"
-           "      --braille    Braille patterns: the finest detail "
-           "(silhouette)\n"
-           "      --ascii      plain ASCII, for terminals without Unicode "
-           "(silhouette)\n"
-           "      --color[=WHEN]  auto (default: colour on a terminal "
-           "without $NO_COLOR),\n"
-           "                   always (into files and pipes too, as for "
-           "'less -R') or never\n"
-           "  -h, --help       this help\n\n"
-           "FILE may be course:ej1, course:ej2 or course:ej3, the course's "
-           "reference images\n(a file of that very name wins).\n\n"
-           "exit status: 0 success, 1 the output could not be written, 2 bad "
-           "options or an\ninput that cannot be read (missing, unreadable, "
-           "a directory, malformed or\ntoo large).\n");
+    printf(_("usage: rayo view FILE [--cols N] [--braille | --ascii] "
+             "[--color[=WHEN]]\n\n"
+             "Shows FILE (PBM, PGM, PPM or PNG; '-' = standard input) in the "
+             "terminal, shrunk\nto fit the width, two pixels a character "
+             "cell (Unicode half blocks).\n\n"
+             "Gray and colour images are drawn in colour, each half the mean "
+             "of the pixels it\ncovers: 24-bit colour when $COLORTERM is "
+             "'truecolor' or '24bit', else xterm's\n256 colours.  Only on a "
+             "terminal, and not when $NO_COLOR is set (--color\nchanges "
+             "that).  Otherwise, and for bilevel images, the picture is a "
+             "black/white\nsilhouette (gray and colour black below half the "
+             "maximum), black pixels drawn\nas ink: half blocks, Braille "
+             "patterns (2x4) or ASCII ('#' black, '+' partly).\n\n"
+             "options:\n"
+             "      --cols N     at most N characters a line (default: "
+             "$COLUMNS, else 80)\n"
+             "      --braille    Braille patterns: the finest detail "
+             "(silhouette)\n"
+             "      --ascii      plain ASCII, for terminals without Unicode "
+             "(silhouette)\n"
+             "      --color[=WHEN]  auto (default: colour on a terminal "
+             "without $NO_COLOR),\n"
+             "                   always (into files and pipes too, as for "
+             "'less -R') or never\n"
+             "      --lang es|en the language of messages (default: from the\n"
+             "                   environment: LANGUAGE, LC_ALL, LC_MESSAGES, "
+             "LANG)\n"
+             "  -h, --help       this help\n\n"
+             "FILE may be course:ej1, course:ej2 or course:ej3, the course's "
+             "reference images\n(a file of that very name wins).\n\n"
+             "exit status: 0 success, 1 the output could not be written, 2 bad "
+             "options or an\ninput that cannot be read (missing, unreadable, "
+             "a directory, malformed or\ntoo large).\n"));
 }
 
 /* The columns of the terminal: $COLUMNS when it is a sensible number. */
@@ -92,8 +95,8 @@ static int parse_color(const char *text, cli_color_when *when)
     else if (strcmp(text, "never") == 0)
         *when = CLI_COLOR_NEVER;
     else {
-        cli_usage_error("--color: '%.40s'; expected auto, always or never",
-                        text);
+        cli_usage_error(_("--color: %s; expected auto, always or never"),
+                        cli_quote(text));
         return 0;
     }
     return 1;
@@ -111,8 +114,8 @@ int cli_print_preview(const rayo_image *image,
         return cli_report(&err);
     fwrite(text, 1, length, stream);
     free(text);
-    return cli_flush_text(stream, stream == stdout ? "standard output"
-                                                   : "standard error");
+    return cli_flush_text(stream, stream == stdout ? _("standard output")
+                                                   : _("standard error"));
 }
 
 /* Options into *options, colour included (for the style, cli_view
@@ -126,6 +129,7 @@ static int parse_options(int argc, char **argv,
         {"ascii", no_argument, NULL, 'a'},
         {"braille", no_argument, NULL, 'b'},
         {"color", optional_argument, NULL, 'C'},
+        {"lang", required_argument, NULL, 'L'},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
     unsigned long cols;
@@ -149,6 +153,8 @@ static int parse_options(int argc, char **argv,
             if (!parse_color(optarg, &when))
                 return CLI_EXIT_USAGE;
             break;
+        case 'L': /* --lang: read before (lang.c) */
+            break;
         case 'h':
             print_help();
             return -1;
@@ -157,7 +163,7 @@ static int parse_options(int argc, char **argv,
         }
     }
     if (argc - optind != 1)
-        return cli_wrong_operands("view", argc - optind, "one FILE");
+        return cli_wrong_operands("view", argc - optind, N_("one FILE"));
     *file = argv[optind];
     options->color = cli_preview_color(stdout, when);
     return CLI_EXIT_OK;

@@ -78,16 +78,26 @@ int cli_image_operand(const char *operand, char *path, size_t room,
         lstat(operand, &st) == 0)
         return CLI_EXIT_OK;
     if (strcmp(name, "ej1") != 0 && strcmp(name, "ej2") != 0 &&
-        strcmp(name, "ej3") != 0)
-        return cli_usage_error("%s: no such course image; expected "
-                               "course:ej1, course:ej2 or course:ej3",
+        strcmp(name, "ej3") != 0) {
+        static const char *const images[] = {"course:ej1", "course:ej2",
+                                             "course:ej3"};
+        const char *nearest = cli_nearest(operand, images, 3);
+        if (nearest != NULL)
+            return cli_usage_error(_("%s: no such course image; did you "
+                                     "mean %s? The course's images are "
+                                     "course:ej1, course:ej2 and "
+                                     "course:ej3"),
+                                   operand, nearest);
+        return cli_usage_error(_("%s: no such course image; expected "
+                                 "course:ej1, course:ej2 or course:ej3"),
                                operand);
+    }
     if (!cli_course_reference(name, path, room))
-        return cli_usage_error("%s: the course's image "
-                               "(referencia-catedra-%s.png) is not "
-                               "installed; looked in $RAYO_DATA_DIR/course "
-                               "and beside the command (../data/course, "
-                               "../share/rayo/course)",
+        return cli_usage_error(_("%s: the course's image "
+                                 "(referencia-catedra-%s.png) is not "
+                                 "installed; looked in $RAYO_DATA_DIR/course "
+                                 "and beside the command (../data/course, "
+                                 "../share/rayo/course)"),
                                operand, name);
     *resolved = path;
     return CLI_EXIT_OK;

@@ -14,6 +14,8 @@
 
 #include "grade_class.h"
 
+#include "cli.h"
+
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -112,7 +114,8 @@ static void draw_progress(int *drawn, size_t done, size_t count, int erase)
             fprintf(stderr, "\r%40s\r", "");
         *drawn = 0;
     } else {
-        fprintf(stderr, "\rrayo: graded %zu of %zu", done, count);
+        fputs("\rrayo: ", stderr);
+        fprintf(stderr, _("graded %zu of %zu"), done, count);
         *drawn = 1;
     }
     fflush(stderr);

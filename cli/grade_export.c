@@ -54,19 +54,19 @@ int cli_grade_points_parse(const char *text, cli_grade_points *points)
         if (end == NULL)
             end = s + strlen(s);
         if (equals == NULL || equals > end)
-            return cli_usage_error("--points: '%s' is not NAME=POINTS; "
-                                   "expected e.g. image=50,valgrind=0",
-                                   text);
+            return cli_usage_error(_("--points: %s is not NAME=POINTS; "
+                                     "expected e.g. image=50,valgrind=0"),
+                                   cli_quote(text));
         c = criterion_named(s, (size_t)(equals - s));
         if (c < 0)
-            return cli_usage_error("--points: '%.*s' is not a criterion; "
-                                   "expected compile, functions, run, "
-                                   "output, image or valgrind",
+            return cli_usage_error(_("--points: '%.*s' is not a criterion; "
+                                     "expected compile, functions, run, "
+                                     "output, image or valgrind"),
                                    (int)(equals - s), s);
         length = (size_t)(end - equals - 1);
         if (length == 0 || length >= sizeof value)
-            return cli_usage_error("--points: %s's points '%.*s' are not a "
-                                   "number from 0 to 1000",
+            return cli_usage_error(_("--points: %s's points '%.*s' are not a "
+                                     "number from 0 to 1000"),
                                    rayo_grade_criterion_name(c), (int)length,
                                    equals + 1);
         memcpy(value, equals + 1, length);
@@ -74,9 +74,10 @@ int cli_grade_points_parse(const char *text, cli_grade_points *points)
         if (!cli_parse_double("--points", value, &number))
             return CLI_EXIT_USAGE;
         if (!(number >= 0 && number <= 1000))
-            return cli_usage_error("--points: %s's points '%s' are out of "
-                                   "range; expected 0 to 1000",
-                                   rayo_grade_criterion_name(c), value);
+            return cli_usage_error(_("--points: %s's points %s are out of "
+                                     "range; expected 0 to 1000"),
+                                   rayo_grade_criterion_name(c),
+                                   cli_quote(value));
         parsed.points[c] = number;
         parsed.given |= 1u << c;
         if (*end == '\0')
@@ -235,11 +236,11 @@ void cli_grade_gradescope(FILE *stream, const rayo_grade_report *report,
         lines[0] = summary;
         lines[1] = (char *)sandbox_note;
         if (report == NULL)
-            snprintf(summary, sizeof summary, "rayo grade could not grade "
-                     "this submission: %s",
+            snprintf(summary, sizeof summary,
+                     _("rayo grade could not grade this submission: %s"),
                      error_message != NULL ? error_message : "");
         else
-            snprintf(summary, sizeof summary, "%s: %.10g of %.10g points",
+            snprintf(summary, sizeof summary, _("%s: %.10g of %.10g points"),
                      rayo_grade_overall(report) == RAYO_GRADE_PASS ? "PASS"
                                                                    : "FAIL",
                      score, max);

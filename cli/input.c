@@ -19,6 +19,23 @@
 
 #include "cli.h"
 
+/* The system's reason, in the command's language for the usual ones
+   (the English is the C library's own text). */
+static const char *reason(int error)
+{
+    switch (error) {
+    case ENOENT:
+        return _("No such file or directory");
+    case EACCES:
+        return _("Permission denied");
+    case EISDIR:
+        return _("Is a directory");
+    case ENOTDIR:
+        return _("Not a directory");
+    }
+    return strerror(error);
+}
+
 int cli_check_input(const char *path, cli_input_kind kind)
 {
     struct stat st;
@@ -27,17 +44,17 @@ int cli_check_input(const char *path, cli_input_kind kind)
         return CLI_EXIT_OK;
     fd = open(path, O_RDONLY | O_NONBLOCK); /* a FIFO: no waiting */
     if (fd < 0)
-        return cli_usage_error("%s: %s", path, strerror(errno));
+        return cli_usage_error("%s: %s", path, reason(errno));
     if (fstat(fd, &st) != 0) {
         int saved = errno;
         close(fd);
-        return cli_usage_error("%s: %s", path, strerror(saved));
+        return cli_usage_error("%s: %s", path, reason(saved));
     }
     close(fd);
     if (S_ISDIR(st.st_mode) && kind == CLI_INPUT_FILE)
-        return cli_usage_error("%s: %s", path, strerror(EISDIR));
+        return cli_usage_error("%s: %s", path, reason(EISDIR));
     if (!S_ISDIR(st.st_mode) && kind == CLI_INPUT_FOLDER)
-        return cli_usage_error("%s: %s", path, strerror(ENOTDIR));
+        return cli_usage_error("%s: %s", path, reason(ENOTDIR));
     return CLI_EXIT_OK;
 }
 

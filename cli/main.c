@@ -4,7 +4,9 @@
  * `rayo` alone, or `rayo` followed by options, is `rayo render`: with no
  * arguments it does exactly what the assignment asks, the seed's sphere as
  * plain PBM on standard output.  Every subcommand lives in a file of its
- * own (cmd_*.c) and parses its own options.
+ * own (cmd_*.c) and parses its own options; the language of every
+ * message is chosen first (lang.c), and a mistyped command is answered
+ * with the known ones and the nearest.
  */
 #include <signal.h>
 #include <string.h>
@@ -18,26 +20,52 @@ typedef struct subcommand {
 } subcommand;
 
 static const subcommand subcommands[] = {
-    {"render", cli_render, "trace rays through a scene into an image (default)"},
-    {"convert", cli_convert, "convert an image between PBM, PGM, PPM and PNG"},
-    {"compare", cli_compare, "compare an image with a reference and say what is wrong"},
-    {"view", cli_view, "show an image in the terminal"},
-    {"grade", cli_grade, "check a student's submission as the course does"},
+    {"render", cli_render,
+     N_("trace rays through a scene into an image (default)")},
+    {"convert", cli_convert,
+     N_("convert an image between PBM, PGM, PPM and PNG")},
+    {"compare", cli_compare,
+     N_("compare an image with a reference and say what is wrong")},
+    {"view", cli_view, N_("show an image in the terminal")},
+    {"grade", cli_grade, N_("check a student's submission as the course does")},
 };
 #define SUBCOMMAND_COUNT (sizeof subcommands / sizeof subcommands[0])
 
 static void print_overview(void)
 {
     size_t i;
-    printf("usage: rayo [render] [OPTIONS]\n"
-           "       rayo COMMAND [OPTIONS] [ARGS]\n\n"
-           "rayo is a small, exact ray tracer.  With no arguments it renders "
-           "the sphere of\nthe course's first assignment as plain PBM on "
-           "standard output.\n\ncommands:\n");
+    fputs(_("usage: rayo [render] [OPTIONS]\n"
+            "       rayo COMMAND [OPTIONS] [ARGS]\n\n"
+            "rayo is a small, exact ray tracer.  With no arguments it renders "
+            "the sphere of\nthe course's first assignment as plain PBM on "
+            "standard output.\n\ncommands:\n"),
+          stdout);
     for (i = 0; i < SUBCOMMAND_COUNT; i++)
-        printf("  %-9s %s\n", subcommands[i].name, subcommands[i].summary);
-    printf("\n'rayo COMMAND --help' describes a command; 'man rayo' has it "
-           "all.\n\n");
+        printf("  %-9s %s\n", subcommands[i].name, _(subcommands[i].summary));
+    fputs(_("\n'rayo COMMAND --help' describes a command; 'man rayo' has it "
+            "all.\n--lang es|en picks the language (default: from LANGUAGE, "
+            "LC_ALL, LC_MESSAGES\nor LANG).\n\n"),
+          stdout);
+}
+
+/* An unknown command: the known ones, and the nearest when one is. */
+static int unknown_command(const char *word)
+{
+    const char *names[SUBCOMMAND_COUNT];
+    const char *nearest;
+    size_t i;
+    for (i = 0; i < SUBCOMMAND_COUNT; i++)
+        names[i] = subcommands[i].name;
+    nearest = cli_nearest(word, names, SUBCOMMAND_COUNT);
+    if (nearest != NULL)
+        return cli_usage_error(_("unknown command %s; did you mean %s? The "
+                                 "commands are render, convert, compare, "
+                                 "view and grade"),
+                               cli_quote(word), nearest);
+    return cli_usage_error(_("unknown command %s; the commands are render, "
+                             "convert, compare, view and grade; see 'rayo "
+                             "--help'"),
+                           cli_quote(word));
 }
 
 int main(int argc, char **argv)
@@ -48,6 +76,8 @@ int main(int argc, char **argv)
        to say. */
     signal(SIGPIPE, SIG_IGN);
     signal(SIGXFSZ, SIG_IGN);
+    if (cli_lang_init(&argc, argv) != CLI_EXIT_OK)
+        return CLI_EXIT_USAGE;
     if (argc > 1) {
         for (i = 0; i < SUBCOMMAND_COUNT; i++)
             if (strcmp(argv[1], subcommands[i].name) == 0) {
@@ -63,8 +93,7 @@ int main(int argc, char **argv)
         if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)
             print_overview();
         if (argv[1][0] != '-')
-            return cli_usage_error("unknown command '%s'; see 'rayo --help'",
-                                   argv[1]);
+            return unknown_command(argv[1]);
     }
     argv[0] = "render";
     return cli_render(argc, argv);

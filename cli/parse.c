@@ -58,18 +58,20 @@ int cli_bad_option(int option, char **argv, int index)
 {
     const char *word = argv[index - 1];
     if (option == ':')
-        return cli_usage_error("%s: '%s' needs a value; see 'rayo --help'",
-                               argv[0], word);
-    return cli_usage_error("%s: unknown option '%s'; see 'rayo --help'",
-                           argv[0], word);
+        return cli_usage_error(_("%s: %s needs a value; see 'rayo --help'"),
+                               argv[0], cli_quote(word));
+    return cli_usage_error(_("%s: unknown option %s; see 'rayo --help'"),
+                           argv[0], cli_quote(word));
 }
 
 int cli_wrong_operands(const char *command, int found, const char *what)
 {
-    return cli_usage_error("%s: expected %s, got %d argument%s; see 'rayo "
-                           "%s --help'",
-                           command, what, found, found == 1 ? "" : "s",
-                           command);
+    return cli_usage_error(_n("%s: expected %s, got %d argument; see 'rayo "
+                              "%s --help'",
+                              "%s: expected %s, got %d arguments; see 'rayo "
+                              "%s --help'",
+                              (unsigned long)found),
+                           command, _(what), found, command);
 }
 
 static int looks_numeric_start(const char *text)
@@ -86,20 +88,22 @@ int cli_parse_uint(const char *option, const char *text, unsigned long min,
     if (*p == '+')
         p++;
     if (!isdigit((unsigned char)*p)) {
-        cli_usage_error("%s: '%s' is not a whole number; expected %lu to %lu",
-                        option, text, min, max);
+        cli_usage_error(_("%s: %s is not a whole number; expected %lu to "
+                          "%lu"),
+                        option, cli_quote(text), min, max);
         return 0;
     }
     errno = 0;
     v = strtoul(p, &end, 10);
     if (*end != '\0') {
-        cli_usage_error("%s: '%s' is not a whole number; expected %lu to %lu",
-                        option, text, min, max);
+        cli_usage_error(_("%s: %s is not a whole number; expected %lu to "
+                          "%lu"),
+                        option, cli_quote(text), min, max);
         return 0;
     }
     if (errno == ERANGE || v < min || v > max) {
-        cli_usage_error("%s: '%s' is out of range; expected %lu to %lu",
-                        option, text, min, max);
+        cli_usage_error(_("%s: %s is out of range; expected %lu to %lu"),
+                        option, cli_quote(text), min, max);
         return 0;
     }
     *value = v;
@@ -126,7 +130,8 @@ int cli_parse_double(const char *option, const char *text, double *value)
 {
     if (parse_finite(text, strlen(text), value))
         return 1;
-    cli_usage_error("%s: '%s' is not a finite number", option, text);
+    cli_usage_error(_("%s: %s is not a finite number"), option,
+                    cli_quote(text));
     return 0;
 }
 
@@ -140,9 +145,12 @@ int cli_parse_numbers(const char *option, const char *text, size_t count,
         size_t length = comma ? (size_t)(comma - p) : strlen(p);
         double v;
         if (!parse_finite(p, length, &v)) {
-            cli_usage_error("%s: '%.*s' in '%s' is not a finite number; "
-                            "expected %s",
-                            option, (int)length, p, text, shape);
+            char item[64];
+            snprintf(item, sizeof item, "%.*s",
+                     (int)(length < 63 ? length : 63), p);
+            cli_usage_error(_("%s: %s in %s is not a finite number; "
+                              "expected %s"),
+                            option, cli_quote(item), cli_quote(text), shape);
             return 0;
         }
         if (n < count)
@@ -153,8 +161,10 @@ int cli_parse_numbers(const char *option, const char *text, size_t count,
         p = comma + 1;
     }
     if (n != count) {
-        cli_usage_error("%s: '%s' has %lu number%s; expected %lu: %s", option,
-                        text, (unsigned long)n, n == 1 ? "" : "s",
+        cli_usage_error(_n("%s: %s has %lu number; expected %lu: %s",
+                           "%s: %s has %lu numbers; expected %lu: %s",
+                           (unsigned long)n),
+                        option, cli_quote(text), (unsigned long)n,
                         (unsigned long)count, shape);
         return 0;
     }

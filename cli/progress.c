@@ -7,6 +7,8 @@
 
 #include "progress.h"
 
+#include "cli.h"
+
 #include <stdio.h>
 #include <time.h>
 #include <unistd.h>
@@ -41,10 +43,15 @@ static void draw(const cli_progress *progress, uint32_t done, uint32_t total,
     for (i = 0; i < BAR_WIDTH; i++)
         bar[i] = i < filled ? '#' : '.';
     bar[BAR_WIDTH] = '\0';
-    fprintf(stderr, "\rrayo: [%s] %3u%%  %lu/%lu rows  %.1f s", bar,
-            total ? (unsigned)((uint64_t)done * 100 / total) : 100u,
-            (unsigned long)done, (unsigned long)total,
-            now - progress->start);
+    char seconds[RAYO_LANG_NUMBER_SIZE];
+    fprintf(stderr, "\rrayo: [%s] %3u%%  ", bar,
+            total ? (unsigned)((uint64_t)done * 100 / total) : 100u);
+    /* TRANSLATORS: the progress line's end: rows rendered, of all, and
+       the seconds since the start ("12/480 rows  1.5 s"). */
+    fprintf(stderr, _("%lu/%lu rows  %s s"), (unsigned long)done,
+            (unsigned long)total,
+            rayo_lang_decimal(cli_lang(), now - progress->start, 1, seconds,
+                              sizeof seconds));
     fflush(stderr);
 }
 

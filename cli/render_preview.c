@@ -29,7 +29,7 @@ rayo_status cli_preview_create(cli_preview **preview,
     *preview = NULL;
     if (p == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM,
-                              "--preview: out of memory");
+                              _("--preview: out of memory"));
     rayo_preview_options_init(&p->options);
     p->options.columns = cli_terminal_columns();
     if (info->sample != RAYO_SAMPLE_BIT)
@@ -75,8 +75,8 @@ int cli_preview_print(const cli_preview *preview, FILE *stream)
         return cli_report(&err);
     fwrite(text, 1, length, stream);
     free(text);
-    return cli_flush_text(stream, stream == stdout ? "standard output"
-                                                   : "standard error");
+    return cli_flush_text(stream, stream == stdout ? _("standard output")
+                                                   : _("standard error"));
 }
 
 void cli_preview_free(cli_preview *preview)

@@ -32,6 +32,6 @@ int cli_flush_text(FILE *stream, const char *name)
         rayo_error_set(&err, RAYO_ERR_PIPE, "%s: %s", name, strerror(saved));
     else
         rayo_error_set(&err, RAYO_ERR_IO, "%s: %s", name,
-                       saved ? strerror(saved) : "write failed");
+                       saved ? strerror(saved) : _("write failed"));
     return cli_report(&err);
 }

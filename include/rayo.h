@@ -13,6 +13,7 @@
 #define RAYO_VERSION "0.1.0"
 
 #include "rayo/status.h"
+#include "rayo/lang.h"
 #include "rayo/limits.h"
 #include "rayo/seed.h"
 

@@ -2,8 +2,8 @@
 # deps.sh - makes sure a Debian machine has what rayo needs, so the quick
 # start (`make run`, `make check`) works on a fresh one.
 #
-#   scripts/deps.sh build   a C compiler, make, pkg-config, and libpng's
-#                           and libjpeg's headers
+#   scripts/deps.sh build   a C compiler, make, pkg-config, gettext's
+#                           msgfmt, and libpng's and libjpeg's headers
 #   scripts/deps.sh check   also the Netpbm tools and ADMesh the tests
 #                           cross-check images and meshes with, prove
 #                           (perl), jq and python3, which read their
@@ -47,6 +47,7 @@ tools=""
 command -v cc >/dev/null 2>&1 || tools="$tools gcc libc6-dev"
 command -v make >/dev/null 2>&1 || tools="$tools make"
 command -v pkg-config >/dev/null 2>&1 || tools="$tools pkg-config"
+command -v msgfmt >/dev/null 2>&1 || tools="$tools gettext"
 add_set "build tools" "$tools"
 images=""
 pkg-config --exists libpng 2>/dev/null || images="$images libpng-dev"

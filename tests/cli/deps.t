@@ -35,7 +35,7 @@ status=0
 PATH=$bin RAYO_DEPS_LOG=$TMP/deps.log sh "$deps" check >"$TMP/out" 2>"$TMP/err" || status=$?
 is "$status" 0 "bare machine: exit 0"
 is "$(cat "$TMP/err")" "rayo: updating the package lists (apt's output: $TMP/deps.log)
-rayo: installing build tools: gcc libc6-dev make pkg-config
+rayo: installing build tools: gcc libc6-dev make pkg-config gettext
 rayo: installing libpng's and libjpeg's headers: libpng-dev libjpeg-dev
 rayo: installing test tools: netpbm perl jq python3 admesh
 rayo: installing the grader's sandbox: bubblewrap" "one line per package set"
@@ -65,7 +65,7 @@ is "$(grep -c install "$APT_CALLS")" 1 "  and stops there"
 printf '#!/bin/sh\necho 1000\n' >"$bin/id"
 status=0
 PATH=$bin sh "$deps" build >"$TMP/out" 2>"$TMP/err" || status=$?
-is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config libpng-dev libjpeg-dev; run: sudo apt-get install -y gcc libc6-dev make pkg-config libpng-dev libjpeg-dev" "not root: names the command"
+is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config gettext libpng-dev libjpeg-dev; run: sudo apt-get install -y gcc libc6-dev make pkg-config gettext libpng-dev libjpeg-dev" "not root: names the command"
 
 # web: the page's toolchain, with the runtime of the clang that is there
 # (any clang: the unversioned package), the paths it looks at moved into
@@ -73,13 +73,13 @@ is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config libp
 export RAYO_WASI_INCLUDE="$TMP/no/wasm32-wasi" RAYO_LLVM_LIB="$TMP/no/lib"
 status=0
 PATH=$bin sh "$deps" web >"$TMP/out" 2>"$TMP/err" || status=$?
-is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config libpng-dev libjpeg-dev clang lld wasi-libc libclang-rt-dev-wasm32; run: sudo apt-get install -y gcc libc6-dev make pkg-config libpng-dev libjpeg-dev clang lld wasi-libc libclang-rt-dev-wasm32" \
+is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config gettext libpng-dev libjpeg-dev clang lld wasi-libc libclang-rt-dev-wasm32; run: sudo apt-get install -y gcc libc6-dev make pkg-config gettext libpng-dev libjpeg-dev clang lld wasi-libc libclang-rt-dev-wasm32" \
     "web, no clang: the toolchain with any clang's wasm32 runtime"
 printf '#!/bin/sh\necho "Debian clang version 14.0.6"\n' >"$bin/clang"
 chmod +x "$bin/clang"
 status=0
 PATH=$bin sh "$deps" web >"$TMP/out" 2>"$TMP/err" || status=$?
-is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config libpng-dev libjpeg-dev lld wasi-libc libclang-rt-14-dev-wasm32; run: sudo apt-get install -y gcc libc6-dev make pkg-config libpng-dev libjpeg-dev lld wasi-libc libclang-rt-14-dev-wasm32" \
+is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config gettext libpng-dev libjpeg-dev lld wasi-libc libclang-rt-14-dev-wasm32; run: sudo apt-get install -y gcc libc6-dev make pkg-config gettext libpng-dev libjpeg-dev lld wasi-libc libclang-rt-14-dev-wasm32" \
     "web, clang 14: its own wasm32 runtime"
 mkdir -p "$TMP/no/lib/llvm-14/lib/clang/14.0.6/lib/wasi" "$TMP/no/wasm32-wasi"
 : >"$TMP/no/lib/llvm-14/lib/clang/14.0.6/lib/wasi/libclang_rt.builtins-wasm32.a"
@@ -87,7 +87,7 @@ printf '#!/bin/sh\nexit 0\n' >"$bin/wasm-ld"
 chmod +x "$bin/wasm-ld"
 status=0
 PATH=$bin sh "$deps" web >"$TMP/out" 2>"$TMP/err" || status=$?
-is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config libpng-dev libjpeg-dev; run: sudo apt-get install -y gcc libc6-dev make pkg-config libpng-dev libjpeg-dev" \
+is "$status:$(cat "$TMP/err")" "1:rayo needs: gcc libc6-dev make pkg-config gettext libpng-dev libjpeg-dev; run: sudo apt-get install -y gcc libc6-dev make pkg-config gettext libpng-dev libjpeg-dev" \
     "web, toolchain there: only what the build lacks"
 rm -f "$bin/clang" "$bin/wasm-ld"
 unset RAYO_WASI_INCLUDE RAYO_LLVM_LIB
@@ -95,7 +95,7 @@ unset RAYO_WASI_INCLUDE RAYO_LLVM_LIB
 # bench: the peers' packages (python3, libembree-dev, povray) are
 # optional.  With the build's tools present (stand-ins), a root machine
 # installs them; when it cannot, or is not root, it says so and succeeds.
-for tool in cc make pkg-config; do
+for tool in cc make pkg-config msgfmt; do
     printf '#!/bin/sh\nexit 0\n' >"$bin/$tool"
     chmod +x "$bin/$tool"
 done

@@ -1,7 +1,8 @@
 #!/bin/sh
 # install.t - `make install PREFIX=...` installs the command, the
-# library, the headers, a working pkg-config file and the man page, and a
-# student's program builds against the installed copy alone.
+# library, the headers, a working pkg-config file, the man pages (English
+# and Spanish) and the Spanish catalog, and a student's program builds
+# against the installed copy alone.
 . "$(dirname "$0")/lib.sh"
 
 prefix="$TMP/prefix"
@@ -9,7 +10,8 @@ make -s -C "$RAYO_SOURCE" install BUILD="$RAYO_BUILD" PREFIX="$prefix" >"$TMP/ma
 ok $? "make install PREFIX=... succeeds"
 for f in bin/rayo lib/librayo.a include/rayo.h include/rayo/ejercicio1.h \
          include/rayo/render.h include/rayo/course.h lib/pkgconfig/rayo.pc \
-         share/man/man1/rayo.1 share/rayo/course/referencia-catedra-ej2.png; do
+         share/man/man1/rayo.1 share/rayo/course/referencia-catedra-ej2.png \
+         share/locale/es/LC_MESSAGES/rayo.mo share/man/es/man1/rayo.1; do
     ok "$([ -f "$prefix/$f" ]; echo $?)" "installs $f"
 done
 "$prefix/bin/rayo" -W 8 -H 4 >"$TMP/small.pbm"
@@ -30,4 +32,14 @@ cmp -s "$TMP/a" "$TMP/b"
 ok $? "and prints rayo's image"
 man -l "$prefix/share/man/man1/rayo.1" >/dev/null 2>&1 || groff -man -Tutf8 "$prefix/share/man/man1/rayo.1" >/dev/null 2>&1
 ok $? "the man page formats"
+man -l "$prefix/share/man/es/man1/rayo.1" >/dev/null 2>&1 || groff -man -Tutf8 "$prefix/share/man/es/man1/rayo.1" >/dev/null 2>&1
+ok $? "the Spanish man page formats"
+msgunfmt "$prefix/share/locale/es/LC_MESSAGES/rayo.mo" | grep -q 'msgstr "no hay memoria suficiente"'
+ok $? "the installed catalog is po/es.po compiled"
+# The translations live in the library: a lone copy of the binary speaks
+# Spanish with no catalog beside it.
+mkdir "$TMP/alone" && cp "$prefix/bin/rayo" "$TMP/alone/rayo"
+LANGUAGE= LC_ALL= LC_MESSAGES= LANG=es_AR.UTF-8 "$TMP/alone/rayo" rendr 2>"$TMP/alone.err"
+grep -q "^rayo: no conozco el comando 'rendr'; ¿quisiste decir render?" "$TMP/alone.err"
+ok $? "a copied binary speaks Spanish under LANG=es_AR.UTF-8"
 done_testing

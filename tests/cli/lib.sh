@@ -7,6 +7,9 @@
 # valgrind memcheck, and a memory error or leak fails the command.
 set -u
 : "${RAYO:?run through make check}"
+# The command's messages in English, whatever the machine's language
+# (docs/i18n.md); i18n.t asks for Spanish itself.
+export LANGUAGE=en
 : "${RAYO_SOURCE:=$(pwd)}"
 SEED="$RAYO_SOURCE/tests/data/seed"
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/rayo-test.XXXXXX")

@@ -1,0 +1,36 @@
+#!/bin/sh
+# update_pot.sh - extracts every marked message of the sources into a
+# PO template with GNU xgettext: `make pot` writes po/rayo.pot with it,
+# and tests/cli/i18n.t runs it again to check that the committed
+# template is up to date.
+#
+#   scripts/update_pot.sh OUT.pot
+#
+# The marks (docs/i18n.md): _("...") and N_("...") in the command,
+# _n("one", "many", n) for plurals, rayo_gettext(lang, "...") and
+# rayo_ngettext(lang, "one", "many", n) in the library.  References name
+# the file without a line number, so that the template changes only when
+# a message does, not when code moves.  Sources are
+# listed in C's byte order so the template does not depend on the
+# machine's locale or the file system's order.
+# A template that differs from OUT only in its creation date leaves OUT
+# as it is, so that `make pot` changes nothing when no message changed.
+set -eu
+out=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+cd "$(dirname "$0")/.."
+files=$(find cli src -name '*.[ch]' | LC_ALL=C sort)
+tmp="$out.tmp"
+# shellcheck disable=SC2086
+LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
+    --keyword= --keyword=_ --keyword=N_ --keyword=_n:1,2 \
+    --keyword=rayo_gettext:2 --keyword=rayo_ngettext:2,3 \
+    --add-comments=TRANSLATORS: --add-location=file --no-wrap --sort-by-file \
+    --output="$tmp" $files
+if [ -f "$out" ] &&
+    grep -v '^"POT-Creation-Date:' "$out" >"$tmp.old" &&
+    grep -v '^"POT-Creation-Date:' "$tmp" | cmp -s - "$tmp.old"; then
+    rm -f "$tmp" "$tmp.old"
+else
+    rm -f "$tmp.old"
+    mv "$tmp" "$out"
+fi
