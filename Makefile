@@ -286,8 +286,8 @@ install: all
 	install -m 644 data/course/*.png $(DESTDIR)$(PREFIX)/share/rayo/course/
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(RAYO_VERSION)|g' \
 	    rayo.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc
-	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ] && \
-	    command -v ldconfig >/dev/null 2>&1; then ldconfig; fi
+	@case "$(DESTDIR):$(PREFIX)" in :/usr|:/usr/local) [ "$$(id -u)" != 0 ] \
+	    || ! command -v ldconfig >/dev/null 2>&1 || ldconfig ;; esac
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/rayo $(DESTDIR)$(PREFIX)/lib/librayo.a \
