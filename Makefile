@@ -347,13 +347,15 @@ $(WEB_WASM): $(WASM_OBJ)
 
 $(WEB_OUT)/%: web/%
 	@mkdir -p $(dir $@)
-	cp $< $@
+	$(call say,CP,$@)
+	$(Q)cp $< $@
 
 # The module and the course's references as base64 in a script, so the
 # page fetches nothing and also works opened from file://.
 $(WEB_OUT)/assets.js: $(WEB_WASM) $(COURSE_PNG)
 	@mkdir -p $(dir $@)
-	{ echo '// Made by make web: rayo.wasm and data/course/*.png, base64.'; \
+	$(call say,GEN,$@)
+	$(Q){ echo '// Made by make web: rayo.wasm and data/course/*.png, base64.'; \
 	  echo 'window.RAYO_ASSETS = {'; \
 	  printf '  "wasm": "%s",\n' "$$(base64 -w0 $(WEB_WASM))"; \
 	  for f in $(COURSE_PNG); do \
