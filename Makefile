@@ -1,7 +1,8 @@
 # rayo - build, test, install.
 #
-#   make                 build/rayo and build/librayo.a
-#   make check           every test, run by prove (TAP)
+#   make                 build/rayo, build/librayo.a and build/librayo.so.*
+#   make V=1             the same, printing every command in full
+#   make check           every test, run by prove (TAP), CHECK_JOBS at once
 #   make run             render the assignment's sphere to esfera.pbm and esfera.png
 #   make bench           benchmarks (bench/; BENCH_ARGS="--only peers")
 #   make check-sanitize  every test under ASan and UBSan (clang)
@@ -43,13 +44,39 @@ ALL_CFLAGS = -std=c11 $(OPT) $(WARNINGS) -Iinclude $(PNG_CFLAGS) \
               -MMD -MP
 LDLIBS = $(PNG_LIBS) $(JPEG_LIBS) -lpthread -lm
 
+# Builds speak softly: one line per file made ("  CC  src/x.c"); V=1
+# prints the commands themselves, make -s nothing.
+V ?= 0
+ifeq ($(V),1)
+Q :=
+say = @:
+else
+Q := @
+say = @printf '  %-4s%s\n' '$(1)' '$(2)'
+endif
+ifneq ($(findstring s,$(firstword -$(filter-out --%,$(MAKEFLAGS)))),)
+say = @:
+endif
+
+# The library: every public function is marked RAYO_API
+# (include/rayo/export.h) and everything else is compiled hidden, so the
+# shared library exports exactly the headers' functions
+# (tests/cli/exports.t).  The same position-independent objects make
+# librayo.a and librayo.so.$(RAYO_VERSION), whose soname carries
+# SO_MAJOR: raise it when a release changes or removes a public function
+# or type (adding one does not).
+RAYO_VERSION := $(shell sed -n 's/^\#define RAYO_VERSION "\(.*\)"/\1/p' include/rayo.h)
+SO_MAJOR := 0
+SO_NAME := librayo.so.$(SO_MAJOR)
+LIB_CFLAGS := -fPIC -fvisibility=hidden
+
 LIB_SRC := $(sort $(shell find src -name '*.c'))
 CLI_SRC := $(sort $(wildcard cli/*.c))
 UNIT_SRC := $(sort $(wildcard tests/unit/t_*.c))
 UNIT_SUPPORT := $(filter-out $(UNIT_SRC),$(wildcard tests/unit/*.c))
 BENCH_SRC := $(sort $(wildcard bench/*.c))
 
-LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/course_png.o
 CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 UNIT_SUPPORT_OBJ := $(UNIT_SUPPORT:%.c=$(BUILD)/obj/%.o)
@@ -65,13 +92,14 @@ CATALOG_OBJ := $(BUILD)/obj/gen/catalogs.o
 LIB_OBJ += $(CATALOG_OBJ)
 
 LIB := $(BUILD)/librayo.a
+SHLIB := $(BUILD)/librayo.so.$(RAYO_VERSION)
 RAYO := $(BUILD)/rayo
 
 .PHONY: all check run install uninstall clean bench check-sanitize \
         check-valgrind unit cli-tests fuzz fuzz-targets
 .DEFAULT_GOAL := all
 
-all: $(RAYO) $(LIB)
+all: $(RAYO) $(LIB) $(SHLIB)
 
 # What a fresh Debian machine lacks is installed once (scripts/deps.sh).
 $(BUILD)/.deps-build:
@@ -89,19 +117,41 @@ $(BUILD)/.deps-web:
 
 $(BUILD)/obj/%.o: %.c | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
+	$(call say,CC,$<)
+	$(Q)$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(LIB_OBJ): ALL_CFLAGS += $(LIB_CFLAGS)
+
+# The course's reference images (data/course/*.png) built into the
+# library as arrays (rayo_course_reference_png), so a copied or installed
+# command needs no data files for course:ej1 and --reference course.
+COURSE_PNG := $(sort $(wildcard data/course/*.png))
+$(BUILD)/gen/course_png.c: scripts/embed.sh $(COURSE_PNG)
+	@mkdir -p $(dir $@)
+	$(call say,GEN,$@)
+	$(Q)scripts/embed.sh $(foreach f,$(COURSE_PNG),$(patsubst \
+	    referencia-catedra-%.png,course_png_%,$(notdir $(f)))=$(f)) >$@.tmp
+	$(Q)mv $@.tmp $@
+
+$(BUILD)/obj/gen/course_png.o: $(BUILD)/gen/course_png.c | $(BUILD)/.deps-build
+	@mkdir -p $(dir $@)
+	$(call say,CC,$<)
+	$(Q)$(CC) $(ALL_CFLAGS) -Isrc/course -c $< -o $@
 
 $(BUILD)/locale/%/LC_MESSAGES/rayo.mo: po/%.po | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
-	msgfmt --check -o $@ $<
+	$(call say,MO,$@)
+	$(Q)msgfmt --check -o $@ $<
 
 $(CATALOG_SRC): $(MO_FILES) scripts/embed_catalogs.sh
 	@mkdir -p $(dir $@)
-	scripts/embed_catalogs.sh $@ $(BUILD)/locale $(PO_LANGS)
+	$(call say,GEN,$@)
+	$(Q)scripts/embed_catalogs.sh $@ $(BUILD)/locale $(PO_LANGS)
 
 $(CATALOG_OBJ): $(CATALOG_SRC) src/core/catalog.h
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) -Isrc/core -c $< -o $@
+	$(call say,CC,$<)
+	$(Q)$(CC) $(ALL_CFLAGS) -Isrc/core -c $< -o $@
 
 .PHONY: pot update-po
 pot:
@@ -115,29 +165,59 @@ update-po: pot
 
 $(LIB): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
-	rm -f $@
-	$(AR) rcs $@ $^
+	$(call say,AR,$@)
+	$(Q)rm -f $@
+	$(Q)$(AR) rcs $@ $^
+
+$(SHLIB): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) -shared -Wl,-soname,$(SO_NAME) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+	$(Q)ln -sf $(notdir $@) $(BUILD)/$(SO_NAME)
+	$(Q)ln -sf $(SO_NAME) $(BUILD)/librayo.so
 
 $(RAYO): $(CLI_OBJ) $(LIB)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
 
 $(BUILD)/tests/%: tests/unit/%.c $(UNIT_SUPPORT_OBJ) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) -Itests/unit $(LDFLAGS) -o $@ $< \
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) -Itests/unit $(LDFLAGS) -o $@ $< \
 	    $(UNIT_SUPPORT_OBJ) $(LIB) $(LDLIBS)
 
 unit: $(UNIT_BIN)
 
 # Every test, as TAP, through prove.  Command tests find the build through
 # the environment, so `make check BUILD=build-asan` tests that build.
+# CHECK_JOBS files run at once (the CPUs; CHECK_JOBS=1 one at a time);
+# those in CHECK_ALONE, which measure time, send signals or limit memory,
+# are given no prove rule, and prove runs such files one by one after
+# the others, each alone.  The last line says how it went and how long.
+CHECK_JOBS ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+CHECK_ALONE := tests/cli/progress.t tests/cli/signals.t \
+               tests/cli/grade_sandbox.t tests/cli/limits.t
+CHECK_FILES = $(UNIT_BIN) $(sort $(wildcard tests/cli/*.t))
+CHECK_RULES = $(foreach f,$(filter-out $(CHECK_ALONE),$(CHECK_FILES)), \
+                  --rules='par=$(f)')
 check: all $(UNIT_BIN) | $(BUILD)/.deps-check
+	@echo "check: $(words $(CHECK_FILES)) test files, $(CHECK_JOBS) at a" \
+	    "time, then $(words $(CHECK_ALONE)) alone (a few minutes)"
+	$(Q)start=$$(date +%s); \
 	RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
 	RAYO_CC="$(CC) $(LDFLAGS)" RAYO_SOURCE=$(CURDIR) \
-	    prove -f --exec '' $(UNIT_BIN) $(sort $(wildcard tests/cli/*.t))
+	    prove -f --exec '' -j $(CHECK_JOBS) $(CHECK_RULES) \
+	    $(CHECK_FILES); status=$$?; s=$$(( $$(date +%s) - start )); \
+	if [ $$status -eq 0 ]; then r=passed; else r=FAILED; fi; \
+	printf 'check: %s, %d test files in %d min %02d s\n' "$$r" \
+	    $(words $(CHECK_FILES)) $$((s / 60)) $$((s % 60)); \
+	exit $$status
 
 run: $(RAYO)
-	$(RAYO) -o esfera.pbm
-	$(RAYO) -o esfera.png
+	$(call say,RUN,$(RAYO) -o esfera.pbm)
+	$(Q)$(RAYO) -o esfera.pbm
+	$(call say,RUN,$(RAYO) -o esfera.png)
+	$(Q)$(RAYO) -o esfera.png
 	@echo "wrote esfera.pbm and esfera.png"
 
 # The whole suite with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -163,11 +243,13 @@ check check-valgrind: $(FUZZ_REPLAY)
 $(BUILD)/fuzz/replay-%: $(BUILD)/obj/fuzz/fuzz_%.o $(BUILD)/obj/fuzz/replay.o \
     $(FUZZ_SUPPORT_OBJ) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
 $(BUILD)/fuzz/fuzz-%: $(BUILD)/obj/fuzz/fuzz_%.o $(FUZZ_SUPPORT_OBJ) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
 
 fuzz-targets: $(FUZZ_NAMES:%=$(BUILD)/fuzz/fuzz-%)
 
@@ -185,7 +267,8 @@ check check-valgrind: $(EXAMPLE_BIN)
 
 $(BUILD)/examples/%: examples/%.c $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) -std=c99 -Wall -Werror -pedantic $(OPT) -Iinclude $(PNG_CFLAGS) \
+	$(call say,CC,$<)
+	$(Q)$(CC) -std=c99 -Wall -Werror -pedantic $(OPT) -Iinclude $(PNG_CFLAGS) \
 	    $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 # Benchmarks (bench/bench.c says how to add a row): a table on stdout
@@ -194,7 +277,8 @@ BENCH_BIN := $(BUILD)/bench/rayo-bench
 
 $(BENCH_BIN): $(BENCH_SRC) bench/bench.h $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) -Ibench $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) \
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) -Ibench $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) \
 	    $(LDLIBS)
 
 # The peers' rows (bench/peers.c, docs/performance.md "Against Embree and
@@ -208,7 +292,8 @@ EMBREE_SRC := $(sort $(wildcard bench/embree/*.c))
 
 $(EMBREE_RAYS): $(EMBREE_SRC) bench/embree/scene.h include/rayo/vec3.h | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(EMBREE_SRC) $(EMBREE_LIBS) -lm
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(EMBREE_SRC) $(EMBREE_LIBS) -lm
 
 # `make check` builds it too where it can, for tests/cli/peers.t.
 ifneq ($(wildcard $(EMBREE_HEADER)),)
@@ -234,6 +319,9 @@ install: all
 	    $(DESTDIR)$(PREFIX)/include/rayo $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(RAYO) $(DESTDIR)$(PREFIX)/bin/rayo
 	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/librayo.a
+	install -m 755 $(SHLIB) $(DESTDIR)$(PREFIX)/lib/librayo.so.$(RAYO_VERSION)
+	ln -sf librayo.so.$(RAYO_VERSION) $(DESTDIR)$(PREFIX)/lib/$(SO_NAME)
+	ln -sf $(SO_NAME) $(DESTDIR)$(PREFIX)/lib/librayo.so
 	install -m 644 include/rayo.h $(DESTDIR)$(PREFIX)/include/rayo.h
 	install -m 644 include/rayo/*.h $(DESTDIR)$(PREFIX)/include/rayo/
 	install -m 644 man/rayo.1 $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1
@@ -250,11 +338,15 @@ install: all
 	        || exit 1; done
 	install -d $(DESTDIR)$(PREFIX)/share/rayo/course
 	install -m 644 data/course/*.png $(DESTDIR)$(PREFIX)/share/rayo/course/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(shell sed -n 's/^#define RAYO_VERSION "\(.*\)"/\1/p' include/rayo.h)|g' \
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(RAYO_VERSION)|g' \
 	    rayo.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc
+	@case "$(DESTDIR):$(PREFIX)" in :/usr|:/usr/local) [ "$$(id -u)" != 0 ] \
+	    || ! command -v ldconfig >/dev/null 2>&1 || ldconfig ;; esac
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/rayo $(DESTDIR)$(PREFIX)/lib/librayo.a \
+	    $(DESTDIR)$(PREFIX)/lib/librayo.so.$(RAYO_VERSION) \
+	    $(DESTDIR)$(PREFIX)/lib/$(SO_NAME) $(DESTDIR)$(PREFIX)/lib/librayo.so \
 	    $(DESTDIR)$(PREFIX)/include/rayo.h \
 	    $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1 \
 	    $(DESTDIR)$(PREFIX)/lib/pkgconfig/rayo.pc \
@@ -284,7 +376,8 @@ WASM_CFLAGS = --target=wasm32-wasi -std=c11 -O2 $(WARNINGS) \
               -Wno-gnu-statement-expression -Iweb/wasm/include -Iinclude \
               -MMD -MP
 WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/formats/jpeg_%.c \
-                 src/io/output.c src/io/output_target.c src/grade/%,$(LIB_SRC))
+                 src/io/output.c src/io/output_target.c src/grade/% \
+                 src/course/course_reference.c,$(LIB_SRC))
 WASM_SRC := $(WASM_LIB_SRC) $(sort $(wildcard web/wasm/*.c))
 WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o) $(BUILD)/wasm/gen/catalogs.o
 WEB_ASSETS := $(sort $(wildcard web/*.html web/*.js web/*.css))
@@ -295,13 +388,13 @@ CHROMIUM ?= $(shell command -v chromium chromium-browser 2>/dev/null | \
 .PHONY: web check-web
 
 WEB_WASM := $(BUILD)/wasm/rayo.wasm
-COURSE_PNG := $(sort $(wildcard data/course/*.png))
 
 web: $(WEB_OUT)/assets.js $(WEB_ASSETS:web/%=$(WEB_OUT)/%)
 
 $(BUILD)/wasm/%.o: %.c | $(BUILD)/.deps-web
 	@mkdir -p $(dir $@)
-	$(WASM_CC) $(WASM_CFLAGS) -c $< -o $@
+	$(call say,CC,$<)
+	$(Q)$(WASM_CC) $(WASM_CFLAGS) -c $< -o $@
 
 $(BUILD)/wasm/gen/catalogs.o: $(CATALOG_SRC) src/core/catalog.h
 	@mkdir -p $(dir $@)
@@ -309,18 +402,21 @@ $(BUILD)/wasm/gen/catalogs.o: $(CATALOG_SRC) src/core/catalog.h
 
 $(WEB_WASM): $(WASM_OBJ)
 	@mkdir -p $(dir $@)
-	$(WASM_CC) --target=wasm32-wasi -O2 -nostartfiles -Wl,--no-entry \
+	$(call say,LD,$@)
+	$(Q)$(WASM_CC) --target=wasm32-wasi -O2 -nostartfiles -Wl,--no-entry \
 	    -Wl,--strip-all -Wl,-z,stack-size=1048576 -o $@ $(WASM_OBJ) -lm
 
 $(WEB_OUT)/%: web/%
 	@mkdir -p $(dir $@)
-	cp $< $@
+	$(call say,CP,$@)
+	$(Q)cp $< $@
 
 # The module and the course's references as base64 in a script, so the
 # page fetches nothing and also works opened from file://.
 $(WEB_OUT)/assets.js: $(WEB_WASM) $(COURSE_PNG)
 	@mkdir -p $(dir $@)
-	{ echo '// Made by make web: rayo.wasm and data/course/*.png, base64.'; \
+	$(call say,GEN,$@)
+	$(Q){ echo '// Made by make web: rayo.wasm and data/course/*.png, base64.'; \
 	  echo 'window.RAYO_ASSETS = {'; \
 	  printf '  "wasm": "%s",\n' "$$(base64 -w0 $(WEB_WASM))"; \
 	  for f in $(COURSE_PNG); do \

@@ -6,23 +6,28 @@
  * PREFIX/share/rayo/course/ once installed), looked for in this order:
  * $RAYO_DATA_DIR/course, then beside the running command
  * (DIR/../data/course for build/rayo in a work tree, DIR/../share/rayo/
- * course for PREFIX/bin/rayo).  Finding files is the command's job; the
- * library only ever gets a path.
+ * course for PREFIX/bin/rayo), and last the copy built into the library
+ * (rayo_course_reference_png), so a copied command needs no data files.
+ * Finding files is the command's job; the library only ever gets a path
+ * (the built-in copy is handed on as a file only this process sees).
  *
  * Image operands (compare, view, convert) name them course:ej1,
  * course:ej2, course:ej3.  A file whose name really is "course:ej1" in
  * the current directory wins (./course:ej1 always means the file), so no
  * name that worked before changes meaning.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* memfd_create */
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli.h"
+#include "rayo/course.h"
 
 static int readable(const char *path)
 {
@@ -34,6 +39,46 @@ static int join(char *out, size_t room, const char *dir, const char *file)
 {
     int n = snprintf(out, room, "%s/%s", dir, file);
     return n > 0 && (size_t)n < room;
+}
+
+/*
+ * The library's built-in copy of the exercise's reference as a path: an
+ * anonymous in-memory file (closed on exec, so no program rayo runs sees
+ * it), written once per exercise and kept open until rayo exits; readers
+ * open it again through /proc/self/fd.  0 when there is none or the
+ * system refuses.
+ */
+static int built_in(const char *exercise, const char *file, char *path,
+                    size_t room)
+{
+    static int fds[RAYO_COURSE_EXERCISES] = {-1, -1, -1};
+    rayo_course_exercise e = rayo_course_find(exercise);
+    const unsigned char *data;
+    size_t size, done = 0;
+    int n;
+    if (e >= RAYO_COURSE_EXERCISES)
+        return 0;
+    data = rayo_course_reference_png(e, &size);
+    if (data == NULL)
+        return 0;
+    if (fds[e] < 0) {
+        int fd = memfd_create(file, MFD_CLOEXEC);
+        if (fd < 0)
+            return 0;
+        while (done < size) {
+            ssize_t w = write(fd, data + done, size - done);
+            if (w < 0 && errno == EINTR)
+                continue;
+            if (w <= 0) {
+                close(fd);
+                return 0;
+            }
+            done += (size_t)w;
+        }
+        fds[e] = fd;
+    }
+    n = snprintf(path, room, "/proc/self/fd/%d", fds[e]);
+    return n > 0 && (size_t)n < room && readable(path);
 }
 
 int cli_course_reference(const char *exercise, char *path, size_t room)
@@ -52,19 +97,20 @@ int cli_course_reference(const char *exercise, char *path, size_t room)
             return 1;
     }
     n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0)
-        return 0;
-    exe[n] = '\0';
-    slash = strrchr(exe, '/');
-    if (slash == NULL)
-        return 0;
-    *slash = '\0';
-    for (i = 0; i < sizeof beside / sizeof beside[0]; i++) {
-        snprintf(dir, sizeof dir, "%s/%s", exe, beside[i]);
-        if (join(path, room, dir, file) && readable(path))
-            return 1;
+    slash = NULL;
+    if (n > 0) {
+        exe[n] = '\0';
+        slash = strrchr(exe, '/');
     }
-    return 0;
+    if (slash != NULL) {
+        *slash = '\0';
+        for (i = 0; i < sizeof beside / sizeof beside[0]; i++) {
+            snprintf(dir, sizeof dir, "%s/%s", exe, beside[i]);
+            if (join(path, room, dir, file) && readable(path))
+                return 1;
+        }
+    }
+    return built_in(exercise, file, path, room);
 }
 
 int cli_image_operand(const char *operand, char *path, size_t room,

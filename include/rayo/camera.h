@@ -15,6 +15,7 @@
 
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/ray.h"
 #include "rayo/status.h"
 
@@ -32,16 +33,16 @@ typedef struct rayo_camera {
  * than RAYO_MAX_PIXELS pixels, a field of view outside (0, 180) or a
  * non-finite origin.
  */
-rayo_status rayo_camera_init(rayo_camera *camera, uint32_t width,
-                             uint32_t height, double fov_degrees,
-                             rayo_vec3 origin, rayo_error *err);
+RAYO_API rayo_status rayo_camera_init(rayo_camera *camera, uint32_t width,
+                                      uint32_t height, double fov_degrees,
+                                      rayo_vec3 origin, rayo_error *err);
 
 /*
  * Turns the camera to look at target with the given up hint.  Fails when
  * target equals the origin or up is parallel to the view direction.
  */
-rayo_status rayo_camera_look_at(rayo_camera *camera, rayo_vec3 target,
-                                rayo_vec3 up, rayo_error *err);
+RAYO_API rayo_status rayo_camera_look_at(rayo_camera *camera, rayo_vec3 target,
+                                         rayo_vec3 up, rayo_error *err);
 
 /*
  * The ray through image position (px, py), in pixel units: (i, j) is the

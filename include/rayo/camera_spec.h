@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "rayo/camera.h"
+#include "rayo/export.h"
 #include "rayo/status.h"
 #include "rayo/vec3.h"
 
@@ -34,14 +35,15 @@ typedef struct rayo_camera_spec {
  * The assignment's camera: 640x480, field of view 90, at the origin,
  * looking down +z with +y up, not aimed.
  */
-void rayo_camera_spec_init(rayo_camera_spec *spec);
+RAYO_API void rayo_camera_spec_init(rayo_camera_spec *spec);
 
 /*
  * Builds the camera: rayo_camera_init, then rayo_camera_look_at when
  * aimed.  Their errors (RAYO_ERR_INVALID) come back unchanged.
  */
-rayo_status rayo_camera_spec_build(const rayo_camera_spec *spec,
-                                   rayo_camera *camera, rayo_error *err);
+RAYO_API rayo_status rayo_camera_spec_build(const rayo_camera_spec *spec,
+                                            rayo_camera *camera,
+                                            rayo_error *err);
 
 #ifdef __cplusplus
 }

@@ -44,6 +44,7 @@
 #include <stdint.h>
 
 #include "rayo/course.h"
+#include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/output.h"
 #include "rayo/reader.h"
@@ -117,7 +118,7 @@ typedef struct rayo_compare_options {
                          (default) or RAYO_COMPARE_COURSE_NONE */
 } rayo_compare_options;
 
-void rayo_compare_options_init(rayo_compare_options *options);
+RAYO_API void rayo_compare_options_init(rayo_compare_options *options);
 
 /* One channel of a tone comparison, in levels of 255. */
 typedef struct rayo_compare_channel {
@@ -225,11 +226,11 @@ typedef struct rayo_compare_report {
  * (RAYO_ERR_NOMEM) or an invalid image (RAYO_ERR_INVALID); disagreement
  * is the report's business.
  */
-rayo_status rayo_compare_images(const rayo_image *reference,
-                                 const rayo_image *image,
-                                 const rayo_compare_options *options,
-                                 rayo_compare_report *report,
-                                 rayo_error *err);
+RAYO_API rayo_status rayo_compare_images(const rayo_image *reference,
+                                          const rayo_image *image,
+                                          const rayo_compare_options *options,
+                                          rayo_compare_report *report,
+                                          rayo_error *err);
 
 /*
  * Writes the difference picture to out as an 8-bit PNG of the
@@ -249,10 +250,9 @@ rayo_status rayo_compare_images(const rayo_image *reference,
 #define RAYO_DIFF_IMAGE_ONLY_RGB 0x10, 0x60, 0xF0     /* blue */
 #define RAYO_DIFF_EXPLAINED_RGB 0xFF, 0xB0, 0x00      /* amber */
 #define RAYO_DIFF_UNEXPLAINED_RGB 0xFF, 0x20, 0x20    /* red */
-rayo_status rayo_compare_write_diff(const rayo_image *reference,
-                                    const rayo_image *image,
-                                    const rayo_compare_options *options,
-                                    rayo_output *out, rayo_error *err);
+RAYO_API rayo_status rayo_compare_write_diff(
+    const rayo_image *reference, const rayo_image *image,
+    const rayo_compare_options *options, rayo_output *out, rayo_error *err);
 
 /*
  * Gray and colour comparisons keep, for the process's next ones, the
@@ -262,23 +262,24 @@ rayo_status rayo_compare_write_diff(const rayo_image *reference,
  * it (call it when no comparison is running); the next comparison makes
  * again what it needs.  Reports never depend on what was kept.
  */
-void rayo_compare_release_cache(void);
+RAYO_API void rayo_compare_release_cache(void);
 
 /* "identical", "consistent", "inconsistent". */
-const char *rayo_compare_verdict_name(rayo_compare_verdict verdict);
+RAYO_API const char *rayo_compare_verdict_name(rayo_compare_verdict verdict);
 
 /* A short machine name: "flipped-vertically", "shifted", "none", ... */
-const char *rayo_compare_diagnosis_name(rayo_compare_diagnosis diagnosis);
+RAYO_API const char *rayo_compare_diagnosis_name(
+    rayo_compare_diagnosis diagnosis);
 
 /*
  * The report as text for a person (several lines, English) or as one
  * JSON object, into buffer (always terminated when size > 0).  Returns
  * the length the whole text needs, as snprintf does.
  */
-size_t rayo_compare_format_text(const rayo_compare_report *report,
-                                char *buffer, size_t size);
-size_t rayo_compare_format_json(const rayo_compare_report *report,
-                                char *buffer, size_t size);
+RAYO_API size_t rayo_compare_format_text(const rayo_compare_report *report,
+                                         char *buffer, size_t size);
+RAYO_API size_t rayo_compare_format_json(const rayo_compare_report *report,
+                                         char *buffer, size_t size);
 
 /*
  * Records in report what a reader that clamped the image's samples
@@ -288,13 +289,13 @@ size_t rayo_compare_format_json(const rayo_compare_report *report,
  * image, whatever its picture); an inconsistent one keeps its own
  * diagnosis, and the formatters note the clamping.
  */
-void rayo_compare_note_clamped(rayo_compare_report *report,
-                               const rayo_read_report *read);
+RAYO_API void rayo_compare_note_clamped(rayo_compare_report *report,
+                                        const rayo_read_report *read);
 
 /* The diagnosis alone as one sentence (no newline), as the text report
    gives it after "diagnosis: "; "none" when there is none. */
-size_t rayo_compare_format_diagnosis(const rayo_compare_report *report,
-                                     char *buffer, size_t size);
+RAYO_API size_t rayo_compare_format_diagnosis(
+    const rayo_compare_report *report, char *buffer, size_t size);
 
 #ifdef __cplusplus
 }

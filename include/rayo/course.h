@@ -20,6 +20,7 @@
 
 #include <stddef.h>
 
+#include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
 
@@ -72,18 +73,18 @@ typedef struct rayo_course_options {
 } rayo_course_options;
 
 /* No mistake, the convention's rows, focal_scale 1. */
-void rayo_course_options_init(rayo_course_options *options);
+RAYO_API void rayo_course_options_init(rayo_course_options *options);
 
 /* "ej1", "ej2", "ej3"; RAYO_COURSE_EXERCISES when name is none. */
-rayo_course_exercise rayo_course_find(const char *name);
-const char *rayo_course_name(rayo_course_exercise exercise);
+RAYO_API rayo_course_exercise rayo_course_find(const char *name);
+RAYO_API const char *rayo_course_name(rayo_course_exercise exercise);
 
 /* 1 when the mistake can happen in (and is modelled for) exercise. */
-int rayo_course_mistake_applies(rayo_course_exercise exercise,
-                                rayo_course_mistake mistake);
+RAYO_API int rayo_course_mistake_applies(rayo_course_exercise exercise,
+                                         rayo_course_mistake mistake);
 
 /* A short machine name: "no-shadows", "self-shadow", ... */
-const char *rayo_course_mistake_name(rayo_course_mistake mistake);
+RAYO_API const char *rayo_course_mistake_name(rayo_course_mistake mistake);
 
 /*
  * One sentence for a student (English, no newline, no quotes): what the
@@ -92,8 +93,8 @@ const char *rayo_course_mistake_name(rayo_course_mistake mistake);
  * only when no other sphere lies on the ray from P towards it (delta_i
  * in C = Ia ka + sum delta_i Ii kd (Li.N))".
  */
-const char *rayo_course_mistake_text(rayo_course_exercise exercise,
-                                     rayo_course_mistake mistake);
+RAYO_API const char *rayo_course_mistake_text(rayo_course_exercise exercise,
+                                              rayo_course_mistake mistake);
 
 /*
  * Renders the exercise's 640x480 image into a new image: RAYO_SAMPLE_BIT
@@ -101,9 +102,19 @@ const char *rayo_course_mistake_text(rayo_course_exercise exercise,
  * NULL (rayo_course_options_init's).  RAYO_ERR_INVALID for a mistake
  * that does not apply to the exercise.
  */
-rayo_status rayo_course_render(rayo_course_exercise exercise,
-                               const rayo_course_options *options,
-                               rayo_image *image, rayo_error *err);
+RAYO_API rayo_status rayo_course_render(rayo_course_exercise exercise,
+                                        const rayo_course_options *options,
+                                        rayo_image *image, rayo_error *err);
+
+/*
+ * The course's own reference image for exercise, built into the library:
+ * the bytes of the PNG file the course published
+ * (referencia-catedra-ejN.png), for rayo_image_read_memory.  *size (when
+ * size is not NULL) receives their number.  NULL and 0 for an exercise
+ * out of range.  The bytes are static: never freed, never changed.
+ */
+RAYO_API const unsigned char *
+rayo_course_reference_png(rayo_course_exercise exercise, size_t *size);
 
 #ifdef __cplusplus
 }

@@ -12,6 +12,8 @@
 #ifndef RAYO_EJERCICIO1_H
 #define RAYO_EJERCICIO1_H
 
+#include "rayo/export.h"
+
 #define CX 0.5
 #define CY 0.75
 #define CZ 1.9
@@ -26,17 +28,17 @@ extern "C" {
 #endif
 
 /* El producto interno (x1, y1, z1) . (x2, y2, z2). */
-float producto_interno(float x1, float y1, float z1, float x2, float y2,
-                       float z2);
+RAYO_API float producto_interno(float x1, float y1, float z1, float x2,
+                                float y2, float z2);
 
 /* La norma del vector (x, y, z). */
-float norma(float x, float y, float z);
+RAYO_API float norma(float x, float y, float z);
 
 /*
  * 1 si el rayo desde el origen con dirección unitaria (dx, dy, dz)
  * intersecta la esfera de centro (CX, CY, CZ) y radio R, 0 si no.
  */
-int intersecta_esfera(float dx, float dy, float dz);
+RAYO_API int intersecta_esfera(float dx, float dy, float dz);
 
 #ifdef __cplusplus
 }

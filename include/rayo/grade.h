@@ -28,6 +28,7 @@
 #include <stdint.h>
 
 #include "rayo/course.h"
+#include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
 
@@ -89,10 +90,10 @@ typedef struct rayo_grade_exercise {
 } rayo_grade_exercise;
 
 /* The exercise called name, or NULL. */
-const rayo_grade_exercise *rayo_grade_exercise_find(const char *name);
+RAYO_API const rayo_grade_exercise *rayo_grade_exercise_find(const char *name);
 
 /* The registry: *count exercises. */
-const rayo_grade_exercise *rayo_grade_exercises(size_t *count);
+RAYO_API const rayo_grade_exercise *rayo_grade_exercises(size_t *count);
 
 typedef struct rayo_grade_options {
     const char *const *sources;  /* the student's .c files */
@@ -116,7 +117,7 @@ typedef struct rayo_grade_options {
 } rayo_grade_options;
 
 /* The defaults above, for exercise ej1 and no sources. */
-void rayo_grade_options_init(rayo_grade_options *options);
+RAYO_API void rayo_grade_options_init(rayo_grade_options *options);
 
 /*
  * Grades a submission.  RAYO_OK means the grading itself worked, however
@@ -125,8 +126,8 @@ void rayo_grade_options_init(rayo_grade_options *options);
  * and leave the report empty.  Free the report with
  * rayo_grade_report_free in every case.
  */
-rayo_status rayo_grade(const rayo_grade_options *options,
-                       rayo_grade_report *report, rayo_error *err);
+RAYO_API rayo_status rayo_grade(const rayo_grade_options *options,
+                                rayo_grade_report *report, rayo_error *err);
 
 /*
  * Whether a submission graded with these options would be isolated: 1
@@ -137,19 +138,19 @@ rayo_status rayo_grade(const rayo_grade_options *options,
  * rayo_grade with RAYO_GRADE_SANDBOX_REQUIRE fails with RAYO_ERR_INVALID
  * when this says 0.
  */
-int rayo_grade_sandbox_check(const rayo_grade_options *options, char *text,
-                             size_t room);
+RAYO_API int rayo_grade_sandbox_check(const rayo_grade_options *options,
+                                      char *text, size_t room);
 
 /* RAYO_GRADE_PASS when no criterion failed, else RAYO_GRADE_FAIL. */
-rayo_grade_result rayo_grade_overall(const rayo_grade_report *report);
+RAYO_API rayo_grade_result rayo_grade_overall(const rayo_grade_report *report);
 
 /* "compile", "functions", "run", "output", "image", "valgrind". */
-const char *rayo_grade_criterion_name(rayo_grade_criterion criterion);
+RAYO_API const char *rayo_grade_criterion_name(rayo_grade_criterion criterion);
 
 /* "pass", "fail", "skipped". */
-const char *rayo_grade_result_name(rayo_grade_result result);
+RAYO_API const char *rayo_grade_result_name(rayo_grade_result result);
 
-void rayo_grade_report_free(rayo_grade_report *report);
+RAYO_API void rayo_grade_report_free(rayo_grade_report *report);
 
 /*
  * The C sources of a submission: path itself when it is a file, else
@@ -157,14 +158,14 @@ void rayo_grade_report_free(rayo_grade_report *report);
  * with rayo_grade_paths_free.  RAYO_ERR_INVALID when a directory holds
  * no .c file.
  */
-rayo_status rayo_grade_sources(const char *path, char ***sources,
-                               size_t *count, rayo_error *err);
+RAYO_API rayo_status rayo_grade_sources(const char *path, char ***sources,
+                                        size_t *count, rayo_error *err);
 
 /* The submission folders directly inside dir, sorted by name. */
-rayo_status rayo_grade_submissions(const char *dir, char ***folders,
-                                   size_t *count, rayo_error *err);
+RAYO_API rayo_status rayo_grade_submissions(const char *dir, char ***folders,
+                                            size_t *count, rayo_error *err);
 
-void rayo_grade_paths_free(char **paths, size_t count);
+RAYO_API void rayo_grade_paths_free(char **paths, size_t count);
 
 #ifdef __cplusplus
 }

@@ -21,6 +21,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/status.h"
 
 #ifdef __cplusplus
@@ -47,27 +48,29 @@ typedef struct rayo_image {
 } rayo_image;
 
 /* The info of a bilevel, 8-bit gray or 8-bit RGB image of this size. */
-rayo_image_info rayo_image_info_bit(uint32_t width, uint32_t height);
-rayo_image_info rayo_image_info_gray8(uint32_t width, uint32_t height);
-rayo_image_info rayo_image_info_rgb8(uint32_t width, uint32_t height);
+RAYO_API rayo_image_info rayo_image_info_bit(uint32_t width, uint32_t height);
+RAYO_API rayo_image_info rayo_image_info_gray8(uint32_t width,
+                                               uint32_t height);
+RAYO_API rayo_image_info rayo_image_info_rgb8(uint32_t width, uint32_t height);
 
 /*
  * Checks that info describes an image rayo accepts: sizes within
  * RAYO_MAX_DIMENSION and RAYO_MAX_PIXELS, channels and maxval consistent
  * with the sample type.  RAYO_ERR_LIMIT for sizes, RAYO_ERR_INVALID else.
  */
-rayo_status rayo_image_info_check(const rayo_image_info *info,
-                                  rayo_error *err);
+RAYO_API rayo_status rayo_image_info_check(const rayo_image_info *info,
+                                           rayo_error *err);
 
 /* Bytes in one row of this layout (no padding). */
-size_t rayo_image_info_row_bytes(const rayo_image_info *info);
+RAYO_API size_t rayo_image_info_row_bytes(const rayo_image_info *info);
 
 /* Allocates a zeroed image (white for BIT, black otherwise). */
-rayo_status rayo_image_create(rayo_image *image, const rayo_image_info *info,
-                              rayo_error *err);
+RAYO_API rayo_status rayo_image_create(rayo_image *image,
+                                       const rayo_image_info *info,
+                                       rayo_error *err);
 
 /* Frees the pixels and zeroes the struct; safe on a zeroed image. */
-void rayo_image_free(rayo_image *image);
+RAYO_API void rayo_image_free(rayo_image *image);
 
 static inline unsigned char *rayo_image_row(const rayo_image *image,
                                             uint32_t row)

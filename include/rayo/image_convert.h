@@ -24,6 +24,7 @@
 #ifndef RAYO_IMAGE_CONVERT_H
 #define RAYO_IMAGE_CONVERT_H
 
+#include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
 
@@ -33,16 +34,16 @@ extern "C" {
 
 /* Bilevel mask: black (1) where the pixel is darker than half the
    maximum (see above).  BIT copies. */
-rayo_status rayo_image_to_bit(const rayo_image *src, rayo_image *dst,
-                              rayo_error *err);
+RAYO_API rayo_status rayo_image_to_bit(const rayo_image *src, rayo_image *dst,
+                                       rayo_error *err);
 
 /* One channel: BIT -> maxval 255 (black 0, white 255); RGB -> luminance. */
-rayo_status rayo_image_to_gray(const rayo_image *src, rayo_image *dst,
-                               rayo_error *err);
+RAYO_API rayo_status rayo_image_to_gray(const rayo_image *src, rayo_image *dst,
+                                        rayo_error *err);
 
 /* Three channels: BIT -> maxval 255; gray repeated. */
-rayo_status rayo_image_to_rgb(const rayo_image *src, rayo_image *dst,
-                              rayo_error *err);
+RAYO_API rayo_status rayo_image_to_rgb(const rayo_image *src, rayo_image *dst,
+                                       rayo_error *err);
 
 #ifdef __cplusplus
 }

@@ -17,6 +17,7 @@
 
 #include <stddef.h>
 
+#include "rayo/export.h"
 #include "rayo/status.h"
 
 #ifdef __cplusplus
@@ -30,19 +31,19 @@ typedef enum rayo_lang {
 #define RAYO_LANG_COUNT 2
 
 /* "en", "es": the code of the language, as --lang and po/ name it. */
-const char *rayo_lang_code(rayo_lang lang);
+RAYO_API const char *rayo_lang_code(rayo_lang lang);
 
 /* "en" or "es" (also "en_US", "es_AR.UTF-8", ...) into *lang; anything
    else is RAYO_ERR_INVALID, naming the text and the accepted codes. */
-rayo_status rayo_lang_parse(const char *text, rayo_lang *lang,
-                            rayo_error *err);
+RAYO_API rayo_status rayo_lang_parse(const char *text, rayo_lang *lang,
+                                     rayo_error *err);
 
 /*
  * The language a locale name asks for: 1 and *lang for a name starting
  * with a known code ("es", "es_AR.UTF-8", "en_GB"), 0 for anything else
  * ("C", "POSIX", "", "fr_FR", NULL).
  */
-int rayo_lang_from_locale(const char *name, rayo_lang *lang);
+RAYO_API int rayo_lang_from_locale(const char *name, rayo_lang *lang);
 
 /*
  * The language the environment asks for, as Unix programs read it: the
@@ -51,7 +52,7 @@ int rayo_lang_from_locale(const char *name, rayo_lang *lang);
  * there gives Spanish, anything else English.  It needs no generated
  * locale and never calls setlocale.
  */
-rayo_lang rayo_lang_from_environment(void);
+RAYO_API rayo_lang rayo_lang_from_environment(void);
 
 /*
  * The translation of msgid into lang, or msgid itself (English, or a
@@ -60,13 +61,13 @@ rayo_lang rayo_lang_from_environment(void);
  * rule ("1 píxel", "2 píxeles"); without a translation, singular when
  * count is 1, else plural.  Both are safe from any thread.
  */
-const char *rayo_gettext(rayo_lang lang, const char *msgid)
+RAYO_API const char *rayo_gettext(rayo_lang lang, const char *msgid)
 #if defined(__GNUC__) || defined(__clang__)
     __attribute__((format_arg(2)))
 #endif
     ;
-const char *rayo_ngettext(rayo_lang lang, const char *singular,
-                          const char *plural, unsigned long count)
+RAYO_API const char *rayo_ngettext(rayo_lang lang, const char *singular,
+                                   const char *plural, unsigned long count)
 #if defined(__GNUC__) || defined(__clang__)
     __attribute__((format_arg(2))) __attribute__((format_arg(3)))
 #endif
@@ -79,8 +80,8 @@ const char *rayo_ngettext(rayo_lang lang, const char *singular,
  * always suffices for |value| < 1e30); returns buffer.
  */
 #define RAYO_LANG_NUMBER_SIZE 64
-char *rayo_lang_decimal(rayo_lang lang, double value, int decimals,
-                        char *buffer, size_t room);
+RAYO_API char *rayo_lang_decimal(rayo_lang lang, double value, int decimals,
+                                 char *buffer, size_t room);
 
 #ifdef __cplusplus
 }

@@ -26,6 +26,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/status.h"
 
 #ifdef __cplusplus
@@ -56,7 +57,7 @@ typedef struct rayo_mesh_report {
 } rayo_mesh_report;
 
 /* "binary STL", "ASCII STL" or "OBJ". */
-const char *rayo_mesh_format_name(rayo_mesh_format format);
+RAYO_API const char *rayo_mesh_format_name(rayo_mesh_format format);
 
 /*
  * Reads the mesh in path ("-" = standard input) into mesh, freed with
@@ -64,16 +65,18 @@ const char *rayo_mesh_format_name(rayo_mesh_format format);
  * RAYO_ERR_FORMAT (malformed or lying input), RAYO_ERR_LIMIT (more than
  * RAYO_MAX_OBJECTS triangles), RAYO_ERR_IO, RAYO_ERR_NOMEM.
  */
-rayo_status rayo_mesh_read_file(const char *path, rayo_mesh *mesh,
-                                rayo_mesh_report *report, rayo_error *err);
+RAYO_API rayo_status rayo_mesh_read_file(const char *path, rayo_mesh *mesh,
+                                         rayo_mesh_report *report,
+                                         rayo_error *err);
 
 /* The same from size bytes at data; name is used in messages. */
-rayo_status rayo_mesh_read_memory(const void *data, size_t size,
-                                  const char *name, rayo_mesh *mesh,
-                                  rayo_mesh_report *report, rayo_error *err);
+RAYO_API rayo_status rayo_mesh_read_memory(const void *data, size_t size,
+                                           const char *name, rayo_mesh *mesh,
+                                           rayo_mesh_report *report,
+                                           rayo_error *err);
 
 /* Frees the triangles and zeroes the struct; safe on a zeroed mesh. */
-void rayo_mesh_free(rayo_mesh *mesh);
+RAYO_API void rayo_mesh_free(rayo_mesh *mesh);
 
 #ifdef __cplusplus
 }

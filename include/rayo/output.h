@@ -27,6 +27,7 @@
 
 #include <stddef.h>
 
+#include "rayo/export.h"
 #include "rayo/status.h"
 
 #ifdef __cplusplus
@@ -36,15 +37,15 @@ extern "C" {
 typedef struct rayo_output rayo_output;
 
 /* Opens path for writing; "-" is standard output. */
-rayo_status rayo_output_open(rayo_output **out, const char *path,
-                             rayo_error *err);
+RAYO_API rayo_status rayo_output_open(rayo_output **out, const char *path,
+                                      rayo_error *err);
 
 /* Wraps an open descriptor (not closed by rayo); name is for messages. */
-rayo_status rayo_output_open_fd(rayo_output **out, int fd, const char *name,
-                                rayo_error *err);
+RAYO_API rayo_status rayo_output_open_fd(rayo_output **out, int fd,
+                                         const char *name, rayo_error *err);
 
-rayo_status rayo_output_write(rayo_output *out, const void *data,
-                              size_t size, rayo_error *err);
+RAYO_API rayo_status rayo_output_write(rayo_output *out, const void *data,
+                                       size_t size, rayo_error *err);
 
 /*
  * Flushes, syncs and (for a regular file) renames into place, then frees
@@ -52,18 +53,18 @@ rayo_status rayo_output_write(rayo_output *out, const void *data,
  * Once a write has failed, bytes are missing, and the commit fails with
  * that write's error.
  */
-rayo_status rayo_output_commit(rayo_output *out, rayo_error *err);
+RAYO_API rayo_status rayo_output_commit(rayo_output *out, rayo_error *err);
 
 /* Discards what was written (removes the temporary file) and frees out. */
-void rayo_output_abort(rayo_output *out);
+RAYO_API void rayo_output_abort(rayo_output *out);
 
 /* The name used in messages: the path, or "standard output". */
-const char *rayo_output_name(const rayo_output *out);
+RAYO_API const char *rayo_output_name(const rayo_output *out);
 
 /* 1 when out writes straight to a terminal (standard output on one,
  * /dev/tty, a pseudo-terminal's device), where a progress bar on the
  * same terminal would land amid the image. */
-int rayo_output_is_terminal(const rayo_output *out);
+RAYO_API int rayo_output_is_terminal(const rayo_output *out);
 
 /*
  * The temporary file being written: its name in the directory open as
@@ -72,7 +73,7 @@ int rayo_output_is_terminal(const rayo_output *out);
  * process dies, with unlinkat(*dir_fd, name, 0), which is async-signal-
  * safe and finds the file even after its directory was renamed.
  */
-const char *rayo_output_temp_at(const rayo_output *out, int *dir_fd);
+RAYO_API const char *rayo_output_temp_at(const rayo_output *out, int *dir_fd);
 
 #ifdef __cplusplus
 }

@@ -31,6 +31,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/grade.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
@@ -48,9 +49,10 @@ extern "C" {
  * the caller frees; otherwise image is left zeroed.  Returns RAYO_OK
  * unless memory ran out.
  */
-rayo_status rayo_pbm_check(const void *data, size_t size, uint32_t width,
-                           uint32_t height, rayo_grade_item *item,
-                           rayo_image *image, rayo_error *err);
+RAYO_API rayo_status rayo_pbm_check(const void *data, size_t size,
+                                    uint32_t width, uint32_t height,
+                                    rayo_grade_item *item, rayo_image *image,
+                                    rayo_error *err);
 
 /*
  * The same for the plain format magic asks for: '1' (exactly
@@ -64,10 +66,10 @@ rayo_status rayo_pbm_check(const void *data, size_t size, uint32_t width,
  * warnings.  RAYO_ERR_INVALID for another magic, RAYO_ERR_NOMEM when
  * memory ran out; RAYO_OK otherwise, however wrong the output is.
  */
-rayo_status rayo_pnm_check(const void *data, size_t size, char magic,
-                           uint32_t width, uint32_t height,
-                           rayo_grade_item *item, rayo_image *image,
-                           rayo_error *err);
+RAYO_API rayo_status rayo_pnm_check(const void *data, size_t size, char magic,
+                                    uint32_t width, uint32_t height,
+                                    rayo_grade_item *item, rayo_image *image,
+                                    rayo_error *err);
 
 #ifdef __cplusplus
 }

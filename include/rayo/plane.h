@@ -11,6 +11,7 @@
 #ifndef RAYO_PLANE_H
 #define RAYO_PLANE_H
 
+#include "rayo/export.h"
 #include "rayo/ray.h"
 
 typedef struct rayo_plane {
@@ -23,11 +24,12 @@ typedef struct rayo_plane {
  * INFINITY when there is none (parallel ray, or the crossing lies outside
  * the interval).
  */
-double rayo_plane_intersect(const rayo_plane *plane, const rayo_ray *ray,
-                            double t_min, double t_max);
+RAYO_API double rayo_plane_intersect(const rayo_plane *plane,
+                                     const rayo_ray *ray, double t_min,
+                                     double t_max);
 
 /* The plane's normal turned to face the ray (so that n.d <= 0). */
-rayo_vec3 rayo_plane_facing_normal(const rayo_plane *plane,
-                                   const rayo_ray *ray);
+RAYO_API rayo_vec3 rayo_plane_facing_normal(const rayo_plane *plane,
+                                            const rayo_ray *ray);
 
 #endif

@@ -38,6 +38,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
 
@@ -82,7 +83,7 @@ typedef struct rayo_preview_options {
 } rayo_preview_options;
 
 /* 80 columns, blocks, no colour. */
-void rayo_preview_options_init(rayo_preview_options *options);
+RAYO_API void rayo_preview_options_init(rayo_preview_options *options);
 
 /*
  * Renders image as UTF-8 (ASCII for RAYO_PREVIEW_ASCII) lines, each of
@@ -92,11 +93,11 @@ void rayo_preview_options_init(rayo_preview_options *options);
  * the size of the picture in cells.  RAYO_ERR_INVALID for 0 columns or a
  * style or colour outside the enums.
  */
-rayo_status rayo_preview_render(const rayo_image *image,
-                                const rayo_preview_options *options,
-                                char **text, size_t *length,
-                                unsigned *cells_wide, unsigned *lines,
-                                rayo_error *err);
+RAYO_API rayo_status rayo_preview_render(const rayo_image *image,
+                                         const rayo_preview_options *options,
+                                         char **text, size_t *length,
+                                         unsigned *cells_wide, unsigned *lines,
+                                         rayo_error *err);
 
 /*
  * The same picture from rows as they are made (rayo render's row sink),
@@ -115,19 +116,20 @@ rayo_status rayo_preview_render(const rayo_image *image,
  */
 typedef struct rayo_preview rayo_preview;
 
-rayo_status rayo_preview_create(rayo_preview **preview,
-                                const rayo_image_info *info,
-                                const rayo_preview_options *options,
-                                rayo_error *err);
-rayo_status rayo_preview_rows(void *preview, const unsigned char *rows,
-                              size_t stride, uint32_t first_row,
-                              uint32_t count, rayo_error *err);
-rayo_status rayo_preview_text(const rayo_preview *preview,
-                              const rayo_preview_options *options,
-                              char **text, size_t *length,
-                              unsigned *cells_wide, unsigned *lines,
-                              rayo_error *err);
-void rayo_preview_free(rayo_preview *preview);
+RAYO_API rayo_status rayo_preview_create(rayo_preview **preview,
+                                         const rayo_image_info *info,
+                                         const rayo_preview_options *options,
+                                         rayo_error *err);
+RAYO_API rayo_status rayo_preview_rows(void *preview,
+                                       const unsigned char *rows,
+                                       size_t stride, uint32_t first_row,
+                                       uint32_t count, rayo_error *err);
+RAYO_API rayo_status rayo_preview_text(const rayo_preview *preview,
+                                       const rayo_preview_options *options,
+                                       char **text, size_t *length,
+                                       unsigned *cells_wide, unsigned *lines,
+                                       rayo_error *err);
+RAYO_API void rayo_preview_free(rayo_preview *preview);
 
 #ifdef __cplusplus
 }

@@ -62,6 +62,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
 #include "rayo/writer.h"
@@ -139,21 +140,21 @@ typedef struct rayo_read_options {
  * caller frees with rayo_image_free.  report may be NULL.  On failure
  * image is left zeroed.
  */
-rayo_status rayo_image_read_file(const char *path, rayo_image *image,
-                                 rayo_read_report *report, rayo_error *err);
+RAYO_API rayo_status rayo_image_read_file(const char *path, rayo_image *image,
+                                          rayo_read_report *report,
+                                          rayo_error *err);
 
 /* rayo_image_read_file with options (NULL: none). */
-rayo_status rayo_image_read_file_with(const char *path,
-                                      const rayo_read_options *options,
-                                      rayo_image *image,
-                                      rayo_read_report *report,
-                                      rayo_error *err);
+RAYO_API rayo_status rayo_image_read_file_with(
+    const char *path, const rayo_read_options *options, rayo_image *image,
+    rayo_read_report *report, rayo_error *err);
 
 /* The same from size bytes at data; name is used in messages. */
-rayo_status rayo_image_read_memory(const void *data, size_t size,
-                                   const char *name, rayo_image *image,
-                                   rayo_read_report *report,
-                                   rayo_error *err);
+RAYO_API rayo_status rayo_image_read_memory(const void *data, size_t size,
+                                            const char *name,
+                                            rayo_image *image,
+                                            rayo_read_report *report,
+                                            rayo_error *err);
 
 #ifdef __cplusplus
 }

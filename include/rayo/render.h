@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "rayo/camera.h"
+#include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/scene.h"
 #include "rayo/status.h"
@@ -51,15 +52,16 @@ typedef struct rayo_tp1_reading {
  * "hit", "course-gray", "course-color", "phong" or "course-tp1" into *mode;
  * RAYO_ERR_INVALID (naming the accepted names) for anything else.
  */
-rayo_status rayo_shade_mode_parse(const char *name, rayo_shade_mode *mode,
-                                  rayo_error *err);
+RAYO_API rayo_status rayo_shade_mode_parse(const char *name,
+                                           rayo_shade_mode *mode,
+                                           rayo_error *err);
 
 /* The name rayo_shade_mode_parse accepts for mode. */
-const char *rayo_shade_mode_name(rayo_shade_mode mode);
+RAYO_API const char *rayo_shade_mode_name(rayo_shade_mode mode);
 
 /* The TP1 readings' defaults: untinted reflections, shadows from
  * anything in the light's direction, epsilon 1e-6. */
-void rayo_tp1_reading_init(rayo_tp1_reading *reading);
+RAYO_API void rayo_tp1_reading_init(rayo_tp1_reading *reading);
 
 /* Largest --samples N (N x N rays per pixel) and reflection depth. */
 #define RAYO_MAX_SAMPLES 16u
@@ -99,11 +101,11 @@ typedef struct rayo_render_options {
 
 /* Hit shading, 1 sample, depth 5, one thread per CPU, no progress or
  * cancel callback, the TP1 readings' defaults. */
-void rayo_render_options_init(rayo_render_options *options);
+RAYO_API void rayo_render_options_init(rayo_render_options *options);
 
 /* The layout of the rows this camera and shading mode produce. */
-rayo_image_info rayo_render_image_info(const rayo_camera *camera,
-                                       const rayo_render_options *options);
+RAYO_API rayo_image_info rayo_render_image_info(
+    const rayo_camera *camera, const rayo_render_options *options);
 
 /*
  * Receives count finished rows starting at first_row, stride bytes apart.
@@ -114,29 +116,31 @@ typedef rayo_status (*rayo_row_sink)(void *context,
                                      size_t stride, uint32_t first_row,
                                      uint32_t count, rayo_error *err);
 
-rayo_status rayo_render(const rayo_camera *camera, const rayo_scene *scene,
-                        const rayo_render_options *options,
-                        rayo_row_sink sink, void *sink_context,
-                        rayo_error *err);
+RAYO_API rayo_status rayo_render(const rayo_camera *camera,
+                                 const rayo_scene *scene,
+                                 const rayo_render_options *options,
+                                 rayo_row_sink sink, void *sink_context,
+                                 rayo_error *err);
 
 /*
  * Renders one row into out (rayo_image_info_row_bytes() bytes), on the
  * calling thread.  Each call works out afresh what a frame's rows share;
  * rayo_render, which does that once, is the faster way to many rows.
  */
-void rayo_render_row(const rayo_camera *camera, const rayo_scene *scene,
-                     const rayo_render_options *options, uint32_t row,
-                     unsigned char *out);
+RAYO_API void rayo_render_row(const rayo_camera *camera,
+                              const rayo_scene *scene,
+                              const rayo_render_options *options, uint32_t row,
+                              unsigned char *out);
 
 /* Renders a whole frame into a new image (free it with rayo_image_free). */
-rayo_status rayo_render_image(const rayo_camera *camera,
-                              const rayo_scene *scene,
-                              const rayo_render_options *options,
-                              rayo_image *image, rayo_error *err);
+RAYO_API rayo_status rayo_render_image(const rayo_camera *camera,
+                                       const rayo_scene *scene,
+                                       const rayo_render_options *options,
+                                       rayo_image *image, rayo_error *err);
 
 /* The number of CPUs this process may use (its affinity mask, else the
  * online CPUs), at least 1 and at most RAYO_MAX_THREADS. */
-unsigned rayo_cpu_count(void);
+RAYO_API unsigned rayo_cpu_count(void);
 
 #ifdef __cplusplus
 }

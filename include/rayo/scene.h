@@ -34,6 +34,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/plane.h"
 #include "rayo/ray.h"
 #include "rayo/sphere.h"
@@ -91,58 +92,61 @@ typedef struct rayo_scene_stats {
 /* Passed as `skip` when no object is to be ignored. */
 #define RAYO_NO_OBJECT ((size_t)-1)
 
-rayo_status rayo_scene_create(rayo_scene **scene, rayo_error *err);
+RAYO_API rayo_status rayo_scene_create(rayo_scene **scene, rayo_error *err);
 
 /* Frees the scene and everything in it; NULL is allowed. */
-void rayo_scene_free(rayo_scene *scene);
+RAYO_API void rayo_scene_free(rayo_scene *scene);
 
 /*
  * Adds a material; *id receives its number (the first added is 1).
  * RAYO_ERR_INVALID names the first field out of range; RAYO_ERR_LIMIT
  * past RAYO_MAX_MATERIALS.
  */
-rayo_status rayo_scene_add_material(rayo_scene *scene,
-                                    const rayo_material *material,
-                                    unsigned *id, rayo_error *err);
+RAYO_API rayo_status rayo_scene_add_material(rayo_scene *scene,
+                                             const rayo_material *material,
+                                             unsigned *id, rayo_error *err);
 
 /*
  * Adds a sphere with material 0.  RAYO_ERR_INVALID when the centre is not
  * finite or the radius is not a finite number > 0; RAYO_ERR_LIMIT past
  * RAYO_MAX_OBJECTS.
  */
-rayo_status rayo_scene_add_sphere(rayo_scene *scene, rayo_vec3 center,
-                                  double radius, rayo_error *err);
+RAYO_API rayo_status rayo_scene_add_sphere(rayo_scene *scene, rayo_vec3 center,
+                                           double radius, rayo_error *err);
 
 /* The same with a material; RAYO_ERR_INVALID for an unknown material. */
-rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,
-                                           rayo_vec3 center, double radius,
-                                           unsigned material,
-                                           rayo_error *err);
+RAYO_API rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,
+                                                    rayo_vec3 center,
+                                                    double radius,
+                                                    unsigned material,
+                                                    rayo_error *err);
 
 /*
  * Adds the plane through point with the given normal (any non-zero
  * finite length; stored normalised).
  */
-rayo_status rayo_scene_add_plane(rayo_scene *scene, rayo_vec3 point,
-                                 rayo_vec3 normal, unsigned material,
-                                 rayo_error *err);
+RAYO_API rayo_status rayo_scene_add_plane(rayo_scene *scene, rayo_vec3 point,
+                                          rayo_vec3 normal, unsigned material,
+                                          rayo_error *err);
 
 /* Adds a triangle; RAYO_ERR_INVALID when its corners are collinear.
  * It is shaded with its corners' normal (rayo_triangle_normal). */
-rayo_status rayo_scene_add_triangle(rayo_scene *scene, rayo_vec3 a,
-                                    rayo_vec3 b, rayo_vec3 c,
-                                    unsigned material, rayo_error *err);
+RAYO_API rayo_status rayo_scene_add_triangle(rayo_scene *scene, rayo_vec3 a,
+                                             rayo_vec3 b, rayo_vec3 c,
+                                             unsigned material,
+                                             rayo_error *err);
 
 /*
  * The same, shaded with the given normal (any finite length, stored
  * normalised; turned towards the ray as every triangle's), as a mesh
  * file's facet normal asks; a zero normal means the corners'.
  */
-rayo_status rayo_scene_add_triangle_normal(rayo_scene *scene, rayo_vec3 a,
-                                           rayo_vec3 b, rayo_vec3 c,
-                                           rayo_vec3 normal,
-                                           unsigned material,
-                                           rayo_error *err);
+RAYO_API rayo_status rayo_scene_add_triangle_normal(rayo_scene *scene,
+                                                    rayo_vec3 a, rayo_vec3 b,
+                                                    rayo_vec3 c,
+                                                    rayo_vec3 normal,
+                                                    unsigned material,
+                                                    rayo_error *err);
 
 /* Where a mesh goes: scaled about the origin, rotated about x, then y,
  * then z (degrees), then moved. */
@@ -155,7 +159,7 @@ typedef struct rayo_mesh_placement {
 } rayo_mesh_placement;
 
 /* The defaults above. */
-void rayo_mesh_placement_init(rayo_mesh_placement *placement);
+RAYO_API void rayo_mesh_placement_init(rayo_mesh_placement *placement);
 
 /*
  * Adds every triangle of mesh, placed, in material, shaded with the
@@ -166,39 +170,43 @@ void rayo_mesh_placement_init(rayo_mesh_placement *placement);
  * RAYO_ERR_LIMIT past RAYO_MAX_OBJECTS objects (the triangles added so
  * far stay).
  */
-rayo_status rayo_scene_add_mesh(rayo_scene *scene, const rayo_mesh *mesh,
-                                const rayo_mesh_placement *placement,
-                                unsigned material, size_t *left_out,
-                                rayo_error *err);
+RAYO_API rayo_status rayo_scene_add_mesh(rayo_scene *scene,
+                                         const rayo_mesh *mesh,
+                                         const rayo_mesh_placement *placement,
+                                         unsigned material, size_t *left_out,
+                                         rayo_error *err);
 
 /*
  * Adds a light.  RAYO_ERR_INVALID for an unknown kind, a non-finite
  * vector, a zero direction, or a negative or non-finite colour;
  * RAYO_ERR_LIMIT past RAYO_MAX_LIGHTS.
  */
-rayo_status rayo_scene_add_light(rayo_scene *scene, const rayo_light *light,
-                                 rayo_error *err);
+RAYO_API rayo_status rayo_scene_add_light(rayo_scene *scene,
+                                          const rayo_light *light,
+                                          rayo_error *err);
 
 /* Ambient light (default 0, 0, 0) and background colour (default black);
  * the caller validates the values. */
-void rayo_scene_set_ambient(rayo_scene *scene, rayo_vec3 ambient);
-rayo_vec3 rayo_scene_ambient(const rayo_scene *scene);
-void rayo_scene_set_background(rayo_scene *scene, rayo_vec3 colour);
-rayo_vec3 rayo_scene_background(const rayo_scene *scene);
+RAYO_API void rayo_scene_set_ambient(rayo_scene *scene, rayo_vec3 ambient);
+RAYO_API rayo_vec3 rayo_scene_ambient(const rayo_scene *scene);
+RAYO_API void rayo_scene_set_background(rayo_scene *scene, rayo_vec3 colour);
+RAYO_API rayo_vec3 rayo_scene_background(const rayo_scene *scene);
 
-size_t rayo_scene_object_count(const rayo_scene *scene);
-rayo_object_kind rayo_scene_object_kind(const rayo_scene *scene, size_t i);
-size_t rayo_scene_sphere_count(const rayo_scene *scene);
+RAYO_API size_t rayo_scene_object_count(const rayo_scene *scene);
+RAYO_API rayo_object_kind rayo_scene_object_kind(const rayo_scene *scene,
+                                                 size_t i);
+RAYO_API size_t rayo_scene_sphere_count(const rayo_scene *scene);
 /* The i-th sphere added (counting spheres only), i < sphere count. */
-const rayo_sphere *rayo_scene_sphere(const rayo_scene *scene, size_t i);
+RAYO_API const rayo_sphere *rayo_scene_sphere(const rayo_scene *scene,
+                                              size_t i);
 
-size_t rayo_scene_light_count(const rayo_scene *scene);
-const rayo_light *rayo_scene_light(const rayo_scene *scene, size_t i);
+RAYO_API size_t rayo_scene_light_count(const rayo_scene *scene);
+RAYO_API const rayo_light *rayo_scene_light(const rayo_scene *scene, size_t i);
 /* Number of materials, material 0 included (so at least 1). */
-size_t rayo_scene_material_count(const rayo_scene *scene);
+RAYO_API size_t rayo_scene_material_count(const rayo_scene *scene);
 /* Material id; NULL when id >= rayo_scene_material_count(). */
-const rayo_material *rayo_scene_material(const rayo_scene *scene,
-                                         unsigned id);
+RAYO_API const rayo_material *rayo_scene_material(const rayo_scene *scene,
+                                                  unsigned id);
 
 /*
  * Builds the bounding volume hierarchy over the spheres and triangles
@@ -206,32 +214,33 @@ const rayo_material *rayo_scene_material(const rayo_scene *scene,
  * rendering; calling it again rebuilds.  RAYO_ERR_NOMEM on failure, and
  * the scene then keeps answering by brute force.
  */
-rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err);
+RAYO_API rayo_status rayo_scene_prepare(rayo_scene *scene, rayo_error *err);
 
 /*
  * The same on at most threads threads (0: one per CPU, as
  * rayo_scene_prepare; 1: the caller's alone).  The hierarchy is the same
  * for any number of threads, so renders are too.
  */
-rayo_status rayo_scene_prepare_threads(rayo_scene *scene, unsigned threads,
-                                       rayo_error *err);
+RAYO_API rayo_status rayo_scene_prepare_threads(rayo_scene *scene,
+                                                unsigned threads,
+                                                rayo_error *err);
 
 /* 1 when rayo_scene_prepare ran after the last add. */
-int rayo_scene_is_prepared(const rayo_scene *scene);
+RAYO_API int rayo_scene_is_prepared(const rayo_scene *scene);
 
 /*
  * The nearest hit with t_min < t < t_max, written to *hit; returns 1 if
  * there is one, else 0 (and *hit is left alone).  Ties in t go to the
  * lowest object index.  Sphere hits use rayo_sphere_intersect.
  */
-int rayo_scene_intersect(const rayo_scene *scene, const rayo_ray *ray,
-                         double t_min, double t_max, rayo_hit *hit);
+RAYO_API int rayo_scene_intersect(const rayo_scene *scene, const rayo_ray *ray,
+                                  double t_min, double t_max, rayo_hit *hit);
 
 /* The same, adding to *stats (never NULL) what the query cost. */
-int rayo_scene_intersect_counted(const rayo_scene *scene,
-                                 const rayo_ray *ray, double t_min,
-                                 double t_max, rayo_hit *hit,
-                                 rayo_scene_stats *stats);
+RAYO_API int rayo_scene_intersect_counted(const rayo_scene *scene,
+                                          const rayo_ray *ray, double t_min,
+                                          double t_max, rayo_hit *hit,
+                                          rayo_scene_stats *stats);
 
 /*
  * 1 when some object other than `skip` (RAYO_NO_OBJECT for none) is met
@@ -240,22 +249,22 @@ int rayo_scene_intersect_counted(const rayo_scene *scene,
  * for a directional light, the distance to a point light otherwise).
  * Stops at the first object found.
  */
-int rayo_scene_occluded(const rayo_scene *scene, const rayo_ray *ray,
-                        double t_min, double t_max, size_t skip);
+RAYO_API int rayo_scene_occluded(const rayo_scene *scene, const rayo_ray *ray,
+                                 double t_min, double t_max, size_t skip);
 
 /* The same, adding to *stats (never NULL). */
-int rayo_scene_occluded_counted(const rayo_scene *scene,
-                                const rayo_ray *ray, double t_min,
-                                double t_max, size_t skip,
-                                rayo_scene_stats *stats);
+RAYO_API int rayo_scene_occluded_counted(const rayo_scene *scene,
+                                         const rayo_ray *ray, double t_min,
+                                         double t_max, size_t skip,
+                                         rayo_scene_stats *stats);
 
 /*
  * 1 when the ray (unit direction) meets some object at t > t_min: the
  * assignment's hit test, rayo_scene_occluded(scene, ray, t_min,
  * INFINITY, RAYO_NO_OBJECT).
  */
-int rayo_scene_hit_any(const rayo_scene *scene, const rayo_ray *ray,
-                       double t_min);
+RAYO_API int rayo_scene_hit_any(const rayo_scene *scene, const rayo_ray *ray,
+                                double t_min);
 
 #ifdef __cplusplus
 }

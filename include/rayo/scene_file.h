@@ -19,6 +19,7 @@
 #include <stddef.h>
 
 #include "rayo/camera_spec.h"
+#include "rayo/export.h"
 #include "rayo/render.h"
 #include "rayo/scene.h"
 #include "rayo/status.h"
@@ -55,9 +56,9 @@ typedef struct rayo_scene_file {
  * Parses length bytes of text; name is the file name used in messages.
  * On failure *file holds nothing to free.
  */
-rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
-                                  const char *text, size_t length,
-                                  rayo_error *err);
+RAYO_API rayo_status rayo_scene_file_parse(rayo_scene_file *file,
+                                           const char *name, const char *text,
+                                           size_t length, rayo_error *err);
 
 /*
  * Reads and parses the file at path (at most RAYO_SCENE_MAX_BYTES);
@@ -65,24 +66,24 @@ rayo_status rayo_scene_file_parse(rayo_scene_file *file, const char *name,
  * RAYO_ERR_IO, naming the path and the system's reason, when it cannot
  * be read.
  */
-rayo_status rayo_scene_file_load(rayo_scene_file *file, const char *path,
-                                 rayo_error *err);
+RAYO_API rayo_status rayo_scene_file_load(rayo_scene_file *file,
+                                          const char *path, rayo_error *err);
 
 /*
  * The same two, reading and preparing on at most threads threads (0: one
  * per CPU, as the two above; 1: the caller's alone).  The scene is the
  * same for any number: the command passes its --threads.
  */
-rayo_status rayo_scene_file_parse_threads(rayo_scene_file *file,
-                                          const char *name, const char *text,
-                                          size_t length, unsigned threads,
-                                          rayo_error *err);
-rayo_status rayo_scene_file_load_threads(rayo_scene_file *file,
-                                         const char *path, unsigned threads,
-                                         rayo_error *err);
+RAYO_API rayo_status rayo_scene_file_parse_threads(
+    rayo_scene_file *file, const char *name, const char *text, size_t length,
+    unsigned threads, rayo_error *err);
+RAYO_API rayo_status rayo_scene_file_load_threads(rayo_scene_file *file,
+                                                  const char *path,
+                                                  unsigned threads,
+                                                  rayo_error *err);
 
 /* Frees the scene; safe on a zeroed or failed rayo_scene_file. */
-void rayo_scene_file_free(rayo_scene_file *file);
+RAYO_API void rayo_scene_file_free(rayo_scene_file *file);
 
 #ifdef __cplusplus
 }

@@ -22,6 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/scene.h"
 #include "rayo/status.h"
 
@@ -34,10 +35,10 @@ typedef struct rayo_lcg {
     uint64_t state;
 } rayo_lcg;
 
-void rayo_lcg_seed(rayo_lcg *lcg, uint64_t seed);
+RAYO_API void rayo_lcg_seed(rayo_lcg *lcg, uint64_t seed);
 
 /* The next number, uniform in [0, 1). */
-double rayo_lcg_next(rayo_lcg *lcg);
+RAYO_API double rayo_lcg_next(rayo_lcg *lcg);
 
 /*
  * The benchmark scene: a field of spheres lying on a ground plane, as in
@@ -50,8 +51,8 @@ double rayo_lcg_next(rayo_lcg *lcg);
  * on the ground.  Spheres may overlap.  RAYO_ERR_LIMIT when the scene
  * would pass RAYO_MAX_OBJECTS; RAYO_ERR_INVALID for count 0.
  */
-rayo_status rayo_scene_random_spheres(rayo_scene *scene, size_t count,
-                                      uint64_t seed, rayo_error *err);
+RAYO_API rayo_status rayo_scene_random_spheres(rayo_scene *scene, size_t count,
+                                               uint64_t seed, rayo_error *err);
 
 /*
  * The hard case: a cloud of spheres filling the view in depth, so that a
@@ -62,8 +63,8 @@ rayo_status rayo_scene_random_spheres(rayo_scene *scene, size_t count,
  * radius z u sqrt(100000 / count).  About half the picture is covered.
  * Errors as above.
  */
-rayo_status rayo_scene_random_cloud(rayo_scene *scene, size_t count,
-                                    uint64_t seed, rayo_error *err);
+RAYO_API rayo_status rayo_scene_random_cloud(rayo_scene *scene, size_t count,
+                                             uint64_t seed, rayo_error *err);
 
 #ifdef __cplusplus
 }

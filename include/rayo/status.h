@@ -11,6 +11,8 @@
 #ifndef RAYO_STATUS_H
 #define RAYO_STATUS_H
 
+#include "rayo/export.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -35,21 +37,21 @@ typedef struct rayo_error {
 } rayo_error;
 
 /* A short, static description of a status ("malformed input", ...). */
-const char *rayo_status_string(rayo_status status);
+RAYO_API const char *rayo_status_string(rayo_status status);
 
 /*
  * Records a failure in err (when err is not NULL) and returns status, so
  * library code can write `return rayo_error_set(err, RAYO_ERR_IO, ...)`.
  */
-rayo_status rayo_error_set(rayo_error *err, rayo_status status,
-                           const char *format, ...)
+RAYO_API rayo_status rayo_error_set(rayo_error *err, rayo_status status,
+                                    const char *format, ...)
 #if defined(__GNUC__) || defined(__clang__)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
 
 /* Resets err to RAYO_OK with an empty message. */
-void rayo_error_clear(rayo_error *err);
+RAYO_API void rayo_error_clear(rayo_error *err);
 
 #ifdef __cplusplus
 }

@@ -10,6 +10,7 @@
 #ifndef RAYO_TRIANGLE_H
 #define RAYO_TRIANGLE_H
 
+#include "rayo/export.h"
 #include "rayo/ray.h"
 
 typedef struct rayo_triangle {
@@ -20,19 +21,19 @@ typedef struct rayo_triangle {
  * The t with t_min < t < t_max at which the ray meets the triangle, or
  * INFINITY when there is none.
  */
-double rayo_triangle_intersect(const rayo_triangle *triangle,
-                               const rayo_ray *ray, double t_min,
-                               double t_max);
+RAYO_API double rayo_triangle_intersect(const rayo_triangle *triangle,
+                                        const rayo_ray *ray, double t_min,
+                                        double t_max);
 
 /* The unit normal (b - a) x (c - a) / |...|; the corners' winding sets
  * its side. */
-rayo_vec3 rayo_triangle_normal(const rayo_triangle *triangle);
+RAYO_API rayo_vec3 rayo_triangle_normal(const rayo_triangle *triangle);
 
 /*
  * 1 when the corners span a real triangle: finite, and the sine of the
  * angle between its edges at a above 1e-12 (not collinear, no two
  * corners equal).
  */
-int rayo_triangle_is_valid(const rayo_triangle *triangle);
+RAYO_API int rayo_triangle_is_valid(const rayo_triangle *triangle);
 
 #endif

@@ -32,6 +32,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/output.h"
 #include "rayo/status.h"
@@ -51,24 +52,25 @@ typedef enum rayo_format {
 
 /* "pbm", "pgm", "ppm", "png", "bmp", "jpeg" (or "jpg"); RAYO_ERR_INVALID
  * for anything else. */
-rayo_status rayo_format_parse(const char *name, rayo_format *format,
-                              rayo_error *err);
+RAYO_API rayo_status rayo_format_parse(const char *name, rayo_format *format,
+                                       rayo_error *err);
 
 /*
  * The format named by a path's extension (".pbm", ".PNG", ...), matched
  * without regard to case.  RAYO_ERR_INVALID when there is none we know.
  */
-rayo_status rayo_format_from_path(const char *path, rayo_format *format,
-                                  rayo_error *err);
+RAYO_API rayo_status rayo_format_from_path(const char *path,
+                                           rayo_format *format,
+                                           rayo_error *err);
 
 /* "pbm", "pgm", "ppm", "png", "bmp" or "jpeg". */
-const char *rayo_format_name(rayo_format format);
+RAYO_API const char *rayo_format_name(rayo_format format);
 
 /* 1 for PBM, PGM and PPM (plain or raw), 0 for PNG, BMP and JPEG. */
-int rayo_format_is_netpbm(rayo_format format);
+RAYO_API int rayo_format_is_netpbm(rayo_format format);
 
 /* The format that holds this layout without loss (PBM, PGM or PPM). */
-rayo_format rayo_format_netpbm_for(const rayo_image_info *info);
+RAYO_API rayo_format rayo_format_netpbm_for(const rayo_image_info *info);
 
 typedef struct rayo_write_options {
     rayo_format format;
@@ -84,38 +86,41 @@ typedef struct rayo_writer rayo_writer;
  * of its own memory pending in out until it is finished).
  * RAYO_ERR_INVALID when the format cannot hold this layout.
  */
-rayo_status rayo_writer_open(rayo_writer **writer, rayo_output *out,
-                             const rayo_image_info *info,
-                             const rayo_write_options *options,
-                             rayo_error *err);
+RAYO_API rayo_status rayo_writer_open(rayo_writer **writer, rayo_output *out,
+                                      const rayo_image_info *info,
+                                      const rayo_write_options *options,
+                                      rayo_error *err);
 
 /* Writes count rows, each rayo_image_info_row_bytes() long, stride apart. */
-rayo_status rayo_writer_write_rows(rayo_writer *writer,
-                                   const unsigned char *rows, size_t stride,
-                                   uint32_t count, rayo_error *err);
+RAYO_API rayo_status rayo_writer_write_rows(rayo_writer *writer,
+                                            const unsigned char *rows,
+                                            size_t stride, uint32_t count,
+                                            rayo_error *err);
 
 /*
  * The same as a row sink for rayo_render (render.h): context is the
  * rayo_writer, first_row is implied by the order rows arrive in.
  */
-rayo_status rayo_writer_row_sink(void *writer, const unsigned char *rows,
-                                 size_t stride, uint32_t first_row,
-                                 uint32_t count, rayo_error *err);
+RAYO_API rayo_status rayo_writer_row_sink(void *writer,
+                                          const unsigned char *rows,
+                                          size_t stride, uint32_t first_row,
+                                          uint32_t count, rayo_error *err);
 
 /*
  * Ends the image (fails if rows are missing) and frees the writer, which
  * is freed whatever the outcome.
  */
-rayo_status rayo_writer_finish(rayo_writer *writer, rayo_error *err);
+RAYO_API rayo_status rayo_writer_finish(rayo_writer *writer, rayo_error *err);
 
 /* Frees a writer without ending its image (after an error): the image
  * is incomplete, so its output's commit fails from then on (abort it). */
-void rayo_writer_discard(rayo_writer *writer);
+RAYO_API void rayo_writer_discard(rayo_writer *writer);
 
 /* Writes a whole image: open, all rows, finish. */
-rayo_status rayo_image_write(const rayo_image *image, rayo_output *out,
-                             const rayo_write_options *options,
-                             rayo_error *err);
+RAYO_API rayo_status rayo_image_write(const rayo_image *image,
+                                      rayo_output *out,
+                                      const rayo_write_options *options,
+                                      rayo_error *err);
 
 #ifdef __cplusplus
 }
