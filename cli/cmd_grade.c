@@ -299,7 +299,8 @@ static int parse_request(int argc, char **argv, grade_request *req)
  * class's archive, a compiler's quote of the student's source.  In the
  * text report every such string is shown on one line as it would be
  * typed: control bytes as \n, \t, \r or \xHH, a byte that is not
- * valid UTF-8 as \xHH (and, in names, a backslash as \\); valid UTF-8
+ * valid UTF-8 as \xHH, a bidirectional control as \uHHHH (and, in
+ * names, a backslash as \\); other valid UTF-8
  * is kept (one column per character, for the table).
  */
 #define STUDENT_COLUMNS 40 /* the widest the table's student column gets */
