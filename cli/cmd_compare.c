@@ -59,7 +59,7 @@ static void print_help(void)
         "there (the\n"
         "                mismatches at most 75%% of the pixels near the "
         "outline, and\n"
-        "                fewer than chance), and no whole-pixel shift "
+        "                at most half of chance), and no whole-pixel shift "
         "explains them\n"
         "  inconsistent  anything else; then a diagnosis when one fits: "
         "flipped,\n"
