@@ -19,8 +19,10 @@ enum {
     CLI_EXIT_OK = 0,
     CLI_EXIT_FAILURE = 1, /* output failures; compare: inconsistent;
                              grade: failed */
-    CLI_EXIT_USAGE = 2    /* bad options, or an input that cannot be read
+    CLI_EXIT_USAGE = 2,   /* bad options, or an input that cannot be read
                              (missing, unreadable, a directory, malformed) */
+    CLI_EXIT_NOMEM = 3    /* out of memory (or of the address space that
+                             `ulimit -v` allows) */
 };
 
 /* Subcommands: each takes its own argv (argv[0] is the subcommand name). */

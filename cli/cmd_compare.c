@@ -191,8 +191,10 @@ static int print_report(const rayo_compare_report *report, int json)
     size_t need = json ? rayo_compare_format_json(report, NULL, 0)
                        : rayo_compare_format_text(report, NULL, 0);
     char *text = malloc(need + 1);
-    if (text == NULL)
-        return cli_usage_error("out of memory");
+    if (text == NULL) {
+        cli_say("compare: out of memory for the report");
+        return CLI_EXIT_NOMEM;
+    }
     if (json)
         rayo_compare_format_json(report, text, need + 1);
     else

@@ -512,7 +512,7 @@ static int finish_export(FILE *stream, char **text, size_t *size,
     if (fclose(stream) != 0 || *text == NULL) {
         free(*text);
         cli_sayf("%s: out of memory", path);
-        return CLI_EXIT_FAILURE;
+        return CLI_EXIT_NOMEM;
     }
     status = write_whole(path, *text, *size);
     free(*text);
@@ -531,7 +531,7 @@ static int export_one(const grade_request *req, const char *student,
     FILE *stream;
     if (req->csv != NULL) {
         if ((stream = start_export(&text, &size, req->csv)) == NULL)
-            return CLI_EXIT_FAILURE;
+            return CLI_EXIT_NOMEM;
         cli_grade_csv_header(stream);
         cli_grade_csv_row(stream, student, report, message, &req->points);
         status = finish_export(stream, &text, &size, req->csv);
@@ -539,7 +539,7 @@ static int export_one(const grade_request *req, const char *student,
     if (req->gradescope != NULL && status == CLI_EXIT_OK) {
         char line[300];
         if ((stream = start_export(&text, &size, req->gradescope)) == NULL)
-            return CLI_EXIT_FAILURE;
+            return CLI_EXIT_NOMEM;
         cli_grade_gradescope(stream, report, message,
                              report != NULL
                                  ? isolation_line(report->isolation, line,
@@ -716,7 +716,7 @@ static int grade_each(const char *dir, grade_request *req)
         p.csv = start_export(&csv_text, &csv_size, req->csv);
         if (p.csv == NULL) {
             rayo_grade_paths_free(folders, count);
-            return CLI_EXIT_FAILURE;
+            return CLI_EXIT_NOMEM;
         }
         cli_grade_csv_header(p.csv);
     }
