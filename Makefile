@@ -411,6 +411,17 @@ $(WEB_OUT)/%: web/%
 	$(call say,CP,$@)
 	$(Q)cp $< $@
 
+# The fuzz targets that reach the module's code (reader, scene) replayed
+# in WebAssembly, with its 32-bit size_t (tests/web/replay_wasm.mjs runs
+# them under node's WASI; check-web does, docs/robustness.md).
+WASM_FUZZ := $(patsubst %,$(BUILD)/wasm/fuzz/replay-%.wasm,reader scene)
+
+$(BUILD)/wasm/fuzz/replay-%.wasm: $(BUILD)/wasm/fuzz/fuzz_%.o \
+    $(BUILD)/wasm/fuzz/replay.o $(BUILD)/wasm/fuzz/refusal.o $(WASM_OBJ)
+	@mkdir -p $(dir $@)
+	$(WASM_CC) --target=wasm32-wasi -O2 -Wl,-z,stack-size=1048576 \
+	    -o $@ $^ -lm
+
 # The module and the course's references as base64 in a script, so the
 # page fetches nothing and also works opened from file://.
 $(WEB_OUT)/assets.js: $(WEB_WASM) $(COURSE_PNG)
@@ -432,7 +443,9 @@ check-web: all
 	    echo "1..0 # SKIP check-web: needs chromium, node, wasi-libc and" \
 	         "'npm ci --prefix tests/web'"; \
 	else \
-	    $(MAKE) web && \
+	    $(MAKE) web $(WASM_FUZZ) && \
+	    RAYO_SOURCE=$(CURDIR) node tests/web/replay_wasm.mjs \
+	        $(abspath $(WASM_FUZZ)) && \
 	    RAYO=$(abspath $(RAYO)) RAYO_WEB=$(abspath $(WEB_OUT)) \
 	    RAYO_SOURCE=$(CURDIR) CHROMIUM=$(CHROMIUM) \
 	        node tests/web/check.mjs; \

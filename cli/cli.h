@@ -34,8 +34,10 @@ enum {
     CLI_EXIT_OK = 0,
     CLI_EXIT_FAILURE = 1, /* output failures; compare: inconsistent;
                              grade: failed */
-    CLI_EXIT_USAGE = 2    /* bad options, or an input that cannot be read
+    CLI_EXIT_USAGE = 2,   /* bad options, or an input that cannot be read
                              (missing, unreadable, a directory, malformed) */
+    CLI_EXIT_NOMEM = 3    /* out of memory (or of the address space that
+                             `ulimit -v` allows) */
 };
 
 /* Subcommands: each takes its own argv (argv[0] is the subcommand name). */
@@ -71,7 +73,8 @@ int cli_check_input(const char *path, cli_input_kind kind);
 int cli_same_file(const char *a, const char *b);
 
 /* escape.c: text from outside on one line.  The character at s as shown
-   (control bytes and invalid UTF-8 as \n, \t, \r, \xHH; a backslash
+   (control bytes and invalid UTF-8 as \n, \t, \r, \xHH; bidirectional
+   controls and U+2028, U+2029 as \uHHHH; a backslash
    doubled when names), into text; returns the bytes of s it stands for,
    *columns how wide it is.  cli_put_escaped writes s so, at most max
    bytes (0: no limit) then "...".  cli_say and cli_sayf print "rayo: "

@@ -59,7 +59,7 @@ static void print_help(void)
           "there (the\n"
           "                mismatches at most 75%% of the pixels near the "
           "outline, and\n"
-          "                fewer than chance), and no whole-pixel shift "
+          "                at most half of chance), and no whole-pixel shift "
           "explains them\n"
           "  inconsistent  anything else; then a diagnosis when one fits: "
           "flipped,\n"
@@ -201,8 +201,10 @@ static int print_report(const rayo_compare_report *report, int json)
     size_t need = json ? rayo_compare_format_json(report, NULL, 0)
                        : rayo_compare_format_text(report, NULL, 0);
     char *text = malloc(need + 1);
-    if (text == NULL)
-        return cli_usage_error(_("out of memory"));
+    if (text == NULL) {
+        cli_say(_("compare: out of memory for the report"));
+        return CLI_EXIT_NOMEM;
+    }
     if (json)
         rayo_compare_format_json(report, text, need + 1);
     else

@@ -309,7 +309,8 @@ static int parse_request(int argc, char **argv, grade_request *req)
  * class's archive, a compiler's quote of the student's source.  In the
  * text report every such string is shown on one line as it would be
  * typed: control bytes as \n, \t, \r or \xHH, a byte that is not
- * valid UTF-8 as \xHH (and, in names, a backslash as \\); valid UTF-8
+ * valid UTF-8 as \xHH, a bidirectional control as \uHHHH (and, in
+ * names, a backslash as \\); other valid UTF-8
  * is kept (one column per character, for the table).
  */
 #define STUDENT_COLUMNS 40 /* the widest the table's student column gets */
@@ -526,7 +527,7 @@ static int finish_export(FILE *stream, char **text, size_t *size,
     if (fclose(stream) != 0 || *text == NULL) {
         free(*text);
         cli_sayf(_("%s: out of memory"), path);
-        return CLI_EXIT_FAILURE;
+        return CLI_EXIT_NOMEM;
     }
     status = write_whole(path, *text, *size);
     free(*text);
@@ -545,7 +546,7 @@ static int export_one(const grade_request *req, const char *student,
     FILE *stream;
     if (req->csv != NULL) {
         if ((stream = start_export(&text, &size, req->csv)) == NULL)
-            return CLI_EXIT_FAILURE;
+            return CLI_EXIT_NOMEM;
         cli_grade_csv_header(stream);
         cli_grade_csv_row(stream, student, report, message, &req->points);
         status = finish_export(stream, &text, &size, req->csv);
@@ -553,7 +554,7 @@ static int export_one(const grade_request *req, const char *student,
     if (req->gradescope != NULL && status == CLI_EXIT_OK) {
         char line[300];
         if ((stream = start_export(&text, &size, req->gradescope)) == NULL)
-            return CLI_EXIT_FAILURE;
+            return CLI_EXIT_NOMEM;
         cli_grade_gradescope(stream, report, message,
                              report != NULL
                                  ? isolation_line(report->isolation, line,
@@ -730,7 +731,7 @@ static int grade_each(const char *dir, grade_request *req)
         p.csv = start_export(&csv_text, &csv_size, req->csv);
         if (p.csv == NULL) {
             rayo_grade_paths_free(folders, count);
-            return CLI_EXIT_FAILURE;
+            return CLI_EXIT_NOMEM;
         }
         cli_grade_csv_header(p.csv);
     }

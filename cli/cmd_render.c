@@ -494,8 +494,10 @@ int cli_render(int argc, char **argv)
     cli_preview *preview = NULL;
     int exit_status, on_terminal;
 
-    if (req == NULL)
-        return cli_usage_error(_("out of memory"));
+    if (req == NULL) {
+        cli_say(_("render: out of memory"));
+        return CLI_EXIT_NOMEM;
+    }
     req->width = RAYO_SEED_WIDTH;
     req->height = RAYO_SEED_HEIGHT;
     req->fov = RAYO_SEED_FOV;

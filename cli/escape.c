@@ -5,7 +5,11 @@
  *
  * Control bytes are written as they would be typed, \n, \t, \r or \xHH;
  * a byte that is not valid UTF-8 as \xHH (so no stray byte can start a
- * terminal's control sequence); valid UTF-8 is kept.  A message is cut
+ * terminal's control sequence); valid UTF-8 is kept, but for the
+ * characters that change how the rest of a line reads: the bidirectional
+ * controls (U+061C, U+200E, U+200F, U+202A-U+202E, U+2066-U+2069, which
+ * can reorder a table's row) and the line and paragraph separators
+ * (U+2028, U+2029), written \uHHHH.  A message is cut
  * at CLI_MESSAGE_MAX bytes with "...", so a 100,000-digit value cannot
  * make a 100,000-byte line.
  */
@@ -42,15 +46,40 @@ size_t cli_utf8_sequence(const unsigned char *s)
     return n;
 }
 
+/* The code point of the n-byte UTF-8 sequence at p when it is one that
+   reorders or breaks the line it is in (shown as \uHHHH), else 0. */
+static unsigned long line_control(const unsigned char *p, size_t n)
+{
+    unsigned long cp;
+    if (n == 2)
+        cp = (p[0] & 0x1Fu) << 6 | (p[1] & 0x3Fu);
+    else if (n == 3)
+        cp = (unsigned long)(p[0] & 0x0Fu) << 12 |
+             (unsigned long)(p[1] & 0x3Fu) << 6 | (p[2] & 0x3Fu);
+    else
+        return 0;
+    if (cp == 0x061C || cp == 0x200E || cp == 0x200F ||
+        (cp >= 0x2028 && cp <= 0x202E) || (cp >= 0x2066 && cp <= 0x2069))
+        return cp;
+    return 0;
+}
+
 size_t cli_escape_unit(const char *s, int names, char text[8],
                        size_t *columns)
 {
+    unsigned long control;
     const unsigned char *p = (const unsigned char *)s;
     size_t n = p[0] >= 0x80 ? cli_utf8_sequence(p) : 0;
     /* The C1 controls (U+0080-U+009F) are shown byte by byte: some
        terminals obey them. */
     if (n == 2 && p[0] == 0xC2 && p[1] <= 0x9F)
         n = 0;
+    control = n > 0 ? line_control(p, n) : 0;
+    if (control != 0) {
+        snprintf(text, 8, "\\u%04lx", control);
+        *columns = strlen(text);
+        return n;
+    }
     if (n > 0) {
         memcpy(text, s, n);
         text[n] = '\0';

@@ -10,6 +10,9 @@
  */
 #include <signal.h>
 #include <string.h>
+#if defined(__GLIBC__)
+#include <malloc.h> /* mallopt, M_ARENA_MAX */
+#endif
 
 #include "cli.h"
 
@@ -76,6 +79,14 @@ int main(int argc, char **argv)
        to say. */
     signal(SIGPIPE, SIG_IGN);
     signal(SIGXFSZ, SIG_IGN);
+#if defined(M_ARENA_MAX)
+    /* One malloc arena for every thread: glibc gives each thread that
+       allocates an arena of its own, in heaps that reserve 64 MiB of
+       address space each, so that -j 8 reserved 0.5 GiB more than it
+       used and an `ulimit -v` sized by the memory failed (the threads
+       allocate little while rendering; docs/limits.md). */
+    mallopt(M_ARENA_MAX, 1);
+#endif
     if (cli_lang_init(&argc, argv) != CLI_EXIT_OK)
         return CLI_EXIT_USAGE;
     if (argc > 1) {

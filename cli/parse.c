@@ -46,6 +46,15 @@ int cli_report(const rayo_error *err)
         cli_say(err->message);
         return CLI_EXIT_USAGE;
     case RAYO_ERR_NOMEM:
+        /* Its own status (not an output's 1), and what to change. */
+        if (strcmp(err->message, "out of memory") == 0)
+            cli_say(_("out of memory: the machine's memory, or the address "
+                      "space that ulimit -v allows, is too small for this"));
+        else
+            cli_sayf(_("%s: the machine's memory, or the address space "
+                       "that ulimit -v allows, is too small for this"),
+                     err->message);
+        return CLI_EXIT_NOMEM;
     case RAYO_ERR_IO:
     case RAYO_ERR_CANCELLED:
         break;

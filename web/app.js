@@ -130,6 +130,12 @@ function applyLang() {
 async function decode(bytes, name, clamp) {
   const image = rayo.read(bytes, name, clamp);
   if (image) return image;
+  // The size its header (IHDR) promises, checked before the browser
+  // decodes it: the page's memory holds only so many pixels.
+  if (bytes.length >= 24) {
+    const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.length);
+    rayo.sizeCheck(name, view.getUint32(16), view.getUint32(20));
+  }
   let bitmap;
   try {
     bitmap = await createImageBitmap(new Blob([bytes]),
@@ -463,6 +469,13 @@ async function start() {
     showError(`rayo: ${e.message}`);
     return;
   }
+  // A module started again after a failure holds none of the images.
+  rayo.onRestart = () => {
+    state.image = null;
+    state.rendered = null;
+    for (const key of Object.keys(references)) delete references[key];
+    showInfo();
+  };
   resetScene();
   times.load = performance.now();
   document.body.dataset.ready = '1';

@@ -8,11 +8,21 @@
 // browser's.  A classic script, not a
 // module, so that the page also works opened from file://: the module's
 // bytes come from assets.js (made by `make web`), not from a fetch.
+//
+// A call that traps (WebAssembly.RuntimeError: "unreachable", "memory
+// access out of bounds") may leave the module's heap half updated, so
+// the module is then dropped and instantiated again from the compiled
+// code (rayo.ready settles when it is back); the call throws a RayoError
+// saying so, and images made before are stale (their calls throw, their
+// free does nothing; onRestart lets the page forget them).  Memory the
+// module cannot give (web_alloc returning 0) is a RayoError too, never a
+// write at address 0.
 'use strict';
 (function (global) {
 const EBADF = 8;
 
-async function loadRayo(bytes) {
+// The imports of one instance; memory is set once it exists.
+function imports() {
   let memory = null;
   const wasi = {
     clock_time_get(id, precision, out) {
@@ -36,11 +46,22 @@ async function loadRayo(bytes) {
     },
     sched_yield: () => 0,
   };
-  const { instance } = await WebAssembly.instantiate(bytes, {
-    wasi_snapshot_preview1: wasi,
-  });
-  memory = instance.exports.memory;
-  return new Rayo(instance.exports);
+  return {
+    object: { wasi_snapshot_preview1: wasi },
+    bind(instance) { memory = instance.exports.memory; },
+  };
+}
+
+async function instantiate(module) {
+  const im = imports();
+  const instance = await WebAssembly.instantiate(module, im.object);
+  im.bind(instance);
+  return instance;
+}
+
+async function loadRayo(bytes) {
+  const module = await WebAssembly.compile(bytes);
+  return new Rayo(module, await instantiate(module));
 }
 
 const decoder = new TextDecoder();
@@ -49,8 +70,46 @@ const encoder = new TextEncoder();
 class RayoError extends Error {}
 
 class Rayo {
-  constructor(exports) {
-    this.x = exports;
+  constructor(module, instance) {
+    this.module = module;
+    this.generation = 0;
+    this.ready = Promise.resolve();
+    this.onRestart = null;
+    this.bind(instance);
+  }
+  // this.x: the exports, each call guarded against traps.
+  bind(instance) {
+    const raw = instance.exports, x = { memory: raw.memory };
+    for (const [name, fn] of Object.entries(raw))
+      if (typeof fn === 'function') x[name] = (...args) => this.call(fn, args);
+    this.x = x;
+  }
+  call(fn, args) {
+    if (this.restarting)
+      throw new RayoError('rayo: the page is starting its module again; try once more');
+    try {
+      return fn(...args);
+    } catch (e) {
+      if (!(e instanceof WebAssembly.RuntimeError)) throw e;
+      this.restart();
+      throw new RayoError(`rayo: the page's module failed (${e.message}) and was started again; open the images again`);
+    }
+  }
+  restart() {
+    this.restarting = true;
+    this.generation++;
+    this.ready = instantiate(this.module).then((instance) => {
+      this.bind(instance);
+      this.restarting = false;
+      if (this.onRestart) this.onRestart();
+    });
+  }
+  // width x height, a file named name, fits the page (else a RayoError).
+  sizeCheck(name, width, height) {
+    const nm = this.put(name);
+    const status = this.x.web_size_check(nm, width, height);
+    this.x.web_free(nm);
+    if (status !== 0) this.fail();
   }
   get heap() {
     return new Uint8Array(this.x.memory.buffer);
@@ -65,12 +124,18 @@ class Rayo {
   // to free with this.x.web_free.
   put(bytes) {
     if (typeof bytes === 'string') bytes = encoder.encode(bytes + '\0');
-    const ptr = this.x.web_alloc(bytes.length);
+    const ptr = this.alloc(bytes.length);
     this.heap.set(bytes, ptr);
     return ptr;
   }
+  alloc(size) {
+    const ptr = this.x.web_alloc(size);
+    if (!ptr)
+      throw new RayoError(`rayo: out of memory: the page cannot hold ${size} bytes more`);
+    return ptr;
+  }
   putDoubles(values) {
-    const ptr = this.x.web_alloc(values.length * 8);
+    const ptr = this.alloc(values.length * 8);
     new Float64Array(this.x.memory.buffer, ptr, values.length).set(values);
     return ptr;
   }
@@ -81,7 +146,14 @@ class Rayo {
   // (the browser decodes those: fromPNG).  clamp: read as `rayo compare`
   // reads the image it checks.
   read(bytes, name, clamp) {
-    const data = this.put(bytes), nm = this.put(name);
+    const data = this.put(bytes);
+    let nm;
+    try {
+      nm = this.put(name);
+    } catch (e) {
+      this.x.web_free(data);
+      throw e;
+    }
     const image = this.x.web_read(data, bytes.length, nm, clamp ? 1 : 0);
     this.x.web_free(data);
     this.x.web_free(nm);
@@ -91,7 +163,14 @@ class Rayo {
   }
   // A PNG file (its bytes) decoded by the browser to RGBA (ImageData).
   fromPNG(bytes, imageData) {
-    const png = this.put(bytes), rgba = this.put(imageData.data);
+    const png = this.put(bytes);
+    let rgba;
+    try {
+      rgba = this.put(imageData.data);
+    } catch (e) {
+      this.x.web_free(png);
+      throw e;
+    }
     const image = this.x.web_from_png(png, bytes.length, rgba,
                                       imageData.width, imageData.height);
     this.x.web_free(png);
@@ -101,6 +180,8 @@ class Rayo {
   // `rayo compare reference image`: its text, verdict, diagnosis and the
   // difference picture (PNG bytes).
   compare(reference, image) {
+    reference.live();
+    image.live();
     const text = this.x.web_compare(reference.ptr, image.ptr);
     if (!text) this.fail();
     const diff = this.x.web_compare_diff();
@@ -114,7 +195,7 @@ class Rayo {
   }
   // The spheres of a scene (-1 the seed, 0..2 the course's), [cx, cy, cz, r].
   spheres(scene) {
-    const out = this.x.web_alloc(32), list = [];
+    const out = this.alloc(32), list = [];
     const n = this.x.web_scene_spheres(scene, 0, out);
     for (let i = 0; i < n; i++) {
       this.x.web_scene_spheres(scene, i, out);
@@ -134,7 +215,7 @@ class Rayo {
   // The ray through pixel (px, py): d, beta, delta, hit, t, focal.
   ray(camera, spheres, px, py) {
     const cam = this.putDoubles(camera), sp = this.putDoubles(spheres.flat());
-    const out = this.x.web_alloc(64);
+    const out = this.alloc(64);
     const status = this.x.web_ray(cam, sp, spheres.length, px, py, out);
     const v = Array.from(new Float64Array(this.x.memory.buffer, out, 8));
     this.x.web_free(cam);
@@ -152,6 +233,7 @@ class RayoImage {
   constructor(rayo, ptr) {
     this.rayo = rayo;
     this.ptr = ptr;
+    this.generation = rayo.generation;
     const info = (k) => rayo.x.web_info(ptr, k);
     this.width = info(0);
     this.height = info(1);
@@ -161,14 +243,22 @@ class RayoImage {
     this.format = FORMATS[info(5)];
     this.plain = info(6) === 1;
   }
+  // Throws when the module was started again since this image was made.
+  live() {
+    if (this.generation !== this.rayo.generation || !this.ptr)
+      throw new RayoError('rayo: this image was lost when the page started its module again; open it again');
+  }
   imageData() {
+    this.live();
     const ptr = this.rayo.x.web_rgba(this.ptr);
+    if (!ptr) this.rayo.fail();
     const n = this.width * this.height * 4;
     const rgba = new Uint8ClampedArray(this.rayo.x.memory.buffer, ptr, n);
     return new ImageData(new Uint8ClampedArray(rgba), this.width, this.height);
   }
   free() {
-    if (this.ptr) this.rayo.x.web_image_free(this.ptr);
+    if (this.ptr && this.generation === this.rayo.generation && !this.rayo.restarting)
+      this.rayo.x.web_image_free(this.ptr);
     this.ptr = 0;
   }
 }

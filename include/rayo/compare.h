@@ -199,9 +199,10 @@ typedef struct rayo_compare_report {
        colour; tones, the pixels near an edge or where the reference's
        values vary within the tolerance.  Counted only when nothing is
        beyond the tolerance (else 0).  crowded: the differences are more
-       than RAYO_COMPARE_BAND_SHARE of it, so the image is inconsistent
-       however near the outlines they lie (a checkerboard against its
-       inverse). */
+       than RAYO_COMPARE_BAND_SHARE of it or (masks) more than half of
+       those between black pixels placed at random, so the image is
+       inconsistent however near the outlines they lie (a checkerboard
+       against its inverse, noise against a checkerboard). */
     uint64_t band;
     int crowded;
 

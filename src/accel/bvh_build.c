@@ -52,6 +52,8 @@
 #define MAX_LEAF 8
 /* Right children this large become tasks for other threads. */
 #define SPAWN_MIN 1024
+/* The nodes a task's array first holds (32 bytes each), at most. */
+#define TASK_FIRST_NODES 4096
 /* A placeholder node: its subtree is task number `first`. */
 #define NODE_TASK UINT32_MAX
 
@@ -447,9 +449,15 @@ static task *task_new(const span *r)
     if (t == NULL)
         return NULL;
     t->root = *r;
-    /* room for the whole subtree (2n - 1 nodes): pages the task does not
-     * reach are never touched, and the array never moves */
+    /* Room for the whole subtree (2n - 1 nodes) only when it is small:
+     * untouched pages take no memory but do take address space, and a
+     * task reserving its whole subtree, at every level of spawns, made
+     * 2^24 spheres reserve 10 GiB at -j 2 (an `ulimit -v` failed that
+     * the memory would not).  Beyond, add_pair doubles the array, which
+     * glibc moves by remapping, not copying. */
     t->capacity = 2 * (r->end - r->begin);
+    if (t->capacity > TASK_FIRST_NODES)
+        t->capacity = TASK_FIRST_NODES;
     t->nodes = malloc(t->capacity * sizeof *t->nodes);
     if (t->nodes == NULL) {
         free(t);

@@ -15,11 +15,13 @@
  * outline.c's exact distances beyond; a pass over the reference, made
  * only when every mismatch is within the tolerance.
  *
- * Where the reference is noise, the band is the whole frame, and any
- * unrelated image mismatches about half of it: the share alone is then
- * a coin toss.  So a consistent image must also agree with the
- * reference better than chance: fewer mismatches than an image with as
- * many black pixels, placed at random, would have.
+ * Where the reference is noise or a checkerboard, the band is the whole
+ * frame, and any unrelated image mismatches about half of it: the share
+ * alone is then a coin toss, and so is "fewer than chance", which an
+ * unrelated image meets half the time.  So a consistent image must agree
+ * with the reference clearly better than chance: at most half the
+ * mismatches of an image with as many black pixels placed at random
+ * (cmp_chance_limit; docs/compare.md has the bound on the luck left).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -105,10 +107,17 @@ double cmp_chance_mismatches(uint64_t pixels, uint64_t reference_black,
     return n > 0 ? (r * (n - i) + i * (n - r)) / n : 0;
 }
 
+double cmp_chance_limit(uint64_t pixels, uint64_t reference_black,
+                        uint64_t image_black)
+{
+    return CMP_CHANCE_SHARE *
+           cmp_chance_mismatches(pixels, reference_black, image_black);
+}
+
 int cmp_mask_crowded(const rayo_compare_report *r)
 {
     return cmp_crowded(r->mismatches, r->band) ||
-           (double)r->mismatches >=
-               cmp_chance_mismatches(r->pixels, r->reference_black,
-                                     r->image_black);
+           (double)r->mismatches >
+               cmp_chance_limit(r->pixels, r->reference_black,
+                                r->image_black);
 }

@@ -197,9 +197,20 @@ static inline int cmp_crowded(uint64_t differences, uint64_t band)
 double cmp_chance_mismatches(uint64_t pixels, uint64_t reference_black,
                              uint64_t image_black);
 
+/* The most mismatches that still agree with the reference better than
+ * chance, not by luck: CMP_CHANCE_SHARE of the chance count C (Cohen's
+ * kappa at least 1/2).  An image of independent random pixels gets
+ * under it with a probability below exp(-C/8) (Chernoff's lower tail),
+ * 1e-8 from C = 150; noise against a 64x48 checkerboard (C = 1536)
+ * below exp(-192). */
+#define CMP_CHANCE_SHARE 0.5
+double cmp_chance_limit(uint64_t pixels, uint64_t reference_black,
+                        uint64_t image_black);
+
 /* A mask report whose mismatches, all within the tolerance, still do
- * not make it consistent: more than the band's share, or no fewer than
- * chance (report's band, mismatches and black counts filled). */
+ * not make it consistent: more than the band's share, or more than
+ * cmp_chance_limit (report's band, mismatches and black counts
+ * filled). */
 int cmp_mask_crowded(const rayo_compare_report *report);
 
 /* ---- farthest.c ---- */

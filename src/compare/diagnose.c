@@ -84,12 +84,25 @@ static rayo_status try_candidate(const cmp_mask *ref, const cmp_mask *image,
     return s;
 }
 
+/* Whether a candidate's mismatches, over the pixels it places, agree
+ * with the reference beyond chance (band.c): over noise or a
+ * checkerboard every mismatch is near an outline, and a transform that
+ * places only part of the frame (a scale up) halves the count by
+ * itself, so without this the luckiest of the scales searched was
+ * named. */
+static int beats_chance(const cmp_counts *c)
+{
+    return (double)mismatches_of(c) <=
+           cmp_chance_limit(c->known, c->both + c->reference_only,
+                            c->both + c->image_only);
+}
+
 static int fits(const candidate_result *r, const rayo_compare_report *report)
 {
     if (!r->tried)
         return 0;
     if (r->counts.beyond == 0)
-        return 1;
+        return beats_chance(&r->counts);
     return r->counts.beyond * CLOSE_REDUCTION <= report->beyond_tolerance &&
            iou_of(&r->counts) >= CLOSE_IOU;
 }

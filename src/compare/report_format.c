@@ -184,6 +184,8 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
 /* Why mismatches all within the tolerance are not consistent. */
 static void put_crowded_text(cmp_sink *s, const rayo_compare_report *r)
 {
+    double chance = cmp_chance_mismatches(r->pixels, r->reference_black,
+                                          r->image_black);
     if (!r->crowded)
         return;
     if (cmp_crowded(r->mismatches, r->band))
@@ -194,13 +196,19 @@ static void put_crowded_text(cmp_sink *s, const rayo_compare_report *r)
                    "%.0f%%): the shapes disagree\n",
             r->tolerance, cmp_band_percent(r->mismatches, r->band),
             (unsigned long long)r->band, 100 * RAYO_COMPARE_BAND_SHARE);
-    else
+    else if ((double)r->mismatches >= chance)
         cmp_put(s, "note: every mismatch is within %g px of the reference's "
                    "outline, but there are as many as between black pixels "
                    "placed at random (%.0f): the shapes disagree\n",
-            r->tolerance,
-            cmp_chance_mismatches(r->pixels, r->reference_black,
-                                  r->image_black));
+            r->tolerance, chance);
+    else
+        cmp_put(s, "note: every mismatch is within %g px of the reference's "
+                   "outline, but there are more than half as many as "
+                   "between black pixels placed at random (%llu of %.0f; "
+                   "the shapes agreeing would leave at most %.0f%%): the "
+                   "shapes disagree\n",
+            r->tolerance, (unsigned long long)r->mismatches, chance,
+            100 * CMP_CHANCE_SHARE);
 }
 
 static void put_distance_text(cmp_sink *s, const rayo_compare_report *r)

@@ -77,6 +77,18 @@ function setup() {
   fs.writeFileSync(path.join(tmp, 'flipped.pbm'),
                    `P1\n${seed.width} ${seed.height}\n${rows.join('\n')}\n`);
   rayo(['convert', course(2), 'ej2.pgm']);
+  // One pixel past the page's 2^25: 8193x4096, raw.
+  fs.writeFileSync(path.join(tmp, 'wide.pbm'), Buffer.concat([
+    Buffer.from('P4\n8193 4096\n'), Buffer.alloc(Math.ceil(8193 / 8) * 4096)]));
+  // A PNG's signature and header (IHDR, 65536x16384 gray, 1 bit) alone.
+  const ihdr = Buffer.alloc(25);
+  ihdr.writeUInt32BE(13, 0);
+  ihdr.write('IHDR', 4);
+  ihdr.writeUInt32BE(65536, 8);
+  ihdr.writeUInt32BE(16384, 12);
+  ihdr[16] = 1;
+  fs.writeFileSync(path.join(tmp, 'huge.png'), Buffer.concat([
+    Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]), ihdr]));
   rayo(['render', path.join(SOURCE, 'examples/ej2.scene'), '-o', 'ej2-render.pgm']);
   rayo(['convert', course(3), 'ej3.ppm']);
   const gray = netpbm('ej2.pgm');
@@ -118,7 +130,7 @@ function siteBytes(dir) {
 }
 
 async function main() {
-  console.log('1..33');
+  console.log('1..40');
   const seed = setup();
   const size = siteBytes(WEB);
   ok(size <= 3 * 1024 * 1024, `build/web/ is ${size} bytes, at most 3 MiB`);
@@ -135,7 +147,7 @@ async function main() {
     server.kill();
     fs.rmSync(tmp, { recursive: true, force: true });
   }
-  if (count !== 33) ok(false, `planned 33 tests, ran ${count}`);
+  if (count !== 40) ok(false, `planned 40 tests, ran ${count}`);
   process.exitCode = failed ? 1 : 0;
 }
 
@@ -248,6 +260,51 @@ async function run(browser, origin, seed) {
   const want = rayo(['compare', course(1), 'malformed.pgm']).err.trim();
   const got = await text('error');
   ok(got === want && !got.includes('\n'), 'a malformed file: the command\'s message', `page: ${got}\ncommand: ${want}`);
+
+  // Images past what the module's memory holds (2^25 pixels) are refused
+  // with one line, a PNG before the browser decodes it, and the page
+  // goes on working.
+  await page.setInputFiles(T('image-input'), path.join(tmp, 'wide.pbm'));
+  await page.waitForFunction(() => /8193x4096/.test(document.getElementById('error').textContent));
+  let refused = await text('error');
+  ok(refused === 'rayo: wide.pbm: the image is 8193x4096, 33558528 pixels; the page takes at most 33554432 (e.g. 8192x4096): compare it with the command, rayo compare',
+     'an 8193x4096 PBM: refused, one line', refused);
+  await page.setInputFiles(T('image-input'), path.join(tmp, 'huge.png'));
+  await page.waitForFunction(() => /65536x16384/.test(document.getElementById('error').textContent));
+  refused = await text('error');
+  ok(/^rayo: huge\.png: the image is 65536x16384, 1073741824 pixels; the page takes at most 33554432/.test(refused),
+     'a PNG whose header says 65536x16384: refused before decoding', refused);
+  r = await check('seed.pbm', 'ej1', course(1), 'after the refusals, the seed vs EJ1');
+  ok(r.verdict === 'verdict: consistent', 'after the refusals, the page still compares', r.verdict);
+
+  // The module itself: the issue's legal 65536x16384 PBM (2^30 pixels),
+  // then a call that traps; the module is started again and works.
+  const mod = await page.evaluate(async () => {
+    const wasm = Uint8Array.from(atob(window.RAYO_ASSETS.wasm), (c) => c.charCodeAt(0));
+    const r = await RayoWeb.loadRayo(wasm);
+    const out = {};
+    const big = new Uint8Array(20 + 8192 * 16384);
+    big.set(new TextEncoder().encode('P4\n65536 16384\n'));
+    const body = big.subarray(0, 16 + 8192 * 16384);
+    try { r.read(body, 'big.pbm', true); out.big = 'read'; } catch (e) { out.big = e.message; }
+    try { r.x.web_info(0xfffffff0, 0); out.trap = 'no trap'; } catch (e) {
+      out.trap = e instanceof RayoWeb.RayoError ? e.message : `other: ${e}`;
+    }
+    await r.ready;
+    out.generation = r.generation;
+    const small = new TextEncoder().encode('P1\n3 2\n1 0 1\n0 1 0\n');
+    const a = r.read(small, 'a.pbm', false), b = r.read(small, 'b.pbm', true);
+    out.verdict = r.compare(a, b).verdict;
+    a.free();
+    b.free();
+    return out;
+  });
+  ok(/^rayo: big\.pbm: the image is 65536x16384, 1073741824 pixels; the page takes at most/.test(mod.big),
+     'the module: a 65536x16384 PBM refused, not written past its memory', mod.big);
+  ok(/^rayo: the page's module failed \(.*\) and was started again/.test(mod.trap),
+     'a call that traps: a RayoError, and the module started again', mod.trap);
+  ok(mod.generation === 1 && mod.verdict === 'identical',
+     'the module started again compares (generation 1, identical)', JSON.stringify(mod));
 
   // The seed scene rendered on the canvas: the command's PBM exactly.
   await page.selectOption(T('reference'), 'ej1');

@@ -10,8 +10,14 @@
  * for web_error.  Images the script holds are web_image pointers, freed
  * with web_image_free.  One thread, no files: reading is from memory,
  * writing into memory (output_memory.c).
+ *
+ * Sizes: size_t is 32 bits here, and the module's memory at most 4 GiB,
+ * so every image the page takes in is first held to WEB_MAX_PIXELS
+ * pixels (web_size_check), which keeps every size the library and this
+ * file compute for it under 2^32 (the static assertion below).
  */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,6 +44,19 @@ struct web_image {
 
 static char last_error[RAYO_ERROR_MESSAGE_SIZE + 8];
 static int last_was_png;
+
+/* The largest image the page takes (2^25 pixels, e.g. 8192x4096), and the
+ * most bytes one pixel can hold in the module at once while two such
+ * images are compared: two 16-bit colour images as read (12), compare's
+ * own copies and maps (docs/limits.md: about 30 in all with the images),
+ * each image's RGBA for the canvas (8), the difference PNG (3, stored
+ * uncompressed) and the files' bytes while they are read (a plain PPM of
+ * 16-bit samples: up to 18 a pixel each, 36): 96 with room.  Their
+ * product must fit the module's 32-bit size_t and memory. */
+#define WEB_MAX_PIXELS (UINT64_C(1) << 25)
+#define WEB_PIXEL_BYTES 96
+_Static_assert(WEB_MAX_PIXELS * WEB_PIXEL_BYTES <= SIZE_MAX,
+               "the page's largest image fits the module's size_t");
 
 static void keep_error(const rayo_error *err)
 {
@@ -67,6 +86,27 @@ WEB_EXPORT("web_image_free") void web_image_free(web_image *im)
     rayo_image_free(&im->image);
     free(im->rgba);
     free(im);
+}
+
+/*
+ * 0 when a width x height image fits the page, else -1 with web_error
+ * saying so (name: the file).  The script calls it with a PNG's header
+ * before the browser decodes it; the functions below before they build
+ * or keep an image.
+ */
+WEB_EXPORT("web_size_check")
+int web_size_check(const char *name, uint32_t width, uint32_t height)
+{
+    uint64_t pixels = (uint64_t)width * height;
+    if (pixels <= WEB_MAX_PIXELS)
+        return 0;
+    snprintf(last_error, sizeof last_error,
+             "rayo: %s: the image is %lux%lu, %llu pixels; the page takes "
+             "at most %llu (e.g. 8192x4096): compare it with the command, "
+             "rayo compare",
+             name, (unsigned long)width, (unsigned long)height,
+             (unsigned long long)pixels, (unsigned long long)WEB_MAX_PIXELS);
+    return -1;
 }
 
 static web_image *new_image(void)
@@ -120,6 +160,14 @@ web_image *web_read(const unsigned char *data, size_t size, const char *name,
         web_image_free(im);
         return NULL;
     }
+    /* The reader computes in 64 bits and allocates with calloc, which
+       refuses a product past size_t: a larger image is refused here,
+       before anything else computes with its size. */
+    if (web_size_check(name, im->image.info.width,
+                       im->image.info.height) != 0) {
+        web_image_free(im);
+        return NULL;
+    }
     return im;
 }
 
@@ -163,6 +211,8 @@ web_image *web_from_png(const unsigned char *png, size_t png_size,
     rayo_error err;
     int color, depth, trns;
     uint32_t x, y;
+    if (web_size_check("the PNG", w, h) != 0)
+        return NULL;
     if (im == NULL)
         return NULL;
     png_header(png, png_size, &color, &depth, &trns);
@@ -225,9 +275,16 @@ WEB_EXPORT("web_rgba") const unsigned char *web_rgba(web_image *im)
     unsigned c;
     if (im->rgba != NULL)
         return im->rgba;
-    im->rgba = malloc((size_t)i->width * i->height * 4 + 1);
-    if (im->rgba == NULL)
+    /* every image here passed web_size_check: no overflow */
+    if (web_size_check("the picture", i->width, i->height) != 0)
         return NULL;
+    im->rgba = malloc((size_t)i->width * i->height * 4 + 1);
+    if (im->rgba == NULL) {
+        snprintf(last_error, sizeof last_error,
+                 "rayo: out of memory for the picture's %lux%lu pixels",
+                 (unsigned long)i->width, (unsigned long)i->height);
+        return NULL;
+    }
     for (y = 0; y < i->height; y++) {
         const unsigned char *row = rayo_image_row(&im->image, y);
         unsigned char *out = im->rgba + (size_t)y * i->width * 4;
@@ -292,6 +349,11 @@ const char *web_compare(const web_image *reference, const web_image *image)
     compare_text = compare_diagnosis = NULL;
     memset(&compare_diff, 0, sizeof compare_diff);
     rayo_error_clear(&err);
+    if (web_size_check("the reference", reference->image.info.width,
+                       reference->image.info.height) != 0 ||
+        web_size_check("the image", image->image.info.width,
+                       image->image.info.height) != 0)
+        return NULL;
     rayo_compare_options_init(&options);
     if (rayo_compare_images(&reference->image, &image->image, &options,
                             &compare_report, &err) != RAYO_OK) {
@@ -464,6 +526,11 @@ web_image *web_render(int scene_id, const double *cam, const double *spheres,
     rayo_render_options_init(&options);
     options.threads = 1;
     s = build_camera(cam, &camera, &err);
+    if (s == RAYO_OK && web_size_check("the render", camera.width,
+                                       camera.height) != 0) {
+        web_image_free(im);
+        return NULL;
+    }
     if (s == RAYO_OK)
         s = build_scene(scene_id, spheres, count, &scene, &options.shade,
                         &err);
