@@ -64,8 +64,9 @@ typedef struct rayo_grade_report {
     rayo_grade_item items[RAYO_GRADE_CRITERIA];
     char *verdict;      /* compare's verdict ("identical", ...) or NULL */
     int isolated;       /* 1 when the submission ran in the sandbox */
-    /* "bubblewrap (user, pid, ...)", "not isolated: WHY" or "off" */
-    char isolation[256];
+    /* "sandbox: bubblewrap (user, pid, ...); limits: ...",
+       "not isolated: WHY; limits: ..." or "off" */
+    char isolation[512];
 } rayo_grade_report;
 
 /* How the submission is isolated (rayo_grade_options.sandbox). */
