@@ -12,7 +12,9 @@
  * _exit) and is safe to fork from a threaded program.  On Linux the
  * child also dies with the grader (PR_SET_PDEATHSIG), and bwrap's
  * --die-with-parent takes the whole sandbox with it.  The limits are set
- * on bwrap and so hold inside.
+ * on bwrap and so hold inside; before them the child joins the run's
+ * cgroup (cgroup.c), which bounds the memory and processes of the whole
+ * tree and is emptied and removed when the run ends.
  */
 #define _POSIX_C_SOURCE 200809L
 

@@ -10,7 +10,8 @@
  * only a loopback), no IPC or UTS of the host, a new session, uid and gid
  * 65534 with no capabilities, and a read-only root.  The compiler
  * (GRADE_ROLE_TOOL) also sees the folders of the submission's sources,
- * read-only, and the build folder, writable; the student's code
+ * read-only, the build folder, writable, a tmpfs of options->disk bytes
+ * for its temporaries and no device but /dev/null; the student's code
  * (GRADE_ROLE_STUDENT) sees the one file it runs, read-only, and its own
  * folder, a fresh tmpfs of options->disk bytes that is gone when the run
  * ends.  Everything it started dies with the sandbox's PID namespace.
