@@ -447,11 +447,21 @@ void grade_limits_describe(const rayo_grade_options *o, char *text,
                              "%llu MiB files, %d descriptors",
                  version, mib(o->memory), o->processes, cpu,
                  mib(o->output_limit), GRADE_OPEN_FILES);
+    else if (geteuid() == 0)
+        /* RLIMIT_NPROC does not bind for root, not even inside the
+           sandbox's user namespace: nothing bounds the total. */
+        snprintf(text, room, "limits: per process only, no cgroup here "
+                             "(%llu MiB address space each, no bound on "
+                             "the processes of root nor on their total; "
+                             "%s, %llu MiB files, %d descriptors)",
+                 mib(o->memory), cpu, mib(o->output_limit),
+                 GRADE_OPEN_FILES);
     else
         snprintf(text, room, "limits: per process only, no cgroup here "
                              "(%llu MiB address space each, %lu processes "
-                             "of the user, %s, %llu MiB files, %d "
-                             "descriptors)",
-                 mib(o->memory), o->processes, cpu, mib(o->output_limit),
-                 GRADE_OPEN_FILES);
+                             "of the user: at most %llu MiB in all; %s, "
+                             "%llu MiB files, %d descriptors)",
+                 mib(o->memory), o->processes,
+                 mib(o->memory) * (unsigned long long)o->processes, cpu,
+                 mib(o->output_limit), GRADE_OPEN_FILES);
 }
