@@ -16,6 +16,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <pthread.h>
@@ -231,11 +232,36 @@ static int can_make(const char *dir, const char *limit_file,
     return ok;
 }
 
+/* Removes the empty groups a grader that was killed left in dir
+   ("rayo-PID-N" of a PID that is gone); a group still in use, or of a
+   live grader, stays. */
+static void remove_stale(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *entry;
+    if (d == NULL)
+        return;
+    while ((entry = readdir(d)) != NULL) {
+        char path[4200], *end;
+        long pid;
+        if (strncmp(entry->d_name, "rayo-", 5) != 0)
+            continue;
+        pid = strtol(entry->d_name + 5, &end, 10);
+        if (end == entry->d_name + 5 || *end != '-' || pid <= 0 ||
+            kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, entry->d_name);
+        rmdir(path);
+    }
+    closedir(d);
+}
+
 static void probe(void)
 {
     if (group_dir(NULL, "", base[0], sizeof base[0]) && v2_ready(base[0]) &&
         can_make(base[0], "memory.max", "1073741824")) {
         kind = 2;
+        remove_stale(base[0]);
         return;
     }
     if (group_dir("memory", "memory", base[0], sizeof base[0]) &&
@@ -243,6 +269,8 @@ static void probe(void)
         if (can_make(base[0], "memory.limit_in_bytes", "1073741824") &&
             can_make(base[1], "pids.max", "64")) {
             kind = 1;
+            remove_stale(base[0]);
+            remove_stale(base[1]);
             return;
         }
         snprintf(reason, sizeof reason, "cannot make a cgroup here (not "
