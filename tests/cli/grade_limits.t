@@ -151,6 +151,36 @@ for mode in auto off; do
         "huge array ($mode): nothing left in the temporary folder"
 done
 
+# ---- the devices the program keeps ----
+if [ "$sandbox" = 1 ]; then
+    cat >"$TMP/devices.c" <<'EOF_C'
+#include <stdio.h>
+
+int main(void)
+{
+    static const char *const kept[] = {"/dev/null", "/dev/zero", "/dev/full",
+                                       "/dev/random", "/dev/urandom"};
+    unsigned i;
+    int c;
+    for (i = 0; i < 5; i++) {
+        FILE *f = fopen(kept[i], "r");
+        if (f == NULL)
+            return 10 + (int)i;
+        c = fgetc(f);
+        fclose(f);
+        if (i == 1 && c != 0)
+            return 20;
+    }
+    if (fopen("/dev/tty", "r") != NULL || fopen("/dev/sda", "r") != NULL)
+        return 30;
+    return 0;
+}
+EOF_C
+    guarded 256 $G --no-valgrind --memory 256 "$TMP/devices.c"
+    held "devices"
+    says '^run +pass ' "devices: the program opens null, zero, full, random and urandom, and no other"
+fi
+
 # ---- the program: 20 children of 700 MB each ----
 if [ "$cgroup" = 1 ]; then
     guarded 1024 $G --no-valgrind --memory 1024 --timeout 20 "$H/fork_memory"
