@@ -87,10 +87,12 @@ static void print_help(void)
           "                         image=40,valgrind=10)\n"
           "      --timeout SEC      wall-clock limit per run (default 10)\n"
           "      --cpu SEC          CPU time limit per run (default 10)\n"
-          "      --memory MIB       address space limit (default 1024)\n"
+          "      --memory MIB       memory of the run's whole process tree "
+          "(default 512)\n"
           "      --output-limit MIB largest file the program may write "
           "(default 64)\n"
-          "      --processes N      process limit (default 64)\n"
+          "      --processes N      processes of the run's tree (default "
+          "64)\n"
           "      --no-valgrind      skip the valgrind run\n"
           "      --cc COMMAND       the compiler (default $CC, else cc)\n"
           "      --sandbox MODE     auto (default): run everything in a "
@@ -379,7 +381,7 @@ static const char *isolation_line(const char *isolation, char *line,
 
 static void print_isolation(const char *isolation)
 {
-    char line[300];
+    char line[600];
     if (isolation_line(isolation, line, sizeof line) != NULL)
         printf("%s\n", line);
 }
@@ -552,7 +554,7 @@ static int export_one(const grade_request *req, const char *student,
         status = finish_export(stream, &text, &size, req->csv);
     }
     if (req->gradescope != NULL && status == CLI_EXIT_OK) {
-        char line[300];
+        char line[600];
         if ((stream = start_export(&text, &size, req->gradescope)) == NULL)
             return CLI_EXIT_NOMEM;
         cli_grade_gradescope(stream, report, message,
@@ -718,7 +720,7 @@ static int grade_each(const char *dir, grade_request *req)
     size_t csv_size = 0;
     class_printer p;
     rayo_error err;
-    char isolation[256];
+    char isolation[512];
     int status;
     rayo_error_clear(&err);
     if (rayo_grade_submissions(dir, &folders, &count, &err) != RAYO_OK)
@@ -803,7 +805,7 @@ int cli_grade(int argc, char **argv)
         !(req.points.given & (1u << RAYO_GRADE_VALGRIND)))
         req.points.points[RAYO_GRADE_VALGRIND] = 0;
     if (req.check || req.options.sandbox == RAYO_GRADE_SANDBOX_REQUIRE) {
-        char text[256];
+        char text[512];
         int isolated = rayo_grade_sandbox_check(&req.options, text,
                                                 sizeof text);
         if (req.check) {

@@ -15,8 +15,11 @@
  * program and valgrind all run inside a bubblewrap sandbox (new user,
  * PID, network, IPC and UTS namespaces; a read-only system; the
  * program's folder a size-limited tmpfs; no capabilities), under resource
- * limits (setrlimit before exec: CPU time, address space, file size,
- * process count) and a wall-clock timeout measured by the grader.  When
+ * limits (a cgroup per run, where one can be made, for the memory and
+ * processes of the whole tree; setrlimit before exec: CPU time, address
+ * space, file size, process count, descriptors) and a wall-clock
+ * timeout measured by the grader; the report's isolation line says
+ * which limits hold.  When
  * no sandbox can be made the report says so (rayo_grade_report.isolated,
  * .isolation) and the limits alone remain: they stop honest mistakes,
  * not code written to do harm (docs/grading.md).
@@ -65,8 +68,9 @@ typedef struct rayo_grade_report {
     rayo_grade_item items[RAYO_GRADE_CRITERIA];
     char *verdict;      /* compare's verdict ("identical", ...) or NULL */
     int isolated;       /* 1 when the submission ran in the sandbox */
-    /* "bubblewrap (user, pid, ...)", "not isolated: WHY" or "off" */
-    char isolation[256];
+    /* "sandbox: bubblewrap (user, pid, ...); limits: ...",
+       "not isolated: WHY; limits: ..." or "off" */
+    char isolation[512];
 } rayo_grade_report;
 
 /* How the submission is isolated (rayo_grade_options.sandbox). */
@@ -104,9 +108,12 @@ typedef struct rayo_grade_options {
     const char *diff;            /* write the compare picture here */
     double timeout;              /* wall seconds per run (default 10) */
     double cpu;                  /* CPU seconds per run (default 10) */
-    uint64_t memory;             /* address space, bytes (1 GiB) */
+    uint64_t memory;             /* the run's tree, and the address
+                                    space of each process, bytes
+                                    (512 MiB) */
     uint64_t output_limit;       /* file size, bytes (64 MiB) */
-    unsigned long processes;     /* process count (64) */
+    unsigned long processes;     /* the run's tree, and RLIMIT_NPROC
+                                    (64) */
     int valgrind;                /* run memcheck when installed */
     rayo_grade_sandbox_mode sandbox; /* default AUTO */
     uint64_t disk;               /* the sandbox's tmpfs, bytes (256 MiB) */

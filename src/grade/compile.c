@@ -15,6 +15,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -218,21 +219,83 @@ static rayo_status explain_errors(rayo_grade_item *item, const char *errors,
                      line, length > SHOWN_ERROR ? "..." : "");
 }
 
-static rayo_status explain_failure(grade_context *ctx, const char *errors,
-                                   const grade_outcome *outcome,
-                                   char *const *argv, rayo_error *err)
+/* The device an "#include" named, from the compiler's "fatal error:
+   /dev/NAME: ..." line: its start and length, or NULL. */
+static const char *device_named(const char *errors, size_t *length)
+{
+    const char *p = strstr(errors, "fatal error: /dev/");
+    if (p == NULL)
+        return NULL;
+    p += strlen("fatal error: ");
+    *length = strcspn(p, ": \n");
+    if (*length > 40)
+        *length = 40;
+    return p;
+}
+
+/* When a limit stopped the compile: the line that says which; RAYO_OK
+   and *said 0 when none did. */
+static rayo_status say_limit(grade_context *ctx, const grade_captured *got,
+                             const char *errors, int *said, rayo_error *err)
+{
+    const rayo_grade_options *o = ctx->options;
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_COMPILE];
+    const char *device;
+    size_t length = 0;
+    *said = 1;
+    if (got->memory_exceeded || strstr(errors, "out of memory") != NULL ||
+        strstr(errors, "memory exhausted") != NULL)
+        return grade_fail(item, err, "memory limit exceeded: the compiler "
+                                     "used more than %llu MiB and was "
+                                     "stopped",
+                          (unsigned long long)(o->memory >> 20));
+    device = device_named(errors, &length);
+    if (device != NULL)
+        return grade_fail(item, err, "it includes a device (%.*s): the "
+                                     "compiler sees no device but /dev/null",
+                          (int)length, device);
+    if (strstr(errors, "File size limit exceeded") != NULL ||
+        strstr(errors, "No space left on device") != NULL ||
+        (got->outcome.ending == GRADE_SIGNALED &&
+         got->outcome.status == SIGXFSZ))
+        return grade_fail(item, err, "disk limit exceeded: the compiler's "
+                                     "output grew past %llu MiB and was "
+                                     "stopped (an enormous initialised "
+                                     "array?)",
+                          (unsigned long long)(o->output_limit >> 20));
+    if (strstr(errors, "CPU time limit exceeded") != NULL ||
+        (got->outcome.ending == GRADE_SIGNALED &&
+         got->outcome.status == SIGXCPU))
+        return grade_fail(item, err, "CPU time limit exceeded: the compiler "
+                                     "worked for more than %g s and was "
+                                     "stopped",
+                          o->cpu > 10 ? o->cpu : 10);
+    *said = 0;
+    return RAYO_OK;
+}
+
+static rayo_status explain_failure(grade_context *ctx,
+                                   const grade_captured *got,
+                                   const char *errors, char *const *argv,
+                                   rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_COMPILE];
     rayo_status status;
-    if (outcome->ending == GRADE_TIMED_OUT)
+    int said = 0;
+    if (got->outcome.ending == GRADE_TIMED_OUT)
         status = grade_fail(item, err, "the compiler did not finish in "
                                        "%.0f seconds", COMPILE_SECONDS);
-    else
-        status = grade_fail(item, err, "does not compile with the course's "
-                                       "flags; the compiler says:");
+    else {
+        status = say_limit(ctx, got, errors, &said, err);
+        if (status == RAYO_OK)
+            status = said ? grade_say(item, err, "the compiler says:")
+                          : grade_fail(item, err, "does not compile with "
+                                                  "the course's flags; the "
+                                                  "compiler says:");
+    }
     if (status == RAYO_OK)
         status = grade_quote(item, errors, QUOTED_LINES, err);
-    if (status == RAYO_OK)
+    if (status == RAYO_OK && !said)
         status = explain_errors(item, errors, err);
     if (status == RAYO_OK)
         status = say_command(ctx, item, argv, err);
@@ -302,7 +365,7 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
         if (status == RAYO_OK && errors[0] != '\0')
             status = grade_quote(item, errors, QUOTED_LINES, err);
     } else {
-        status = explain_failure(ctx, errors, &got.outcome, argv, err);
+        status = explain_failure(ctx, &got, errors, argv, err);
         free(ctx->program);
         ctx->program = NULL;
     }

@@ -30,7 +30,7 @@ void rayo_grade_options_init(rayo_grade_options *options)
     options->exercise = rayo_grade_exercise_find("ej1");
     options->timeout = 10;
     options->cpu = 10;
-    options->memory = (uint64_t)1 << 30;
+    options->memory = (uint64_t)512 << 20;
     options->output_limit = (uint64_t)64 << 20;
     options->processes = 64;
     options->valgrind = 1;

@@ -73,14 +73,21 @@ int grade_header_peek(const void *data, size_t size, grade_header *header);
    times the larger of the exercise's size and the reference's. */
 uint64_t grade_pixels_allowed(const rayo_grade_exercise *exercise,
                               const rayo_image *reference);
+/* Descriptors per process (RLIMIT_NOFILE) for every run: far more than
+   a course's program or the compiler opens. */
+#define GRADE_OPEN_FILES 256
 
 /* process.c: one run of a program, its limits and what became of it. */
 typedef struct grade_limits {
     double wall;          /* seconds; the process group is killed after */
     double cpu;           /* seconds; 0 = no limit */
     uint64_t memory;      /* address space bytes; 0 = no limit */
+    uint64_t tree_memory; /* bytes for the whole tree (its cgroup, where
+                             one can be made); 0 = no limit */
     uint64_t file_size;   /* bytes; 0 = no limit */
-    unsigned long processes; /* 0 = no limit */
+    unsigned long processes; /* per uid (rlimit) and for the tree (its
+                                cgroup); 0 = no limit */
+    unsigned long open_files; /* descriptors per process; 0 = no limit */
     int (*cancelled)(void *context); /* may be NULL */
     void *cancel_context;
 } grade_limits;
@@ -139,6 +146,8 @@ typedef struct grade_captured {
     char *file_name;      /* collect: the image file's name, or NULL */
     char *file;           /* and its bytes (at most out_limit) */
     size_t file_size;
+    int memory_exceeded;  /* the kernel killed in its cgroup for memory */
+    uint64_t memory_peak; /* the tree's peak memory (0: not known) */
 } grade_captured;
 
 struct grade_context;
@@ -160,6 +169,33 @@ void grade_captured_free(grade_captured *got);
    grader has (so it can be placed there) and at most 1023; -1 when the
    limit is too low for one. */
 int grade_log_fd(void);
+
+/* cgroup.c: a control group of its own per run (cgroup v2, else v1),
+   limiting the memory and the processes of the whole tree. */
+typedef struct grade_cgroup {
+    int version;          /* 2, 1, or 0: none (the rlimits alone hold) */
+    char *dirs[2];        /* v2: [0]; v1: [0] memory, [1] pids */
+    int procs[2];         /* their cgroup.procs, open for writing */
+} grade_cgroup;
+/* 2 or 1: the kind of cgroup a run gets here; 0: none, and why (tried
+   once, for real, and cached). */
+int grade_cgroup_kind(char *why, size_t room);
+/* Makes a run's group: memory bytes (0: no limit) for the tree, swap
+   included, and at most processes (0: no limit).  cg->version 0, and
+   RAYO_OK, where none can be made. */
+rayo_status grade_cgroup_create(grade_cgroup *cg, uint64_t memory,
+                                unsigned long processes, rayo_error *err);
+/* In the child before exec (async-signal-safe): joins the group. */
+int grade_cgroup_enter(const grade_cgroup *cg);
+/* After the run: 1 when the kernel killed in it for lack of memory. */
+int grade_cgroup_oom(const grade_cgroup *cg);
+/* The tree's peak memory in bytes; 0 when not known. */
+uint64_t grade_cgroup_peak(const grade_cgroup *cg);
+/* Kills whatever is left in it and removes it. */
+void grade_cgroup_remove(grade_cgroup *cg);
+/* The limits that hold on a run here, for the report's first line. */
+void grade_limits_describe(const rayo_grade_options *options, char *text,
+                           size_t room);
 
 /* sandbox.c: whether the sandbox works (cached), and its command. */
 int grade_sandbox_available(char *why, size_t room);

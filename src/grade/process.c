@@ -13,7 +13,9 @@
  * program.  On Linux the child also dies with the grader
  * (PR_SET_PDEATHSIG), and bwrap's
  * --die-with-parent takes the whole sandbox with it.  The limits are set
- * on bwrap and so hold inside.
+ * on bwrap and so hold inside; before them the child joins the run's
+ * cgroup (cgroup.c), which bounds the memory and processes of the whole
+ * tree and is emptied and removed when the run ends.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -163,10 +165,15 @@ int grade_log_fd(void)
 /* In the child, between fork and exec: async-signal-safe calls only. */
 static void child(const char *program, char *const argv[],
                   char *const env[], const char *dir, const child_fds *fds,
-                  const grade_limits *limits, long max_fd)
+                  const grade_limits *limits, const grade_cgroup *cg,
+                  long max_fd)
 {
     int fd, moved[6], i;
     long k;
+    /* Into the run's cgroup before anything else: all it starts is
+       counted there. */
+    if (grade_cgroup_enter(cg) != 0)
+        _exit(126);
     /* A session of its own: its own process group (killed as one), and
        no controlling terminal to push input into (TIOCSTI). */
     setsid();
@@ -226,6 +233,9 @@ static void child(const char *program, char *const argv[],
     if (limits->processes > 0)
         set_limit(RLIMIT_NPROC, (rlim_t)limits->processes,
                   (rlim_t)limits->processes);
+    if (limits->open_files > 0)
+        set_limit(RLIMIT_NOFILE, (rlim_t)limits->open_files,
+                  (rlim_t)limits->open_files);
     if (moved[2] >= 0)
         keep_log_out_of_reach(fds->log_number);
     signal(SIGPIPE, SIG_DFL);
@@ -469,12 +479,15 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     int pipe_fds[2] = {-1, -1};
     log_reader log;
     child_fds fds;
+    grade_cgroup cg;
     long max_fd = sysconf(_SC_OPEN_MAX);
     rayo_status status = RAYO_OK;
     pid_t pid;
 
     memset(got, 0, sizeof *got);
     memset(&log, 0, sizeof log);
+    memset(&cg, 0, sizeof cg);
+    cg.procs[0] = cg.procs[1] = -1;
     log.fd = -1;
     if (max_fd < 0 || max_fd > 65536)
         max_fd = 65536;
@@ -536,6 +549,12 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     fds.json = json != NULL ? fileno(json) : -1;
     fds.name = name != NULL ? fileno(name) : -1;
     fds.file = file != NULL ? fileno(file) : -1;
+    if (limits->tree_memory > 0 || limits->processes > 0) {
+        status = grade_cgroup_create(&cg, limits->tree_memory,
+                                     limits->processes, err);
+        if (status != RAYO_OK)
+            goto done;
+    }
     pid = fork();
     if (pid < 0) {
         status = rayo_error_set(err, RAYO_ERR_IO, "grade: cannot start %s: %s",
@@ -544,12 +563,16 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     }
     if (pid == 0)
         child(program, full, env != NULL ? env : environ, dir, &fds, limits,
-              max_fd);
+              &cg, max_fd);
     if (pipe_fds[1] >= 0) {
         close(pipe_fds[1]);
         pipe_fds[1] = -1;
     }
     wait_for(pid, limits, &log, &got->outcome);
+    /* What the kernel did in the group, then nothing left in it. */
+    got->memory_exceeded = grade_cgroup_oom(&cg);
+    got->memory_peak = grade_cgroup_peak(&cg);
+    grade_cgroup_remove(&cg);
     if (got->outcome.ending == GRADE_CANCELLED) {
         status = rayo_error_set(err, RAYO_ERR_CANCELLED, "grade: cancelled");
         goto done;
@@ -604,6 +627,7 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
             status = collect_here(ctx, run->out_limit, got, err);
     }
 done:
+    grade_cgroup_remove(&cg);
     if (status != RAYO_OK)
         grade_captured_free(got);
     if (pipe_fds[0] >= 0)

@@ -18,12 +18,17 @@
 
 #define QUOTED_LINES 5
 
-static rayo_status say_ending(grade_context *ctx,
-                              const grade_outcome *outcome,
+static rayo_status say_ending(grade_context *ctx, const grade_captured *got,
                               rayo_error *err)
 {
     const rayo_grade_options *o = ctx->options;
+    const grade_outcome *outcome = &got->outcome;
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_RUN];
+    if (got->memory_exceeded)
+        return grade_fail(item, err, "memory limit exceeded: its processes "
+                                     "together used more than %llu MiB and "
+                                     "the system stopped them",
+                          (unsigned long long)(o->memory >> 20));
     if (outcome->ending == GRADE_TIMED_OUT)
         return grade_fail(item, err, "did not finish within %g s "
                                      "(wall clock) and was stopped: an "
@@ -84,24 +89,41 @@ static rayo_status collect_output(grade_context *ctx, grade_captured *got,
                      got->file_name);
 }
 
-grade_limits grade_compiler_limits(const rayo_grade_options *o,
-                                   double seconds)
+/* The compiler's CPU time is at least this (a compile takes a fraction
+   of it; a short --cpu for the program must not fail the compile). */
+#define COMPILER_CPU 10.0
+
+/* The limits every run shares: the tree's memory and processes (its
+   cgroup), and per process the address space, file size, processes
+   and descriptors. */
+static grade_limits common_limits(const rayo_grade_options *o,
+                                  double seconds)
 {
     grade_limits limits;
     memset(&limits, 0, sizeof limits);
     limits.wall = seconds;
+    limits.memory = o->memory;
+    limits.tree_memory = o->memory;
+    limits.file_size = o->output_limit;
+    limits.processes = o->processes;
+    limits.open_files = GRADE_OPEN_FILES;
     limits.cancelled = o->cancelled;
     limits.cancel_context = o->cancel_context;
     return limits;
 }
 
+grade_limits grade_compiler_limits(const rayo_grade_options *o,
+                                   double seconds)
+{
+    grade_limits limits = common_limits(o, seconds);
+    limits.cpu = o->cpu > COMPILER_CPU ? o->cpu : COMPILER_CPU;
+    return limits;
+}
+
 grade_limits grade_run_limits(const rayo_grade_options *o)
 {
-    grade_limits limits = grade_compiler_limits(o, o->timeout);
+    grade_limits limits = common_limits(o, o->timeout);
     limits.cpu = o->cpu;
-    limits.memory = o->memory;
-    limits.file_size = o->output_limit;
-    limits.processes = o->processes;
     return limits;
 }
 
@@ -124,8 +146,9 @@ rayo_status grade_step_run(grade_context *ctx, rayo_error *err)
     status = grade_spawn(ctx, &run, &limits, &got, err);
     if (status != RAYO_OK)
         return status;
-    status = say_ending(ctx, &got.outcome, err);
-    ctx->stopped = got.outcome.ending == GRADE_TIMED_OUT ||
+    status = say_ending(ctx, &got, err);
+    ctx->stopped = got.memory_exceeded ||
+                   got.outcome.ending == GRADE_TIMED_OUT ||
                    (got.outcome.ending == GRADE_SIGNALED &&
                     (got.outcome.status == SIGXCPU ||
                      got.outcome.status == SIGXFSZ ||

@@ -10,7 +10,8 @@
  * only a loopback), no IPC or UTS of the host, a new session, uid and gid
  * 65534 with no capabilities, and a read-only root.  The compiler
  * (GRADE_ROLE_TOOL) also sees the folders of the submission's sources,
- * read-only, and the build folder, writable; the student's code
+ * read-only, the build folder, writable, a tmpfs of options->disk bytes
+ * for its temporaries and no device but /dev/null; the student's code
  * (GRADE_ROLE_STUDENT) sees the one file it runs, read-only, and its own
  * folder, a fresh tmpfs of options->disk bytes that is gone when the run
  * ends.  Everything it started dies with the sandbox's PID namespace.
@@ -85,8 +86,29 @@ void grade_words_free(char **v)
     free(v);
 }
 
+/* The devices a run sees: the compiler none but /dev/null (an
+   #include of /dev/zero or /dev/urandom finds nothing), the program the
+   few a C program uses; each bound from the host into a small tmpfs,
+   read-only once they are in. */
+static void add_dev(words *w, int tool)
+{
+    static const char *const devices[] = {"/dev/null", "/dev/zero",
+                                          "/dev/full", "/dev/random",
+                                          "/dev/urandom"};
+    size_t i, count = tool ? 1 : sizeof devices / sizeof devices[0];
+    add2(w, "--size", "65536");
+    add2(w, "--tmpfs", "/dev");
+    for (i = 0; i < count; i++)
+        add3(w, "--dev-bind", devices[i], devices[i]);
+    add3(w, "--symlink", "/proc/self/fd", "/dev/fd");
+    add3(w, "--symlink", "/proc/self/fd/0", "/dev/stdin");
+    add3(w, "--symlink", "/proc/self/fd/1", "/dev/stdout");
+    add3(w, "--symlink", "/proc/self/fd/2", "/dev/stderr");
+    add2(w, "--remount-ro", "/dev");
+}
+
 /* The namespaces, the system read-only, /proc and /dev. */
-static void add_system(words *w)
+static void add_system(words *w, int tool)
 {
     static const char *const tops[] = {"/bin", "/lib", "/lib32", "/lib64",
                                        "/libx32", "/sbin"};
@@ -125,12 +147,12 @@ static void add_system(words *w)
     for (i = 0; i < sizeof etc / sizeof etc[0]; i++)
         add3(w, "--ro-bind-try", etc[i], etc[i]);
     add2(w, "--proc", "/proc");
-    add2(w, "--dev", "/dev");
+    add_dev(w, tool);
 }
 
 /* The environment inside: PATH, HOME and TMPDIR, LANG=C; the compiler
    keeps the caller's locale (its messages in the caller's language). */
-static void add_env(words *w, const char *home, int tool)
+static void add_env(words *w, const char *home, const char *tmp, int tool)
 {
     static const char *const locale[] = {"LANG", "LC_ALL", "LC_MESSAGES",
                                          "LC_CTYPE"};
@@ -138,7 +160,7 @@ static void add_env(words *w, const char *home, int tool)
     add(w, "--clearenv");
     add3(w, "--setenv", "PATH", "/usr/local/bin:/usr/bin:/bin");
     add3(w, "--setenv", "HOME", home);
-    add3(w, "--setenv", "TMPDIR", home);
+    add3(w, "--setenv", "TMPDIR", tmp);
     add3(w, "--setenv", "LANG", "C");
     for (i = 0; tool && i < sizeof locale / sizeof locale[0]; i++) {
         const char *value = getenv(locale[i]);
@@ -184,8 +206,16 @@ char **grade_sandbox_argv(const grade_context *ctx, const grade_run *run,
     char number[32];
     size_t i;
     add(&w, ctx->bwrap);
-    add_system(&w);
+    add_system(&w, run->role == GRADE_ROLE_TOOL);
+    snprintf(number, sizeof number, "%llu",
+             (unsigned long long)ctx->options->disk);
     if (run->role == GRADE_ROLE_TOOL) {
+        /* The compiler's temporary files (assembly, objects) go to a
+           tmpfs of options->disk bytes, gone when it ends; only the
+           files it is told to make (-o) reach the build folder, each
+           bounded by the file size limit. */
+        add2(&w, "--size", number);
+        add2(&w, "--tmpfs", "/tmp");
         add2(&w, "--dir", ctx->cwd);
         for (i = 0; i < ctx->source_count; i++) {
             char *dir = dir_of(ctx->absolute[i]);
@@ -199,18 +229,16 @@ char **grade_sandbox_argv(const grade_context *ctx, const grade_run *run,
         add3(&w, "--bind", ctx->dir, ctx->dir);
         add(&w, "--remount-ro");
         add(&w, "/");
-        add_env(&w, ctx->dir, 1);
+        add_env(&w, ctx->dir, "/tmp", 1);
         add2(&w, "--chdir", ctx->cwd);
     } else {
-        snprintf(number, sizeof number, "%llu",
-                 (unsigned long long)ctx->options->disk);
         add2(&w, "--size", number);
         add2(&w, "--tmpfs", ctx->work);
         if (run->program != NULL)
             add3(&w, "--ro-bind", run->program, run->program);
         add(&w, "--remount-ro");
         add(&w, "/");
-        add_env(&w, ctx->work, 0);
+        add_env(&w, ctx->work, ctx->work, 0);
         add2(&w, "--chdir", ctx->work);
     }
     snprintf(number, sizeof number, "%d", json_fd);
@@ -266,7 +294,7 @@ static void try_sandbox(void)
         return;
     }
     add(&w, bwrap);
-    add_system(&w);
+    add_system(&w, 0);
     add2(&w, "--size", "1048576");
     add2(&w, "--tmpfs", "/tmp");
     add(&w, "--remount-ro");
@@ -345,21 +373,32 @@ int grade_sandbox_available(char *why, size_t room)
     return works;
 }
 
+/* Adds "; " and the limits that hold to text. */
+static void add_limits(const rayo_grade_options *options, char *text,
+                       size_t room)
+{
+    size_t n = strlen(text);
+    if (n + 2 < room) {
+        memcpy(text + n, "; ", 3);
+        grade_limits_describe(options, text + n + 2, room - n - 2);
+    }
+}
+
 int rayo_grade_sandbox_check(const rayo_grade_options *options, char *text,
                              size_t room)
 {
     char why[200];
-    if (options->sandbox == RAYO_GRADE_SANDBOX_OFF) {
+    int isolated = 0;
+    if (options->sandbox == RAYO_GRADE_SANDBOX_OFF)
         snprintf(text, room, "not isolated: the sandbox is off "
                              "(--sandbox=off)");
-        return 0;
-    }
-    if (grade_sandbox_available(why, sizeof why)) {
+    else if (grade_sandbox_available(why, sizeof why)) {
         grade_sandbox_describe(options->disk, text, room);
-        return 1;
-    }
-    snprintf(text, room, "not isolated: %s; the submission runs with "
-                         "your rights",
-             why);
-    return 0;
+        isolated = 1;
+    } else
+        snprintf(text, room, "not isolated: %s; the submission runs with "
+                             "your rights",
+                 why);
+    add_limits(options, text, room);
+    return isolated;
 }

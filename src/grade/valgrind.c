@@ -432,6 +432,9 @@ rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err)
     limits.wall *= SLOWDOWN;
     limits.cpu *= SLOWDOWN;
     limits.memory = 0;
+    /* memcheck keeps a shadow of the program's memory and its own
+       tables: the tree gets twice the program's memory. */
+    limits.tree_memory *= 2;
     memset(&run, 0, sizeof run);
     run.argv = argv;
     run.role = GRADE_ROLE_STUDENT;
@@ -439,7 +442,13 @@ rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err)
     run.out_limit = 1u << 20;
     run.log_fd = log_fd;
     status = grade_spawn(ctx, &run, &limits, &got, err);
-    if (status == RAYO_OK)
+    if (status == RAYO_OK && got.memory_exceeded &&
+        got.outcome.ending != GRADE_TIMED_OUT)
+        status = grade_fail(item, err, "memory limit exceeded under "
+                                       "valgrind: valgrind and the program "
+                                       "together used more than %llu MiB",
+                            (unsigned long long)(limits.tree_memory >> 20));
+    else if (status == RAYO_OK)
         status = read_log(ctx, &got, log_fd, err);
     grade_captured_free(&got);
     free(valgrind);

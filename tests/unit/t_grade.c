@@ -68,7 +68,8 @@ static void test_options(void)
     is_double(o.timeout, 10, 0, "default: 10 s wall clock");
     is_double(o.cpu, 10, 0, "default: 10 s CPU");
     is_int(o.output_limit, 64u << 20, "default: 64 MiB of output");
-    is_int(o.memory, 1u << 30, "default: 1 GiB of address space");
+    is_int(o.memory, 512u << 20,
+           "default: 512 MiB for the tree and each address space");
     is_int(o.processes, 64, "default: 64 processes");
     is_int(o.valgrind, 1, "default: valgrind on");
     is_int(rayo_grade(&o, &report, &err), RAYO_ERR_INVALID,
