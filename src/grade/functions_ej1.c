@@ -95,10 +95,10 @@ static void write_call(harness_text *t, const function_spec *f, unsigned c)
     double args[MAX_ARGS];
     unsigned i;
     case_args(f, c, args);
-    harness_append(t, "    printf(\"\\ncall %s %u\\n\");\n"
+    harness_append(t, "    rayo_say(\"call %s %u\");\n"
                       "    fflush(stdout);\n",
                    f->name, c);
-    harness_append(t, "    printf(\"\\nresult %s %u %%.9g\\n\", (double)%s(",
+    harness_append(t, "    rayo_say(\"result %s %u %%.9g\", (double)%s(",
                    f->name, c, f->name);
     for (i = 0; i < f->arg_count; i++)
         harness_append(t, "%s(float)%.9g", i > 0 ? ", " : "", args[i]);
@@ -111,7 +111,7 @@ static char *harness_source(const int *usable)
     harness_text t = {NULL, 0, 0, 0};
     size_t i;
     unsigned c;
-    harness_append(&t, "#include <stdio.h>\n");
+    harness_prelude(&t);
     for (i = 0; i < FUNCTION_COUNT; i++)
         if (usable[i])
             harness_append(&t, "%s %s%s __attribute__((weak));\n",
@@ -123,14 +123,14 @@ static char *harness_source(const int *usable)
         if (!usable[i])
             continue;
         harness_append(&t, "    if (%s == 0) {\n"
-                           "        printf(\"\\nmissing %s\\n\");\n"
+                           "        rayo_say(\"missing %s\");\n"
                            "    } else {\n",
                        f->name, f->name);
         for (c = 0; c < f->case_count; c++)
             write_call(&t, f, c);
         harness_append(&t, "    }\n");
     }
-    harness_append(&t, "    return 0;\n}\n");
+    harness_append(&t, "    rayo_say(\"done\");\n    return 0;\n}\n");
     if (t.failed) {
         free(t.data);
         return NULL;

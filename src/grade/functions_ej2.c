@@ -347,7 +347,7 @@ static void write_vector_case(harness_text *t, const vector_case *v,
     put_vector(t, "c", c);
     harness_append(t, "        float r[3] = {0, 0, 0};\n"
                       "        double v = 0;\n"
-                      "        printf(\"\\ncall %s %u\\n\");\n"
+                      "        rayo_say(\"call %s %u\");\n"
                       "        fflush(stdout);\n",
                    name, k);
     switch (v->function) {
@@ -375,8 +375,8 @@ static void write_vector_case(harness_text *t, const vector_case *v,
         harness_append(t, "        normal_esfera(r, a, %.9g, b);\n", s);
         break;
     }
-    harness_append(t, "        printf(\"\\nresult %s %u %%.9g %%.9g %%.9g "
-                      "%%.9g\\n\", v, r[0], r[1], r[2]);\n"
+    harness_append(t, "        rayo_say(\"result %s %u %%.9g %%.9g %%.9g "
+                      "%%.9g\", v, r[0], r[1], r[2]);\n"
                       "        fflush(stdout);\n    }\n",
                    name, k);
 }
@@ -400,13 +400,13 @@ static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
     put_vector(t, "o", (const double[3]){0, 0, 0});
     put_vector(t, "d", d);
     harness_append(t, "        int v;\n"
-                      "        printf(\"\\ncall computar_intensidad "
-                      "%u\\n\");\n"
+                      "        rayo_say(\"call computar_intensidad "
+                      "%u\");\n"
                       "        fflush(stdout);\n"
                       "        v = computar_intensidad(cs, rs, %zu, luz, o, "
                       "d);\n"
-                      "        printf(\"\\nresult computar_intensidad %u "
-                      "%%d\\n\", v);\n"
+                      "        rayo_say(\"result computar_intensidad %u "
+                      "%%d\", v);\n"
                       "        fflush(stdout);\n    }\n",
                    k, s->n, k);
 }
@@ -415,7 +415,8 @@ static char *harness_source(const int *usable)
 {
     harness_text t = {NULL, 0, 0, 0};
     unsigned i, k;
-    harness_append(&t, "#include <stddef.h>\n#include <stdio.h>\n");
+    harness_prelude(&t);
+    harness_append(&t, "#include <stddef.h>\n");
     for (i = 0; i < F_COUNT; i++)
         if (usable[i])
             harness_append(&t, "%s __attribute__((weak));\n", prototypes[i]);
@@ -423,14 +424,14 @@ static char *harness_source(const int *usable)
     for (i = 0; i < F_COUNT; i++)
         if (usable[i])
             harness_append(&t, "    if (%s == 0)\n"
-                               "        printf(\"\\nmissing %s\\n\");\n",
+                               "        rayo_say(\"missing %s\");\n",
                            names[i], names[i]);
     for (k = 0; k < VECTOR_CASES; k++)
         if (usable[vector_cases[k].function])
             write_vector_case(&t, &vector_cases[k], k);
     for (k = 0; k < RAY_CASES && usable[F_INTENSIDAD]; k++)
         write_ray_case(&t, &ray_cases[k], k);
-    harness_append(&t, "    return 0;\n}\n");
+    harness_append(&t, "    rayo_say(\"done\");\n    return 0;\n}\n");
     if (t.failed) {
         free(t.data);
         return NULL;

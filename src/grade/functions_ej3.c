@@ -525,7 +525,7 @@ static void put_vec(harness_text *t, const char *type, const char *name,
 
 static void announce(harness_text *t, const char *name, unsigned k)
 {
-    harness_append(t, "        printf(\"\\ncall %s %u\\n\");\n"
+    harness_append(t, "        rayo_say(\"call %s %u\");\n"
                       "        fflush(stdout);\n",
                    name, k);
 }
@@ -533,8 +533,8 @@ static void announce(harness_text *t, const char *name, unsigned k)
 static void result3(harness_text *t, const char *name, unsigned k,
                     const char *first, const char *v)
 {
-    harness_append(t, "        printf(\"\\nresult %s %u %%.9g %%.9g %%.9g "
-                      "%%.9g\\n\", (double)%s, %s.%c, %s.%c, %s.%c);\n"
+    harness_append(t, "        rayo_say(\"result %s %u %%.9g %%.9g %%.9g "
+                      "%%.9g\", (double)%s, %s.%c, %s.%c, %s.%c);\n"
                       "        fflush(stdout);\n",
                    name, k, first, v, v[0] == 'c' ? 'r' : 'x', v,
                    v[0] == 'c' ? 'g' : 'y', v, v[0] == 'c' ? 'b' : 'z');
@@ -593,12 +593,12 @@ static void write_value_case(harness_text *t, const value_case *v,
     case F_IMPRIMIR:
         put_vec(t, "color_t", "a", a);
         announce(t, name, k);
-        harness_append(t, "        printf(\"\\nout color_imprimir %u\\n\");\n"
+        harness_append(t, "        rayo_say(\"out color_imprimir %u\");\n"
                           "        fflush(stdout);\n"
                           "        color_imprimir(a);\n"
                           "        fflush(stdout);\n"
-                          "        printf(\"\\nend color_imprimir %u\\n"
-                          "\\nresult color_imprimir %u 0\\n\");\n"
+                          "        rayo_say(\"end color_imprimir %u\");\n"
+                          "        rayo_say(\"result color_imprimir %u 0\");\n"
                           "        fflush(stdout);\n",
                        k, k, k);
         break;
@@ -611,22 +611,22 @@ static void write_value_case(harness_text *t, const value_case *v,
             t,
             "        e = esfera_crear(a, %.9g, b, %.9g, %.9g);\n"
             "        if (e == NULL) {\n"
-            "            printf(\"\\nresult esfera_crear %u null\\n\");\n"
+            "            rayo_say(\"result esfera_crear %u null\");\n"
             "        } else {\n"
-            "            printf(\"\\nresult esfera_crear %u %%.9g %%.9g "
-            "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\\n\", e->centro.x, "
+            "            rayo_say(\"result esfera_crear %u %%.9g %%.9g "
+            "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\", e->centro.x, "
             "e->centro.y, e->centro.z, e->radio, e->color.r, e->color.g, "
             "e->color.b, e->ka, e->kd);\n"
             "            fflush(stdout);\n"
             "            if (esfera_destruir != 0) {\n"
-            "                printf(\"\\ncall esfera_destruir 0\\n\");\n"
+            "                rayo_say(\"call esfera_destruir %u\");\n"
             "                fflush(stdout);\n"
             "                esfera_destruir(e);\n"
-            "                printf(\"\\nresult esfera_destruir 0 0\\n\");\n"
+            "                rayo_say(\"result esfera_destruir %u 0\");\n"
             "            }\n"
             "        }\n"
             "        fflush(stdout);\n",
-            s, c[0], c[1], k, k);
+            s, c[0], c[1], k, k, k, k);
         break;
     case F_LUZ_CREAR:
         put_vec(t, "vector_t", "a", a);
@@ -637,22 +637,22 @@ static void write_value_case(harness_text *t, const value_case *v,
             t,
             "        l = luz_crear(a, b, %d);\n"
             "        if (l == NULL) {\n"
-            "            printf(\"\\nresult luz_crear %u null\\n\");\n"
+            "            rayo_say(\"result luz_crear %u null\");\n"
             "        } else {\n"
-            "            printf(\"\\nresult luz_crear %u %%.9g %%.9g %%.9g "
-            "%%.9g %%.9g %%.9g %%d\\n\", l->posicion.x, l->posicion.y, "
+            "            rayo_say(\"result luz_crear %u %%.9g %%.9g %%.9g "
+            "%%.9g %%.9g %%.9g %%d\", l->posicion.x, l->posicion.y, "
             "l->posicion.z, l->color.r, l->color.g, l->color.b, "
             "(int)l->es_puntual);\n"
             "            fflush(stdout);\n"
             "            if (luz_destruir != 0) {\n"
-            "                printf(\"\\ncall luz_destruir 0\\n\");\n"
+            "                rayo_say(\"call luz_destruir %u\");\n"
             "                fflush(stdout);\n"
             "                luz_destruir(l);\n"
-            "                printf(\"\\nresult luz_destruir 0 0\\n\");\n"
+            "                rayo_say(\"result luz_destruir %u 0\");\n"
             "            }\n"
             "        }\n"
             "        fflush(stdout);\n",
-            s != 0, k, k);
+            s != 0, k, k, k, k);
         break;
     default: /* F_DISTANCIA */
         harness_append(t, "        esfera_t e = {{%.9g, %.9g, %.9g}, %.9g, "
@@ -665,8 +665,8 @@ static void write_value_case(harness_text *t, const value_case *v,
                           "        double v;\n");
         announce(t, name, k);
         harness_append(t, "        v = esfera_distancia(&e, o, d, &p, &n);\n"
-                          "        printf(\"\\nresult esfera_distancia %u "
-                          "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\\n\", "
+                          "        rayo_say(\"result esfera_distancia %u "
+                          "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\", "
                           "v, p.x, p.y, p.z, n.x, n.y, n.z);\n"
                           "        fflush(stdout);\n",
                        k);
@@ -685,7 +685,7 @@ static const char agregar_source[] =
     "        void **before;\n"
     "        size_t n, i;\n"
     "        int r0, r1, r2, r, same = 1, guard;\n"
-    "        printf(\"\\ncall arreglo_agregar 0\\n\");\n"
+    "        rayo_say(\"call arreglo_agregar 0\");\n"
     "        fflush(stdout);\n"
     "        r0 = arreglo_agregar(&a, &x[0]);\n"
     "        r1 = arreglo_agregar(&a, &x[1]);\n"
@@ -694,14 +694,16 @@ static const char agregar_source[] =
     "                rayo_guard_intact();\n"
     "        for (i = 0; i < 3 && a.v != NULL && a.n == 3; i++)\n"
     "            same &= a.v[i] == (void *)&x[i];\n"
-    "        printf(\"\\nresult arreglo_agregar 0 %d %d %d %lu %d %d %d "
-    "%lu\\n\",\n"
+    "        rayo_say(\"result arreglo_agregar 0 %d %d %d %lu %d %d %d "
+    "%lu\",\n"
     "               r0, r1, r2, (unsigned long)a.n, a.v != NULL, same,\n"
     "               guard, (unsigned long)rayo_last_size);\n"
     "        fflush(stdout);\n"
-    "        if (a.v == NULL || a.n != 3 || !same)\n"
+    "        if (a.v == NULL || a.n != 3 || !same) {\n"
+    "            rayo_say(\"done\");\n"
     "            return 0;\n"
-    "        printf(\"\\ncall arreglo_agregar 1\\n\");\n"
+    "        }\n"
+    "        rayo_say(\"call arreglo_agregar 1\");\n"
     "        fflush(stdout);\n"
     "        for (i = 3; i < 67; i++) {\n"
     "            before = a.v;\n"
@@ -716,7 +718,7 @@ static const char agregar_source[] =
     "        }\n"
     "        same = a.v == before && a.v != NULL &&\n"
     "               memcmp(saved, a.v, n * sizeof *saved) == 0;\n"
-    "        printf(\"\\nresult arreglo_agregar 1 %u %d %lu %lu %d %d %d\\n"
+    "        rayo_say(\"result arreglo_agregar 1 %u %d %lu %lu %d %d %d"
     "\",\n"
     "               rayo_alloc_tries, r, (unsigned long)n,\n"
     "               (unsigned long)a.n, a.v == NULL, a.v == before, "
@@ -835,6 +837,7 @@ static char *harness_source(const int *usable)
 {
     harness_text t = {NULL, 0, 0, 0};
     unsigned i, k;
+    harness_prelude(&t);
     harness_append(&t, "#include <stddef.h>\n#include <stdio.h>\n"
                        "#include <stdlib.h>\n#include <string.h>\n%s%s%s",
                    mirror_types, harness_types, wrap_source);
@@ -845,7 +848,7 @@ static char *harness_source(const int *usable)
     for (i = 0; i < F_COUNT; i++)
         if (usable[i])
             harness_append(&t, "    if (%s == 0)\n"
-                               "        printf(\"\\nmissing %s\\n\");\n",
+                               "        rayo_say(\"missing %s\");\n",
                            functions[i].name, functions[i].name);
     for (k = 0; k < VALUE_CASES; k++)
         if (usable[value_cases[k].function])
@@ -854,7 +857,7 @@ static char *harness_source(const int *usable)
         write_ray_case(&t, &ray_cases[k], k);
     if (usable[F_AGREGAR])
         harness_append(&t, "%s", agregar_source);
-    harness_append(&t, "    return 0;\n}\n");
+    harness_append(&t, "    rayo_say(\"done\");\n    return 0;\n}\n");
     if (t.failed) {
         free(t.data);
         return NULL;
@@ -1428,8 +1431,12 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
             return grade_say(j.item, err, "%s: not called (it needs what "
                                           "%s returns)",
                              functions[f].name, functions[maker].name);
-        if (!harness_result_text(log, functions[f].name, 0, (char[4]){0},
-                                 4))
+        for (k = 0; k < VALUE_CASES; k++)
+            if (value_cases[k].function == maker &&
+                harness_result_text(log, functions[f].name, k, (char[4]){0},
+                                    4))
+                break;
+        if (k == VALUE_CASES)
             return RAYO_OK;
         return grade_say(j.item, err, "%s: called on what %s returned "
                                       "(valgrind checks what it frees)",

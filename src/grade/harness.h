@@ -5,12 +5,19 @@
  * building a harness program around the student's objects, running it
  * and reading what it printed.
  *
- * The harness protocol: before each call the generated program prints
+ * The harness protocol: before each call the generated program says
  * "call NAME K" and flushes, after it "result NAME K V1 V2 ..." (numbers
- * as %.9g, or words); "missing NAME" when a weak function is absent.
- * So a crash or a hang is pinned on the last call announced.  What the
- * cases are and what they expect is each exercise's own business
- * (functions_ej1.c, functions_ej2.c, functions_ej3.c).
+ * as %.9g, or words); "missing NAME" when a weak function is absent,
+ * "done" at the end of its main.  So a crash or a hang is pinned on the
+ * last call announced.  The student's code runs in the same process and
+ * writes to the same standard output, so each line the harness says
+ * begins with a per-run nonce that the grader writes into its standard
+ * input and that it reads before any of the student's code runs
+ * (harness_prelude); a "result" line without it, or a second result of
+ * one case, is the finding "the program wrote into the grader's
+ * channel".  What the cases are and what they expect is each
+ * exercise's own business (functions_ej1.c, functions_ej2.c,
+ * functions_ej3.c).
  *
  * Private to src/grade; not a public interface.
  */
@@ -22,6 +29,10 @@
 #include "grade_impl.h"
 
 #define HARNESS_REASON 400 /* room for one probe's reason */
+#define HARNESS_NONCE 32   /* hexadecimal digits of the channel's nonce */
+/* grade_outcome.status of a harness that exited with status 0 before
+   saying "done" (exit(0) in a student's function): not an exit status. */
+#define HARNESS_EXITED_EARLY 256
 
 /* A growing string; failed is set once memory runs out. */
 typedef struct harness_text {
@@ -69,8 +80,19 @@ rayo_status harness_build(grade_context *ctx, const char *source,
                           const char *const *extra, size_t extra_count,
                           int *ok, char **errors, rayo_error *err);
 
-/* Runs the harness under the program's limits: its standard output in
-   *log (allocated, NUL-terminated), how it ended in *outcome. */
+/* The start of every harness source: the headers it needs, the nonce
+   read from standard input (from .preinit_array, before any constructor
+   of the student's; standard input then closed), and
+   rayo_say(format, ...), which prints one line framed by the nonce and
+   flushes.  The generated code says every protocol line with it. */
+void harness_prelude(harness_text *t);
+
+/* Runs the harness under the program's limits with a fresh nonce on its
+   standard input: in *log (allocated, NUL-terminated) the protocol lines
+   it said, unframed (of each case the last result), and the student's
+   own output; how it ended in *outcome (HARNESS_EXITED_EARLY when it
+   exited 0 before "done").  Lines posing as the harness's fail the
+   criterion with the channel finding. */
 rayo_status harness_run(grade_context *ctx, char **log,
                         grade_outcome *outcome, rayo_error *err);
 

@@ -118,6 +118,7 @@ typedef struct child_fds {
     int out, err;            /* captures */
     int log, log_number;     /* the log pipe's write end, and its number */
     int json, name, file;    /* sandbox only; -1 when unused */
+    int in;                  /* standard input; -1: /dev/null */
 } child_fds;
 
 /* fd onto number, even when it already is that number (dup2 would
@@ -134,7 +135,7 @@ static void child(const char *program, char *const argv[],
                   char *const env[], const char *dir, const child_fds *fds,
                   const grade_limits *limits, long max_fd)
 {
-    int fd, moved[6], i;
+    int fd, moved[6], in = -1, i;
     long k;
     /* A session of its own: its own process group (killed as one), and
        no controlling terminal to push input into (TIOCSTI). */
@@ -156,7 +157,9 @@ static void child(const char *program, char *const argv[],
             }
         }
     }
-    fd = open("/dev/null", O_RDONLY);
+    if (fds->in >= 0 && (in = fcntl(fds->in, F_DUPFD, 20)) < 0)
+        _exit(126);
+    fd = in >= 0 ? in : open("/dev/null", O_RDONLY);
     if (fd < 0 || dup2(fd, 0) < 0)
         _exit(126);
     if (place(moved[0], 1) != 0 || place(moved[1], 2) != 0)
@@ -498,6 +501,7 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     fds.json = json != NULL ? fileno(json) : -1;
     fds.name = name != NULL ? fileno(name) : -1;
     fds.file = file != NULL ? fileno(file) : -1;
+    fds.in = run->input > 0 ? run->input : -1;
     pid = fork();
     if (pid < 0) {
         status = rayo_error_set(err, RAYO_ERR_IO, "grade: cannot start %s: %s",

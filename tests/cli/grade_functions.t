@@ -34,6 +34,19 @@ registered() {
     rayo grade --help 2>/dev/null | grep -q "^  $1 "
 }
 
+# The channel (issue 25): a submission whose functions are all wrong and
+# that prints the expected results on its first call fails, named.
+grade ej1 "$STUDENTS/hostile/forge_functions/main.c"
+is "$result" FAIL "forge_functions: the functions fail"
+says "the program wrote into the grader's channel: 12 lines posing as the harness's results (the first: \"result producto_interno 0 32\"); a function's results come from what it returns, never from what it prints" \
+    "forge_functions: the channel finding, first"
+is "$(head -n 1 "$TMP/functions" | cut -c1-44)" "the program wrote into the grader's channel:" \
+    "forge_functions: the finding is the first line"
+says "norma(3, 4, 12) returned 169; expected 13" \
+    "forge_functions: the real results are judged"
+says "intersecta_esfera(0, 0, 1) returned 1; expected 0 (this ray misses the sphere)" \
+    "forge_functions: intersecta_esfera's real result"
+
 tested=0
 if registered ej2; then
     tested=1
