@@ -39,6 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../course/course_impl.h"
 #include "harness.h"
 #include "harness_math.h"
 
@@ -240,31 +241,14 @@ typedef struct scene {
 } scene;
 
 #define WHITE {1, 1, 1}
-#define ROW_TOP(x, kd) {{x, 2.5, 4.3}, 0.3, WHITE, 1, kd}
-#define ROW_MID(x, ka) {{x, 1.5, 4}, 0.3, WHITE, ka, 1}
+
+/* Scene 0 is the course's scene 3, filled from the course module
+   (course_scenes.c, the one copy of its numbers) by scene_of. */
+#define COURSE_SCENE 0
 
 static const scene scenes[] = {
-    {"the course's scene 3",
-     25,
-     4,
-     {{{0, 1, 2.4}, 0.3, WHITE, 1, 1},
-      {{0, -0.4, 3}, 1, WHITE, 1, 1},
-      {{-2, -0.6, 3}, 0.3, {1, 0, 0}, 1, 0.8},
-      {{-1.73, -0.6, 2}, 0.3, {1, 1, 0}, 1, 1},
-      {{-1, -0.6, 1.26}, 0.3, {0, 1, 0}, 1, 1},
-      {{0, -0.6, 1}, 0.3, WHITE, 1, 1},
-      {{1, -0.6, 1.26}, 0.3, {0, 1, 1}, 1, 1},
-      {{1.73, -0.6, 2}, 0.3, {0, 0, 1}, 1, 1},
-      {{2, -0.6, 3}, 0.3, {1, 0, 1}, 1, 1},
-      ROW_TOP(-3, 0), ROW_TOP(-2, 0.16), ROW_TOP(-1, 0.33),
-      ROW_TOP(0, 0.5), ROW_TOP(1, 0.66), ROW_TOP(2, 0.83), ROW_TOP(3, 1),
-      ROW_MID(-3, 0), ROW_MID(-2, 0.16), ROW_MID(-1, 0.33),
-      ROW_MID(0, 0.5), ROW_MID(1, 0.66), ROW_MID(2, 0.83), ROW_MID(3, 1)},
-     {{{0, 1, 0}, {0.2, 0.2, 0.2}, 0},
-      {{-2, 10, 2.5}, {0.9, 0, 0}, 1},
-      {{2, 10, 2.5}, {0, 0.9, 0}, 1},
-      {{0, 10, 5}, {0, 0, 0.9}, 1}},
-     {0.05, 0.05, 0.05}},
+    {"the course's scene 3", 0, 0, {{{0, 0, 0}, 0, {0, 0, 0}, 0, 0}},
+     {{{0, 0, 0}, {0, 0, 0}, 0}}, {0, 0, 0}},
     {"a red sphere (0, 0, 3) r 1 first in the array, a white one "
      "(0, 0, 1) r 0.2 second, a directional light towards the camera",
      2,
@@ -362,12 +346,40 @@ static double sphere_t(const double *c, double r, const double *o,
     return INFINITY;
 }
 
+/* Scene index as written (in double): the course's from its module. */
+static void scene_of(unsigned index, scene *s)
+{
+    const rayo_course_data *data = rayo_course_data_of(RAYO_COURSE_EJ3);
+    size_t i;
+    *s = scenes[index];
+    if (index != COURSE_SCENE || data == NULL)
+        return;
+    s->spheres = data->ball_count < MAX_SPHERES ? data->ball_count
+                                                : MAX_SPHERES;
+    s->lights = data->lamp_count < MAX_LIGHTS ? data->lamp_count
+                                              : MAX_LIGHTS;
+    for (i = 0; i < s->spheres; i++) {
+        const rayo_course_ball *b = &data->balls[i];
+        memcpy(s->s[i].c, b->center, sizeof s->s[i].c);
+        s->s[i].r = b->radius;
+        memcpy(s->s[i].color, b->color, sizeof s->s[i].color);
+        s->s[i].ka = b->ka;
+        s->s[i].kd = b->kd;
+    }
+    for (i = 0; i < s->lights; i++) {
+        memcpy(s->l[i].v, data->lamps[i].vector, sizeof s->l[i].v);
+        memcpy(s->l[i].color, data->lamps[i].color, sizeof s->l[i].color);
+        s->l[i].point = data->lamps[i].point != 0;
+    }
+    memcpy(s->ambient, data->ambient, sizeof s->ambient);
+}
+
 /* The scene of a ray case as the harness passes it: floats, directions
    normalised. */
 static void ray_scene(const ray_case *rc, scene *s, double *d)
 {
     size_t i;
-    *s = scenes[rc->scene];
+    scene_of(rc->scene, s);
     for (i = 0; i < s->spheres; i++) {
         vfl(s->s[i].c, s->s[i].c);
         vfl(s->s[i].color, s->s[i].color);
@@ -865,6 +877,15 @@ static char *harness_source(const int *usable)
     return t.data;
 }
 
+char *grade_functions_ej3_source(void)
+{
+    int usable[F_COUNT];
+    unsigned i;
+    for (i = 0; i < F_COUNT; i++)
+        usable[i] = 1;
+    return harness_source(usable);
+}
+
 /* ---- what the student reads ---- */
 
 static void describe_value_case(unsigned k, char *out, size_t room)
@@ -1279,7 +1300,9 @@ static void colour_text(const double *c, char *out, size_t room)
 static void sphere_text(const ray_case *rc, size_t i, char *out,
                         size_t room)
 {
-    const sphere *s = &scenes[rc->scene].s[i];
+    scene whole;
+    const sphere *s = &whole.s[i];
+    scene_of(rc->scene, &whole);
     snprintf(out, room, "the sphere at (%g, %g, %g) of colour (%g, %g, %g)",
              s->c[0], s->c[1], s->c[2], s->color[0], s->color[1],
              s->color[2]);

@@ -121,6 +121,12 @@ rayo_status harness_judge_ending(grade_context *ctx, const char *log,
 /* Escapes control bytes and bounds the length: for untrusted text. */
 void harness_clean(const char *in, size_t length, char *out, size_t room);
 
+/* The harness source of ej2 and ej3 with every function called
+   (allocated; NULL when memory runs out): for the tests, which check
+   that the course's scene it passes is the course module's. */
+char *grade_functions_ej2_source(void);
+char *grade_functions_ej3_source(void);
+
 /* The step for each exercise (functions_ejN.c). */
 rayo_status grade_functions_ej1(grade_context *ctx, rayo_error *err);
 rayo_status grade_functions_ej2(grade_context *ctx, rayo_error *err);

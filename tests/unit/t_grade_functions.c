@@ -13,10 +13,12 @@
 #define _XOPEN_SOURCE 700
 
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "../../src/course/course_impl.h"
 #include "../../src/grade/grade_impl.h"
 #include "../../src/grade/harness.h"
 #include "rayo.h"
@@ -197,6 +199,140 @@ static void test_notes(void)
     is_string(type, "", "note: clang's gives no type");
 }
 
+
+/* p past spaces, commas and newlines. */
+static const char *skip(const char *p)
+{
+    while (*p == ' ' || *p == ',' || *p == '\n')
+        p++;
+    return p;
+}
+
+static int same_float(double got, double want)
+{
+    return (float)got == (float)want; /* %.9g gives a float back exactly */
+}
+
+/* The harness passes the course's scene 3 exactly as the course module
+   holds it: as many spheres and lights, every number the same (as a
+   float), in the same order; and scene 2 the same way. */
+static void test_course_scenes(void)
+{
+    const rayo_course_data *d3 = rayo_course_data_of(RAYO_COURSE_EJ3);
+    const rayo_course_data *d2 = rayo_course_data_of(RAYO_COURSE_EJ2);
+    char *source = grade_functions_ej3_source();
+    const char *p;
+    size_t n = 0, bad = 0, i;
+    unsigned long count = 0;
+    ok(source != NULL, "ej3 harness source");
+    p = source != NULL ? strstr(source, "static esfera_t es[] = {") : NULL;
+    ok(p != NULL, "ej3: the first ray case has an array of spheres");
+    if (p != NULL) {
+        p = skip(p + strlen("static esfera_t es[] = {"));
+        while (*p == '{') {
+            double v[9];
+            int used = 0;
+            if (sscanf(p, "{{%lf, %lf, %lf}, %lf, {%lf, %lf, %lf}, %lf, "
+                          "%lf}%n",
+                       &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6],
+                       &v[7], &v[8], &used) != 9)
+                break;
+            if (n < d3->ball_count) {
+                const rayo_course_ball *b = &d3->balls[n];
+                double want[9] = {b->center[0], b->center[1], b->center[2],
+                                  b->radius,    b->color[0],  b->color[1],
+                                  b->color[2],  b->ka,        b->kd};
+                for (i = 0; i < 9; i++)
+                    if (!same_float(v[i], want[i])) {
+                        bad++;
+                        printf("# sphere %zu value %zu: %.9g, not %.9g\n", n,
+                               i, v[i], want[i]);
+                    }
+            }
+            n++;
+            p = skip(p + used);
+        }
+        is_int((long)n, (long)d3->ball_count,
+               "ej3: as many spheres as the course's scene 3 (%zu)",
+               d3->ball_count);
+        is_int((long)bad, 0, "ej3: every sphere's numbers are the course's");
+        p = strstr(p, "arreglo_t esferas = {ev, ");
+        ok(p != NULL && sscanf(p, "arreglo_t esferas = {ev, %lu}", &count) ==
+                            1 &&
+               count == d3->ball_count,
+           "ej3: the array's n is the count");
+        p = strstr(source, "static luz_t ls[] = {");
+        n = bad = 0;
+        if (p != NULL)
+            p = skip(p + strlen("static luz_t ls[] = {"));
+        while (p != NULL && *p == '{') {
+            double v[6];
+            int point = -1, used = 0;
+            if (sscanf(p, "{{%lf, %lf, %lf}, {%lf, %lf, %lf}, %d}%n", &v[0],
+                       &v[1], &v[2], &v[3], &v[4], &v[5], &point,
+                       &used) != 7)
+                break;
+            if (n < d3->lamp_count) {
+                const rayo_course_lamp *l = &d3->lamps[n];
+                double length = sqrt(l->vector[0] * l->vector[0] +
+                                     l->vector[1] * l->vector[1] +
+                                     l->vector[2] * l->vector[2]);
+                for (i = 0; i < 3; i++)
+                    bad += !same_float(v[i], l->point ? l->vector[i]
+                                                      : l->vector[i] /
+                                                            length) +
+                           !same_float(v[3 + i], l->color[i]);
+                bad += point != (l->point != 0);
+            }
+            n++;
+            p = skip(p + used);
+        }
+        is_int((long)n, (long)d3->lamp_count, "ej3: as many lights");
+        is_int((long)bad, 0, "ej3: every light's numbers are the course's");
+    }
+    free(source);
+
+    source = grade_functions_ej2_source();
+    p = source != NULL ? strstr(source, "static const float cs[][3] = {")
+                       : NULL;
+    ok(p != NULL, "ej2: the first ray case has an array of centres");
+    n = bad = 0;
+    if (p != NULL) {
+        const char *r;
+        p = skip(p + strlen("static const float cs[][3] = {"));
+        while (*p == '{') {
+            double v[3];
+            int used = 0;
+            if (sscanf(p, "{%lf, %lf, %lf}%n", &v[0], &v[1], &v[2],
+                       &used) != 3)
+                break;
+            for (i = 0; i < 3 && n < d2->ball_count; i++)
+                bad += !same_float(v[i], d2->balls[n].center[i]);
+            n++;
+            p = skip(p + used);
+        }
+        r = strstr(p, "static const float rs[] = {");
+        if (r != NULL) {
+            r += strlen("static const float rs[] = {");
+            for (i = 0; i < d2->ball_count; i++) {
+                char *end;
+                double v = strtod(skip(r), &end);
+                bad += end == r || !same_float(v, d2->balls[i].radius);
+                r = end;
+            }
+        }
+        is_int((long)n, (long)d2->ball_count,
+               "ej2: as many spheres as the course's scene 2");
+        is_int((long)bad, 0, "ej2: every centre and radius is the course's");
+        p = strstr(p, "computar_intensidad(cs, rs, ");
+        ok(p != NULL && sscanf(p, "computar_intensidad(cs, rs, %lu,",
+                               &count) == 1 &&
+               count == d2->ball_count,
+           "ej2: n_esferas is the count");
+    }
+    free(source);
+}
+
 static void test_ej2(void)
 {
     expect_pass(RAYO_COURSE_EJ2, "ej2_right.c", 8,
@@ -336,6 +472,7 @@ int main(void)
 {
     test_log();
     test_notes();
+    test_course_scenes();
     test_ej2();
     test_ej3();
     return tap_done();
