@@ -163,7 +163,7 @@ static rayo_status judge(grade_context *ctx, const function_spec *f,
                          const char *log, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
-    char call[256];
+    char call[256], line[512];
     unsigned c, wrong = 0;
     rayo_status status = RAYO_OK;
     if (harness_missing(log, f->name))
@@ -181,7 +181,16 @@ static rayo_status judge(grade_context *ctx, const function_spec *f,
         if (f->returns_int ? got == want : close_enough(got, want))
             continue;
         wrong++;
-        if (f->returns_int)
+        if (!f->returns_int &&
+            harness_not_finite(call, &got, 1,
+                               strcmp(f->name, "norma") == 0
+                                   ? "the square root of a negative sum "
+                                     "(a sum of squares is never negative: "
+                                     "check the signs) or 0/0"
+                                   : HARNESS_NAN_ARITHMETIC,
+                               NULL, line, sizeof line))
+            status = grade_fail(item, err, "%s", line);
+        else if (f->returns_int)
             status = grade_fail(item, err, "%s returned %g; expected %g (%s)",
                                 call, got, want,
                                 want != 0 ? "this ray does hit the sphere"

@@ -814,12 +814,29 @@ static rayo_status say_signature(rayo_grade_item *item, unsigned i,
                       names[i], prototypes[i], reason);
 }
 
+/* What most likely makes function i return a NaN. */
+static const char *nan_cause(unsigned i)
+{
+    switch (i) {
+    case F_NORMA:
+        return "the square root of a negative sum (a sum of squares is "
+               "never negative: check the signs) or 0/0";
+    case F_NORMALIZAR:
+    case F_NORMAL:
+        return HARNESS_NAN_NORMAL;
+    case F_DISTANCIA:
+        return HARNESS_NAN_DISCRIMINANT;
+    default:
+        return HARNESS_NAN_ARITHMETIC;
+    }
+}
+
 /* Judges function i: 0 when the log ends before its calls are done. */
 static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
                          rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
-    char call[512];
+    char call[512], line[1024];
     unsigned k, cases = 0, wrong = 0, unsaid = 0, said = 0;
     rayo_status status = RAYO_OK;
     if (harness_missing(log, names[i]))
@@ -840,8 +857,25 @@ static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
             continue;
         }
         describe_vector_case(k, call, sizeof call);
-        status = say_vector(item, &vector_cases[k], call, got[0], got + 1,
-                            err);
+        if (harness_not_finite(call, i == F_PRODUCTO || i == F_NORMA ||
+                                             i == F_DISTANCIA
+                                         ? got
+                                         : got + 1,
+                               i == F_PRODUCTO || i == F_NORMA ||
+                                       i == F_DISTANCIA
+                                   ? 1
+                                   : 3,
+                               nan_cause(i),
+                               i == F_DISTANCIA
+                                   ? "the statement's INFINITO is FLT_MAX, the "
+                                     "largest "
+                                     "float, not an infinity"
+                                   : NULL,
+                               line, sizeof line))
+            status = grade_fail(item, err, "%s", line);
+        else
+            status = say_vector(item, &vector_cases[k], call, got[0],
+                                got + 1, err);
         if (status != RAYO_OK)
             return status;
     }
@@ -861,14 +895,24 @@ static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
             wrong++;
             /* One line per mistake recognised; the same one again
                counted. */
-            mistake = ray_mistake(rc, got[k], score);
+            mistake = got[k] == HARNESS_INT_MIN ? M_COUNT + 1
+                                                : ray_mistake(rc, got[k],
+                                                              score);
             if (said & (1u << mistake) || wrong > SAID_PER_FUNCTION + 2) {
                 unsaid++;
                 continue;
             }
             said |= 1u << mistake;
             describe_ray_case(k, call, sizeof call);
-            status = say_ray(item, rc, call, got[k], mistake, err);
+            if (mistake == M_COUNT + 1)
+                status = grade_fail(item, err, "%s returned -2147483648, "
+                                               "what a NaN (not a number) "
+                                               "or a value past the int "
+                                               "range becomes through "
+                                               "(int): likely %s",
+                                    call, HARNESS_NAN_SHADING);
+            else
+                status = say_ray(item, rc, call, got[k], mistake, err);
             if (status != RAYO_OK)
                 return status;
         }

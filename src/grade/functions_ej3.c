@@ -994,6 +994,24 @@ static rayo_status wrong_line(judging *j, rayo_error *err,
     return grade_fail(j->item, err, "%s", line);
 }
 
+/* What most likely makes function f return a NaN. */
+static const char *nan_cause(unsigned f)
+{
+    switch (f) {
+    case F_NORMA:
+        return "the square root of a negative sum (a sum of squares is "
+               "never negative: check the signs) or 0/0";
+    case F_NORMALIZAR:
+        return HARNESS_NAN_NORMAL;
+    case F_DISTANCIA:
+        return HARNESS_NAN_DISCRIMINANT;
+    case F_INTENSIDAD:
+        return HARNESS_NAN_SHADING;
+    default:
+        return HARNESS_NAN_ARITHMETIC;
+    }
+}
+
 static rayo_status judge_value(judging *j, unsigned k, rayo_error *err)
 {
     const value_case *v = &value_cases[k];
@@ -1008,6 +1026,29 @@ static rayo_status judge_value(judging *j, unsigned k, rayo_error *err)
     if (count < 0)
         return RAYO_ERR_CANCELLED; /* it ended before: said elsewhere */
     j->cases++;
+    {
+        int scalar = v->function == F_PRODUCTO || v->function == F_NORMA ||
+                     v->function == F_DISTANCIA;
+        char line[1024];
+        if (v->function != F_IMPRIMIR && v->function != F_ESFERA_CREAR &&
+            v->function != F_LUZ_CREAR && count >= 4 &&
+            harness_not_finite(call, scalar ? got : got + 1, scalar ? 1 : 3,
+                               nan_cause(v->function),
+                               v->function == F_DISTANCIA
+                                   ? "the statement's INFINITO is FLT_MAX, the "
+                                     "largest "
+                                     "float, not an infinity"
+                                   : NULL,
+                               line, sizeof line))
+            return wrong_line(j, err, "%s", line);
+        if (v->function == F_DISTANCIA && count >= 7 &&
+            !is_infinito(got[0]) &&
+            (harness_not_finite(call, got + 1, 3, HARNESS_NAN_ARITHMETIC,
+                                NULL, line, sizeof line) ||
+             harness_not_finite(call, got + 4, 3, HARNESS_NAN_NORMAL, NULL,
+                                line, sizeof line)))
+            return wrong_line(j, err, "%s (in *punto or *normal)", line);
+    }
     switch (v->function) {
     case F_PRODUCTO:
     case F_NORMA: {
@@ -1142,6 +1183,14 @@ static rayo_status judge_imprimir(judging *j, unsigned k, rayo_error *err)
     for (i = 0; i < 3; i++)
         want[i] = channel_byte(a[i]);
     snprintf(expect, sizeof expect, "%d %d %d", want[0], want[1], want[2]);
+    if (strstr(shown, "nan") != NULL || strstr(shown, "inf") != NULL ||
+        strstr(shown, "-2147483648") != NULL)
+        return wrong_line(j, err, "%s printed \"%s\"; expected \"%s\": "
+                                  "nan and inf (printed by %%f) and "
+                                  "-2147483648 (a NaN or a value past the "
+                                  "int range through (int)) come from a "
+                                  "result that is not a number: likely %s",
+                          call, shown, expect, HARNESS_NAN_ARITHMETIC);
     if (sscanf(start, "%d %d %d%n", &got[0], &got[1], &got[2], &used) != 3 ||
         start + used > end || strspn(start + used, " \t\n") <
                                   (size_t)(end - start - used))
@@ -1402,6 +1451,7 @@ static rayo_status say_ray(judging *j, unsigned c, const double *got,
 static rayo_status judge_rays(judging *j, rayo_error *err)
 {
     double got[RAY_CASES][3];
+    char call[512], line[1024];
     unsigned c, said = 0, score[M_COUNT];
     rayo_status status = RAYO_OK;
     for (c = 0; c < RAY_CASES; c++) {
@@ -1415,6 +1465,19 @@ static rayo_status judge_rays(judging *j, rayo_error *err)
         const ray_case *rc = &ray_cases[c];
         int mistake;
         j->cases++;
+        if (harness_not_finite("", got[c], 3, "", NULL, line, sizeof line)) {
+            if (said & (1u << (M_COUNT + 1))) {
+                j->wrong++;
+                j->unsaid++;
+                continue;
+            }
+            said |= 1u << (M_COUNT + 1);
+            describe_ray_case(c, call, sizeof call);
+            harness_not_finite(call, got[c], 3, HARNESS_NAN_SHADING, NULL,
+                               line, sizeof line);
+            status = wrong_line(j, err, "%s", line);
+            continue;
+        }
         if (same_colour(got[c], shade(rc, M_NONE).c))
             continue;
         mistake = ray_mistake(rc, got[c], score);

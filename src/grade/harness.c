@@ -14,6 +14,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <math.h>
 #include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -117,6 +118,52 @@ void harness_clean(const char *in, size_t length, char *out, size_t room)
         }
     }
     out[n] = '\0';
+}
+
+int harness_not_finite(const char *call, const double *v, size_t n,
+                       const char *nan_cause, const char *inf_cause,
+                       char *out, size_t room)
+{
+    size_t i, nans = 0, infs = 0;
+    char text[128];
+    for (i = 0; i < n; i++) {
+        nans += isnan(v[i]) != 0;
+        infs += isinf(v[i]) != 0;
+    }
+    if (nans == 0 && infs == 0)
+        return 0;
+    if (inf_cause == NULL)
+        inf_cause = "likely a division by 0";
+    if (n == 1) {
+        snprintf(text, sizeof text, "%g", v[0]);
+        if (nans > 0)
+            snprintf(out, room, "%s returned nan (not a number): likely %s",
+                     call, nan_cause);
+        else
+            snprintf(out, room, "%s returned %s (infinity): %s", call, text,
+                     inf_cause);
+        return 1;
+    }
+    {
+        char part[3][32];
+        for (i = 0; i < 3; i++) {
+            double x = i < n ? v[i] : 0;
+            if (isnan(x))
+                snprintf(part[i], sizeof part[i], "nan");
+            else
+                snprintf(part[i], sizeof part[i], "%.7g", x);
+        }
+        snprintf(text, sizeof text, "(%s, %s, %s)", part[0], part[1],
+                 part[2]);
+    }
+    if (nans > 0)
+        snprintf(out, room, "%s returned %s, with nan (not a number) in it: "
+                            "likely %s",
+                 call, text, nan_cause);
+    else
+        snprintf(out, room, "%s returned %s, with an infinity in it: %s",
+                 call, text, inf_cause);
+    return 1;
 }
 
 void harness_first_error(const char *errors, char *out, size_t room)

@@ -118,6 +118,27 @@ rayo_status harness_judge_ending(grade_context *ctx, const char *log,
                                  const grade_outcome *outcome,
                                  harness_describe describe, rayo_error *err);
 
+/* The likely causes of a NaN a function returns, by kind of function. */
+#define HARNESS_NAN_ARITHMETIC "0/0 or the square root of a negative number"
+#define HARNESS_NAN_DISCRIMINANT                                            \
+    "the square root of a negative discriminant (delta < 0: the ray "       \
+    "misses; test it before taking the root) or 0/0"
+#define HARNESS_NAN_NORMAL                                                  \
+    "a vector of length 0 divided by its length (0/0)"
+#define HARNESS_NAN_SHADING                                                 \
+    "0/0, the square root of a negative discriminant or a normal of "      \
+    "length 0"
+#define HARNESS_INT_MIN -2147483648.0
+
+/* When one of v[0..n-1] (n 1: a number, 3: a vector or colour) is NaN
+   or infinite: the whole reason line for call in out ("... returned nan
+   (not a number): likely CAUSE"), nan_cause for a NaN and inf_cause
+   for an infinity (a whole clause; NULL: "likely a division by 0"),
+   and 1; else 0. */
+int harness_not_finite(const char *call, const double *v, size_t n,
+                       const char *nan_cause, const char *inf_cause,
+                       char *out, size_t room);
+
 /* Escapes control bytes and bounds the length: for untrusted text. */
 void harness_clean(const char *in, size_t length, char *out, size_t room);
 

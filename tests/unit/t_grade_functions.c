@@ -333,6 +333,79 @@ static void test_course_scenes(void)
     free(source);
 }
 
+/* Every function of names has a reason line of its own, beginning with
+   its name, that contains needle (or needle2 when not NULL). */
+static void expect_every(rayo_course_exercise course, const char *fixture,
+                         const char *const *names, const char *needle,
+                         const char *needle2)
+{
+    graded g;
+    size_t f, i, missing = 0;
+    grade_fixture(course, fixture, &g);
+    is_int(item(&g)->result, RAYO_GRADE_FAIL, "%s: functions fail",
+           fixture);
+    for (f = 0; names[f] != NULL; f++) {
+        int found = 0;
+        for (i = 0; i < item(&g)->line_count && !found; i++) {
+            const char *line = item(&g)->lines[i];
+            found = starts(line, names[f]) &&
+                    (line[strlen(names[f])] == '(' ||
+                     line[strlen(names[f])] == ' ') &&
+                    (strstr(line, needle) != NULL ||
+                     (needle2 != NULL && strstr(line, needle2) != NULL));
+        }
+        if (!found) {
+            printf("# %s: no line for %s\n", fixture, names[f]);
+            missing++;
+        }
+    }
+    is_int((long)missing, 0, "%s: every function's comparison says '%s'",
+           fixture, needle);
+    if (missing > 0)
+        show(&g);
+    rayo_grade_report_free(&g.report);
+}
+
+/* NaN and infinity in every function's comparison. */
+static void test_not_finite(void)
+{
+    static const char *const ej2[] = {
+        "producto_interno", "norma",          "normalizar",
+        "resta",            "interpolar_recta", "distancia_esfera",
+        "normal_esfera",    NULL};
+    static const char *const ej3[] = {
+        "vector_producto_interno", "vector_norma",   "vector_resta",
+        "vector_interpolar_recta", "vector_normalizar", "color_sumar",
+        "color_absorber",          "esfera_distancia", "computar_intensidad",
+        NULL};
+    static const char *const ej2_int[] = {"computar_intensidad", NULL};
+    static const char *const ej3_print[] = {"color_imprimir", NULL};
+    expect_every(RAYO_COURSE_EJ2, "ej2_nan.c", ej2, "nan (not a number)",
+                 NULL);
+    expect_every(RAYO_COURSE_EJ2, "ej2_inf.c", ej2, " (infinity): ",
+                 "with an infinity in it");
+    expect_every(RAYO_COURSE_EJ2, "ej2_nan.c", ej2_int,
+                 "returned -2147483648, what a NaN (not a number) or a "
+                 "value past the int range becomes through (int)",
+                 NULL);
+    expect_every(RAYO_COURSE_EJ3, "ej3_nan.c", ej3, "nan (not a number)",
+                 NULL);
+    expect_every(RAYO_COURSE_EJ3, "ej3_inf.c", ej3, " (infinity): ",
+                 "with an infinity in it");
+    expect_every(RAYO_COURSE_EJ3, "ej3_nan.c", ej3_print,
+                 "printed \"-2147483648 -2147483648 -2147483648\"", NULL);
+    expect_fail(RAYO_COURSE_EJ2, "ej2_nan.c",
+                "distancia_esfera((0, 0, 2), 0.8, (0, 0, 0), (0, 0, 1)) "
+                "returned nan (not a number): likely the square root of a "
+                "negative discriminant (delta < 0: the ray misses; test it "
+                "before taking the root) or 0/0");
+    expect_fail(RAYO_COURSE_EJ3, "ej3_inf.c",
+                "esfera_distancia(a sphere at (0, 0, 2) r 0.8, (0, 0, 0), "
+                "(0, 0, 1), &punto, &normal) returned inf (infinity): the "
+                "statement's INFINITO is FLT_MAX, the largest float, not an "
+                "infinity");
+}
+
 static void test_ej2(void)
 {
     expect_pass(RAYO_COURSE_EJ2, "ej2_right.c", 8,
@@ -473,6 +546,7 @@ int main(void)
     test_log();
     test_notes();
     test_course_scenes();
+    test_not_finite();
     test_ej2();
     test_ej3();
     return tap_done();
