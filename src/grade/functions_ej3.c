@@ -972,6 +972,10 @@ typedef struct judging {
     const char *log;
     unsigned wrong, unsaid, cases;
     unsigned limit; /* wrong cases given a line */
+    /* Readings of an ambiguous statement seen, each accepted and named:
+       a sphere beyond a point light casts a shadow; color_imprimir
+       rounds 255 c. */
+    int beyond_light, between_only, rounds;
 } judging;
 
 static rayo_status wrong_line(judging *j, rayo_error *err,
@@ -1215,11 +1219,10 @@ static rayo_status judge_imprimir(judging *j, unsigned k, rayo_error *err)
             return wrong_line(j, err, "%s printed \"%s\"; expected \"%s\": "
                                       "a component above 1 prints as 255",
                               call, shown, expect);
-        if (got[i] == (int)floor(255 * a[i] + 0.5))
-            return wrong_line(j, err, "%s printed \"%s\"; expected \"%s\": "
-                                      "255 x %.7g was rounded; the byte is "
-                                      "the integer part of 255 c",
-                              call, shown, expect, a[i]);
+        if (got[i] == (int)floor(255 * a[i] + 0.5)) {
+            j->rounds = 1; /* a reading, accepted: judge() names it */
+            continue;
+        }
         if (got[i] == (int)floor(256 * a[i]))
             return wrong_line(j, err, "%s printed \"%s\"; expected \"%s\": "
                                       "scaled by 256; 0..1 scales to "
@@ -1478,8 +1481,16 @@ static rayo_status judge_rays(judging *j, rayo_error *err)
             status = wrong_line(j, err, "%s", line);
             continue;
         }
-        if (same_colour(got[c], shade(rc, M_NONE).c))
+        if (same_colour(got[c], shade(rc, M_NONE).c)) {
+            if (!same_colour(shade(rc, M_NONE).c,
+                             shade(rc, M_BEYOND_LIGHT).c))
+                j->between_only = 1; /* the other reading, named too */
             continue;
+        }
+        if (same_colour(got[c], shade(rc, M_BEYOND_LIGHT).c)) {
+            j->beyond_light = 1; /* a reading, accepted: judge() names it */
+            continue;
+        }
         mistake = ray_mistake(rc, got[c], score);
         /* One line per mistake recognised; the same one again counted. */
         if (said & (1u << mistake)) {
@@ -1505,6 +1516,7 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
     j.item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
     j.log = log;
     j.wrong = j.unsaid = j.cases = 0;
+    j.beyond_light = j.between_only = j.rounds = 0;
     j.limit = f == F_INTENSIDAD ? SAID_PER_FUNCTION + 2 : SAID_PER_FUNCTION;
     if (harness_missing(log, functions[f].name))
         return grade_fail(j.item, err, "%s: not defined; the statement asks "
@@ -1548,6 +1560,36 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
         status = grade_say(j.item, err, "%s: right on %u known input%s",
                            functions[f].name, j.cases,
                            j.cases == 1 ? "" : "s");
+    if (status == RAYO_OK && j.beyond_light)
+        status = grade_say(j.item, err, "computar_intensidad: a sphere "
+                                        "beyond a point light casts a "
+                                        "shadow: the statement's rule (an "
+                                        "object in the light's direction "
+                                        "casts a shadow) read to the "
+                                        "letter, accepted; the other "
+                                        "reading, a shadow only from a "
+                                        "sphere between the point and the "
+                                        "light, is accepted too, and the "
+                                        "course's scenes look the same "
+                                        "either way");
+    if (status == RAYO_OK && j.between_only && !j.beyond_light)
+        status = grade_say(j.item, err, "computar_intensidad: only a sphere "
+                                        "between the point and a point "
+                                        "light casts a shadow, not one "
+                                        "beyond the light: one of the "
+                                        "statement's two readings, "
+                                        "accepted; the other, to the "
+                                        "letter (an object in the light's "
+                                        "direction casts a shadow), is "
+                                        "accepted too, and the course's "
+                                        "scenes look the same either way");
+    if (status == RAYO_OK && j.rounds)
+        status = grade_say(j.item, err, "color_imprimir: rounds 255 c to "
+                                        "the nearest integer (0.999 prints "
+                                        "255) instead of taking its integer "
+                                        "part (254): a reading of the "
+                                        "statement's 'scale 0..1 to the "
+                                        "integers 0..255', accepted");
     else if (status == RAYO_OK && j.unsaid > 0)
         status = grade_fail(j.item, err, "%s: wrong on %u more of its %u "
                                          "known inputs",
