@@ -95,6 +95,12 @@ is "$results" "compile=FAIL functions=skipped run=skipped output=skipped image=s
 says 'unused variable' "-Werror: the compiler's first error is quoted"
 says 'that -Werror turns into an error' "-Werror: explained"
 
+grade macro_parameter --no-valgrind
+is "$results" "compile=FAIL functions=skipped run=skipped output=skipped image=skipped valgrind=skipped" \
+    "a parameter named as a macro: compile fails"
+says "the first real error is at [^ ]*/macro_parameter/main\.c:23:30, where the name CX is one of the file's macros \(#define CX\): the preprocessor puts the macro's value in its place, so a parameter or a variable cannot have that name; rename it" \
+    "a parameter named as a macro: the hint points at the parameter"
+
 mkdir "$TMP/scratch"
 TMPDIR="$TMP/scratch" grade infinite_loop --no-valgrind --timeout 1
 is "$results" "compile=pass functions=pass run=FAIL output=skipped image=skipped valgrind=skipped" \
