@@ -1727,9 +1727,10 @@ static rayo_status probe_functions(grade_context *ctx, size_t i,
         memcpy(said, reason, sizeof said);
         if (type[0] != '\0')
             snprintf(reason, HARNESS_REASON, "the file has %s", type);
-        else
-            snprintf(reason, HARNESS_REASON, "the compiler says: %.300s",
-                     said);
+        else {
+            harness_shorten(said, 300);
+            snprintf(reason, HARNESS_REASON, "the compiler says: %s", said);
+        }
     }
     free(messages);
     free(t.data);

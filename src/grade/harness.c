@@ -166,15 +166,62 @@ int harness_not_finite(const char *call, const double *v, size_t n,
     return 1;
 }
 
+/* 1 when the quotes in text[0..n) are not all closed: ASCII ' and "
+   taken as pairs, UTF-8 left and right single quotes matched. */
+static int quotes_open(const char *text, size_t n)
+{
+    size_t i, single = 0, dbl = 0;
+    long curly = 0;
+    for (i = 0; i < n; i++) {
+        if (text[i] == '\'')
+            single++;
+        else if (text[i] == '"')
+            dbl++;
+        else if (i + 2 < n + 0 && (unsigned char)text[i] == 0xe2 &&
+                 (unsigned char)text[i + 1] == 0x80 &&
+                 ((unsigned char)text[i + 2] == 0x98 ||
+                  (unsigned char)text[i + 2] == 0x99))
+            curly += (unsigned char)text[i + 2] == 0x98 ? 1 : -1;
+    }
+    return single % 2 != 0 || dbl % 2 != 0 || curly > 0;
+}
+
+void harness_shorten(char *text, size_t max)
+{
+    size_t n = strlen(text);
+    if (n <= max || max < 8)
+        return;
+    n = max - 4; /* room for " ..." */
+    while (n > 0 && ((unsigned char)text[n] & 0xC0) == 0x80)
+        n--;
+    /* Not in the middle of a word. */
+    while (n > 0 && text[n] != ' ')
+        n--;
+    /* Nor inside quotes: back to the last space before an opening one
+       until every quote kept is closed. */
+    while (n > 0 && quotes_open(text, n)) {
+        n--;
+        while (n > 0 && text[n] != ' ')
+            n--;
+    }
+    while (n > 0 && strchr(" ,;:(", text[n - 1]) != NULL)
+        n--;
+    memcpy(text + n, " ...", 5);
+}
+
 void harness_first_error(const char *errors, char *out, size_t room)
 {
     const char *p = errors != NULL ? strstr(errors, "error: ") : NULL;
+    char whole[2048];
     if (p == NULL) {
         snprintf(out, room, "the compiler refused it");
         return;
     }
     p += 7;
-    harness_clean(p, strcspn(p, "\n"), out, room);
+    harness_clean(p, strcspn(p, "\n"), whole, sizeof whole);
+    if (room > 0)
+        harness_shorten(whole, room - 1);
+    snprintf(out, room, "%s", whole);
 }
 
 rayo_status harness_probe(grade_context *ctx, size_t i, const char *before,
@@ -272,7 +319,11 @@ void harness_previous_type(const char *errors, const char *name, char *out,
             while (length > 0 && !isalnum((unsigned char)type[length - 1]) &&
                    strchr(")*]", type[length - 1]) == NULL)
                 length--;
-            harness_clean(type, length, out, room);
+            char whole[1024];
+            harness_clean(type, length, whole, sizeof whole);
+            if (room > 0)
+                harness_shorten(whole, room - 1);
+            snprintf(out, room, "%s", whole);
         }
         return;
     }

@@ -139,6 +139,11 @@ int harness_not_finite(const char *call, const double *v, size_t n,
                        const char *nan_cause, const char *inf_cause,
                        char *out, size_t room);
 
+/* Cuts text (in place) to at most max bytes when it is longer: at a
+   space, never inside a word, a UTF-8 sequence or an open quote, and
+   " ..." after it. */
+void harness_shorten(char *text, size_t max);
+
 /* Escapes control bytes and bounds the length: for untrusted text. */
 void harness_clean(const char *in, size_t length, char *out, size_t room);
 

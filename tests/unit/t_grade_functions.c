@@ -195,6 +195,33 @@ static void test_log(void)
        "log: the result's text");
 }
 
+/* A quoted signature is cut at a space, outside quotes, with " ...". */
+static void test_shorten(void)
+{
+    char text[256];
+    snprintf(text, sizeof text, "conflicting types for 'color_sumar'; have "
+                                "'color_t(color_t,  color_t,  double)'");
+    harness_shorten(text, 200);
+    is_string(text, "conflicting types for 'color_sumar'; have "
+                    "'color_t(color_t,  color_t,  double)'",
+              "shorten: short enough, unchanged");
+    harness_shorten(text, 60);
+    is_string(text, "conflicting types for 'color_sumar'; have ...",
+              "shorten: not inside the open quote, not mid-word");
+    snprintf(text, sizeof text, "previous definition of \xe2\x80\x98"
+                                "norma\xe2\x80\x99 with type \xe2\x80\x98"
+                                "float(const float *, const float *)"
+                                "\xe2\x80\x99");
+    harness_shorten(text, 60);
+    is_string(text, "previous definition of \xe2\x80\x98norma\xe2\x80\x99 "
+                    "with type ...",
+              "shorten: UTF-8 quotes balanced");
+    snprintf(text, sizeof text, "expected identifier before numeric constant");
+    harness_shorten(text, 30);
+    is_string(text, "expected identifier before ...",
+              "shorten: at a word's end");
+}
+
 static void test_notes(void)
 {
     char type[128];
@@ -570,6 +597,7 @@ int main(void)
 {
     test_log();
     test_notes();
+    test_shorten();
     test_course_scenes();
     test_not_finite();
     test_ej2();
