@@ -1560,6 +1560,10 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
         status = grade_say(j.item, err, "%s: right on %u known input%s",
                            functions[f].name, j.cases,
                            j.cases == 1 ? "" : "s");
+    else if (status == RAYO_OK && j.unsaid > 0)
+        status = grade_fail(j.item, err, "%s: wrong on %u more of its %u "
+                                         "known inputs",
+                            functions[f].name, j.unsaid, j.cases);
     if (status == RAYO_OK && j.beyond_light)
         status = grade_say(j.item, err, "computar_intensidad: a sphere "
                                         "beyond a point light casts a "
@@ -1590,10 +1594,6 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
                                         "part (254): a reading of the "
                                         "statement's 'scale 0..1 to the "
                                         "integers 0..255', accepted");
-    else if (status == RAYO_OK && j.unsaid > 0)
-        status = grade_fail(j.item, err, "%s: wrong on %u more of its %u "
-                                         "known inputs",
-                            functions[f].name, j.unsaid, j.cases);
     return status;
 }
 
