@@ -483,6 +483,10 @@ static void test_ej2(void)
                 "int computar_intensidad(const float cs[][3], const float "
                 "rs[], size_t n_esferas, const float luz[3], const float "
                 "o[3], const float d[3])");
+    expect_fail(RAYO_COURSE_EJ2, "ej2_exit_early.c",
+                "norma((3, 4, 12)) ended the program (exit status 0) before "
+                "the other calls were made: a function returns to its "
+                "caller, it does not call exit");
     expect_fail(RAYO_COURSE_EJ2, "ej2_normal_crash.c",
                 "normal_esfera(n, (1, 2, 3), 2, (1, 2, 5)) crashed: "
                 "segmentation fault (SIGSEGV)");
