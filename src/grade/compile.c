@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "grade_impl.h"
+#include "harness.h"
 
 #define COMPILE_SECONDS 120.0
 #define QUOTED_LINES 8
@@ -186,6 +187,56 @@ static const char *werror_hint(const char *start, size_t *length)
 }
 
 /*
+ * When the error on the line at start comes from a macro standing where
+ * the student wrote a name (a parameter called CX beside #define CX 0.5):
+ * the macro's name in name and the place the student wrote it in place
+ * ("main.c:5:60"), and 1.  gcc puts the error at the #define and adds
+ * "note: in expansion of macro 'CX'" at the use; clang puts the error at
+ * the use and adds "note: expanded from macro 'CX'".  Only the notes
+ * before the next error count.
+ */
+static int macro_use(const char *start, char *name, size_t name_room,
+                     char *place, size_t place_room)
+{
+    const char *p = start + strcspn(start, "\n");
+    while (*p == '\n') {
+        const char *line = p + 1, *note, *q;
+        size_t length = strcspn(line, "\n"), n;
+        int gcc;
+        if (line_has(line, length, "error: "))
+            return 0;
+        note = strstr(line, "in expansion of macro ");
+        gcc = note != NULL && note < line + length;
+        if (!gcc)
+            note = strstr(line, "expanded from macro ");
+        if (note != NULL && note < line + length) {
+            /* The name between quotes of any kind (ASCII or UTF-8). */
+            q = note + strcspn(note, "'\xe2");
+            while (*q == '\'' || (unsigned char)*q >= 0x80)
+                q++;
+            n = strspn(q, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                          "0123456789_");
+            if (n == 0 || n >= name_room)
+                return 0;
+            memcpy(name, q, n);
+            name[n] = '\0';
+            /* The place: "FILE:LINE:COL" before ": note:" (gcc) or
+               before ": error:" (clang). */
+            q = gcc ? line : start;
+            note = strstr(q, gcc ? ": note: " : ": error: ");
+            n = note != NULL ? (size_t)(note - q) : 0;
+            if (n == 0 || n >= place_room || memchr(q, '\n', n) != NULL)
+                return 0;
+            memcpy(place, q, n);
+            place[n] = '\0';
+            return 1;
+        }
+        p = line + length;
+    }
+    return 0;
+}
+
+/*
  * The hint after the quote: when every error is a warning -Werror made
  * fatal, that the course wants code without warnings; when a plain error
  * is among them, that this one (quoted, as it may be past the quoted
@@ -209,6 +260,20 @@ static rayo_status explain_errors(rayo_grade_item *item, const char *errors,
                          (int)length, hint);
     }
     length = line_at(errors, plain, &line);
+    {
+        char name[64], place[256], clean[256];
+        if (macro_use(line, name, sizeof name, place, sizeof place)) {
+            harness_clean(place, strlen(place), clean, sizeof clean);
+            return grade_say(item, err, "the first real error is at %s, "
+                                        "where the name %s is one of the "
+                                        "file's macros (#define %s): the "
+                                        "preprocessor puts the macro's "
+                                        "value in its place, so a "
+                                        "parameter or a variable cannot "
+                                        "have that name; rename it",
+                             clean, name, name);
+        }
+    }
     while (length > 0 && (line[0] == ' ' || line[0] == '\t')) {
         line++;
         length--;

@@ -11,6 +11,7 @@
  * those of the functions that were right, so the report's first line
  * is a finding.
  */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -26,6 +27,54 @@ static int says_right(const char *line)
         return 0;
     return strncmp(colon, ": right on ", 11) == 0 ||
            strncmp(colon, ": called on what ", 17) == 0;
+}
+
+/* The lines that say a function was right become one, the last:
+   "right on all their known inputs: norma (4), resta (2), ...,
+   esfera_destruir (called on what esfera_crear returned)", so that the
+   findings and notes come first and a long list of passing functions
+   takes one line.  Left as they are when memory runs out. */
+static void sum_up(rayo_grade_item *item)
+{
+    harness_text t = {NULL, 0, 0, 0};
+    size_t i, n = 0, right = 0;
+    for (i = 0; i < item->line_count; i++)
+        right += says_right(item->lines[i]) != 0;
+    if (right == 0)
+        return;
+    harness_append(&t, "right on all their known inputs: ");
+    for (i = 0; i < item->line_count; i++) {
+        const char *line = item->lines[i], *colon = strstr(line, ": ");
+        unsigned cases;
+        if (!says_right(line))
+            continue;
+        harness_append(&t, "%s%.*s", t.data[t.length - 2] == ':' ? "" : ", ",
+                       (int)(colon - line), line);
+        if (sscanf(colon, ": right on %u", &cases) == 1) {
+            harness_append(&t, " (%u)", cases);
+        } else {
+            const char *what = colon + 2;
+            harness_append(&t, " (%.*s)", (int)strcspn(what, "("),
+                           what);
+            /* "called on what X returned " less its trailing space */
+            if (t.length > 2 && t.data[t.length - 2] == ' ') {
+                t.data[t.length - 2] = ')';
+                t.data[--t.length] = '\0';
+            }
+        }
+    }
+    if (t.failed) {
+        free(t.data);
+        return;
+    }
+    for (i = 0; i < item->line_count; i++) {
+        if (says_right(item->lines[i]))
+            free(item->lines[i]);
+        else
+            item->lines[n++] = item->lines[i];
+    }
+    item->lines[n++] = t.data;
+    item->line_count = n;
 }
 
 /* Stable: findings first, then the functions that were right. */
@@ -65,7 +114,9 @@ rayo_status grade_step_functions(grade_context *ctx, rayo_error *err)
         status = grade_functions_ej1(ctx, err);
         break;
     }
-    if (status == RAYO_OK)
+    if (status == RAYO_OK) {
         findings_first(&ctx->report->items[RAYO_GRADE_FUNCTIONS]);
+        sum_up(&ctx->report->items[RAYO_GRADE_FUNCTIONS]);
+    }
     return status;
 }

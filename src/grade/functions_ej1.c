@@ -95,10 +95,10 @@ static void write_call(harness_text *t, const function_spec *f, unsigned c)
     double args[MAX_ARGS];
     unsigned i;
     case_args(f, c, args);
-    harness_append(t, "    printf(\"\\ncall %s %u\\n\");\n"
+    harness_append(t, "    rayo_say(\"call %s %u\");\n"
                       "    fflush(stdout);\n",
                    f->name, c);
-    harness_append(t, "    printf(\"\\nresult %s %u %%.9g\\n\", (double)%s(",
+    harness_append(t, "    rayo_say(\"result %s %u %%.9g\", (double)%s(",
                    f->name, c, f->name);
     for (i = 0; i < f->arg_count; i++)
         harness_append(t, "%s(float)%.9g", i > 0 ? ", " : "", args[i]);
@@ -111,7 +111,7 @@ static char *harness_source(const int *usable)
     harness_text t = {NULL, 0, 0, 0};
     size_t i;
     unsigned c;
-    harness_append(&t, "#include <stdio.h>\n");
+    harness_prelude(&t);
     for (i = 0; i < FUNCTION_COUNT; i++)
         if (usable[i])
             harness_append(&t, "%s %s%s __attribute__((weak));\n",
@@ -123,14 +123,14 @@ static char *harness_source(const int *usable)
         if (!usable[i])
             continue;
         harness_append(&t, "    if (%s == 0) {\n"
-                           "        printf(\"\\nmissing %s\\n\");\n"
+                           "        rayo_say(\"missing %s\");\n"
                            "    } else {\n",
                        f->name, f->name);
         for (c = 0; c < f->case_count; c++)
             write_call(&t, f, c);
         harness_append(&t, "    }\n");
     }
-    harness_append(&t, "    return 0;\n}\n");
+    harness_append(&t, "    rayo_say(\"done\");\n    return 0;\n}\n");
     if (t.failed) {
         free(t.data);
         return NULL;
@@ -163,7 +163,7 @@ static rayo_status judge(grade_context *ctx, const function_spec *f,
                          const char *log, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
-    char call[256];
+    char call[256], line[512];
     unsigned c, wrong = 0;
     rayo_status status = RAYO_OK;
     if (harness_missing(log, f->name))
@@ -181,7 +181,16 @@ static rayo_status judge(grade_context *ctx, const function_spec *f,
         if (f->returns_int ? got == want : close_enough(got, want))
             continue;
         wrong++;
-        if (f->returns_int)
+        if (!f->returns_int &&
+            harness_not_finite(call, &got, 1,
+                               strcmp(f->name, "norma") == 0
+                                   ? "the square root of a negative sum "
+                                     "(a sum of squares is never negative: "
+                                     "check the signs) or 0/0"
+                                   : HARNESS_NAN_ARITHMETIC,
+                               NULL, line, sizeof line))
+            status = grade_fail(item, err, "%s", line);
+        else if (f->returns_int)
             status = grade_fail(item, err, "%s returned %g; expected %g (%s)",
                                 call, got, want,
                                 want != 0 ? "this ray does hit the sphere"

@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../course/course_impl.h"
 #include "harness.h"
 #include "harness_math.h"
 
@@ -113,17 +114,12 @@ typedef struct scene {
     double light[3]; /* normalised here */
 } scene;
 
+/* Scene 0 is the course's scene 2, filled from the course module
+   (course_scenes.c, the one copy of its numbers) by scene_of. */
+#define COURSE_SCENE 0
+
 static const scene scenes[] = {
-    {"the course's scene 2",
-     6,
-     {{-0.4, 0.75, 1.55},
-      {-0.55, -0.4, 2},
-      {3, 1.5, 4},
-      {3, 1.5, 5},
-      {3, -1.5, 4},
-      {3, -1.5, 5}},
-     {0.3, 0.85, 0.4, 0.4, 0.4, 0.4},
-     {0.2873478855663454, 0.9578262852211513, 0}},
+    {"the course's scene 2", 0, {{0, 0, 0}}, {0}, {0, 0, 0}},
     /* Reversed order: the far sphere first. */
     {"2 spheres, the far one first: (0, 0, 4) r 1, (0, -0.3, 2) r 0.5",
      2,
@@ -217,11 +213,31 @@ static double sphere_t(const double *c, double r, const double *o,
     return INFINITY;
 }
 
+/* Scene index as written (in double): the course's from its module.
+   Returns whole. */
+static const scene *scene_of(unsigned index, scene *whole)
+{
+    const rayo_course_data *data = rayo_course_data_of(RAYO_COURSE_EJ2);
+    size_t i;
+    *whole = scenes[index];
+    if (index != COURSE_SCENE || data == NULL || data->lamp_count < 1)
+        return whole;
+    whole->n = data->ball_count < MAX_SPHERES ? data->ball_count
+                                              : MAX_SPHERES;
+    for (i = 0; i < whole->n; i++) {
+        memcpy(whole->c[i], data->balls[i].center, sizeof whole->c[i]);
+        whole->r[i] = data->balls[i].radius;
+    }
+    memcpy(whole->light, data->lamps[0].vector, sizeof whole->light);
+    return whole;
+}
+
 /* The float arguments of a ray case. */
 static void ray_args(const ray_case *rc, double *d, double *light,
                      double c[][3], double *r)
 {
-    const scene *s = &scenes[rc->scene];
+    scene whole;
+    const scene *s = scene_of(rc->scene, &whole);
     size_t i;
     unit(rc->d, d);
     vfl(d, d);
@@ -275,7 +291,8 @@ static int occludes(const double *c, double r, const double *p,
 
 static shading shade(const ray_case *rc, int m)
 {
-    const scene *s = &scenes[rc->scene];
+    scene whole;
+    const scene *s = scene_of(rc->scene, &whole);
     double d[3], light[3], c[MAX_SPHERES][3], r[MAX_SPHERES];
     double o[3] = {0, 0, 0}, best = INFINITY, p[3], n[3], amb, value;
     shading out = {0, (size_t)-1, (size_t)-1, 0};
@@ -347,7 +364,7 @@ static void write_vector_case(harness_text *t, const vector_case *v,
     put_vector(t, "c", c);
     harness_append(t, "        float r[3] = {0, 0, 0};\n"
                       "        double v = 0;\n"
-                      "        printf(\"\\ncall %s %u\\n\");\n"
+                      "        rayo_say(\"call %s %u\");\n"
                       "        fflush(stdout);\n",
                    name, k);
     switch (v->function) {
@@ -375,15 +392,16 @@ static void write_vector_case(harness_text *t, const vector_case *v,
         harness_append(t, "        normal_esfera(r, a, %.9g, b);\n", s);
         break;
     }
-    harness_append(t, "        printf(\"\\nresult %s %u %%.9g %%.9g %%.9g "
-                      "%%.9g\\n\", v, r[0], r[1], r[2]);\n"
+    harness_append(t, "        rayo_say(\"result %s %u %%.9g %%.9g %%.9g "
+                      "%%.9g\", v, r[0], r[1], r[2]);\n"
                       "        fflush(stdout);\n    }\n",
                    name, k);
 }
 
 static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
 {
-    const scene *s = &scenes[rc->scene];
+    scene whole;
+    const scene *s = scene_of(rc->scene, &whole);
     double d[3], light[3], c[MAX_SPHERES][3], r[MAX_SPHERES];
     size_t i;
     ray_args(rc, d, light, c, r);
@@ -400,13 +418,13 @@ static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
     put_vector(t, "o", (const double[3]){0, 0, 0});
     put_vector(t, "d", d);
     harness_append(t, "        int v;\n"
-                      "        printf(\"\\ncall computar_intensidad "
-                      "%u\\n\");\n"
+                      "        rayo_say(\"call computar_intensidad "
+                      "%u\");\n"
                       "        fflush(stdout);\n"
                       "        v = computar_intensidad(cs, rs, %zu, luz, o, "
                       "d);\n"
-                      "        printf(\"\\nresult computar_intensidad %u "
-                      "%%d\\n\", v);\n"
+                      "        rayo_say(\"result computar_intensidad %u "
+                      "%%d\", v);\n"
                       "        fflush(stdout);\n    }\n",
                    k, s->n, k);
 }
@@ -415,7 +433,8 @@ static char *harness_source(const int *usable)
 {
     harness_text t = {NULL, 0, 0, 0};
     unsigned i, k;
-    harness_append(&t, "#include <stddef.h>\n#include <stdio.h>\n");
+    harness_prelude(&t);
+    harness_append(&t, "#include <stddef.h>\n");
     for (i = 0; i < F_COUNT; i++)
         if (usable[i])
             harness_append(&t, "%s __attribute__((weak));\n", prototypes[i]);
@@ -423,19 +442,28 @@ static char *harness_source(const int *usable)
     for (i = 0; i < F_COUNT; i++)
         if (usable[i])
             harness_append(&t, "    if (%s == 0)\n"
-                               "        printf(\"\\nmissing %s\\n\");\n",
+                               "        rayo_say(\"missing %s\");\n",
                            names[i], names[i]);
     for (k = 0; k < VECTOR_CASES; k++)
         if (usable[vector_cases[k].function])
             write_vector_case(&t, &vector_cases[k], k);
     for (k = 0; k < RAY_CASES && usable[F_INTENSIDAD]; k++)
         write_ray_case(&t, &ray_cases[k], k);
-    harness_append(&t, "    return 0;\n}\n");
+    harness_append(&t, "    rayo_say(\"done\");\n    return 0;\n}\n");
     if (t.failed) {
         free(t.data);
         return NULL;
     }
     return t.data;
+}
+
+char *grade_functions_ej2_source(void)
+{
+    int usable[F_COUNT];
+    unsigned i;
+    for (i = 0; i < F_COUNT; i++)
+        usable[i] = 1;
+    return harness_source(usable);
 }
 
 /* ---- what the student reads ---- */
@@ -647,7 +675,8 @@ static int vector_case_right(const vector_case *v, const double *got)
 static const char *sphere_text(const ray_case *rc, size_t i, char *out,
                                size_t room)
 {
-    const scene *s = &scenes[rc->scene];
+    scene whole;
+    const scene *s = scene_of(rc->scene, &whole);
     snprintf(out, room, "the sphere at (%g, %g, %g)", s->c[i][0],
              s->c[i][1], s->c[i][2]);
     return out;
@@ -785,12 +814,29 @@ static rayo_status say_signature(rayo_grade_item *item, unsigned i,
                       names[i], prototypes[i], reason);
 }
 
+/* What most likely makes function i return a NaN. */
+static const char *nan_cause(unsigned i)
+{
+    switch (i) {
+    case F_NORMA:
+        return "the square root of a negative sum (a sum of squares is "
+               "never negative: check the signs) or 0/0";
+    case F_NORMALIZAR:
+    case F_NORMAL:
+        return HARNESS_NAN_NORMAL;
+    case F_DISTANCIA:
+        return HARNESS_NAN_DISCRIMINANT;
+    default:
+        return HARNESS_NAN_ARITHMETIC;
+    }
+}
+
 /* Judges function i: 0 when the log ends before its calls are done. */
 static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
                          rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
-    char call[512];
+    char call[512], line[1024];
     unsigned k, cases = 0, wrong = 0, unsaid = 0, said = 0;
     rayo_status status = RAYO_OK;
     if (harness_missing(log, names[i]))
@@ -811,8 +857,25 @@ static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
             continue;
         }
         describe_vector_case(k, call, sizeof call);
-        status = say_vector(item, &vector_cases[k], call, got[0], got + 1,
-                            err);
+        if (harness_not_finite(call, i == F_PRODUCTO || i == F_NORMA ||
+                                             i == F_DISTANCIA
+                                         ? got
+                                         : got + 1,
+                               i == F_PRODUCTO || i == F_NORMA ||
+                                       i == F_DISTANCIA
+                                   ? 1
+                                   : 3,
+                               nan_cause(i),
+                               i == F_DISTANCIA
+                                   ? "the statement's INFINITO is FLT_MAX, the "
+                                     "largest "
+                                     "float, not an infinity"
+                                   : NULL,
+                               line, sizeof line))
+            status = grade_fail(item, err, "%s", line);
+        else
+            status = say_vector(item, &vector_cases[k], call, got[0],
+                                got + 1, err);
         if (status != RAYO_OK)
             return status;
     }
@@ -832,14 +895,24 @@ static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
             wrong++;
             /* One line per mistake recognised; the same one again
                counted. */
-            mistake = ray_mistake(rc, got[k], score);
+            mistake = got[k] == HARNESS_INT_MIN ? M_COUNT + 1
+                                                : ray_mistake(rc, got[k],
+                                                              score);
             if (said & (1u << mistake) || wrong > SAID_PER_FUNCTION + 2) {
                 unsaid++;
                 continue;
             }
             said |= 1u << mistake;
             describe_ray_case(k, call, sizeof call);
-            status = say_ray(item, rc, call, got[k], mistake, err);
+            if (mistake == M_COUNT + 1)
+                status = grade_fail(item, err, "%s returned -2147483648, "
+                                               "what a NaN (not a number) "
+                                               "or a value past the int "
+                                               "range becomes through "
+                                               "(int): likely %s",
+                                    call, HARNESS_NAN_SHADING);
+            else
+                status = say_ray(item, rc, call, got[k], mistake, err);
             if (status != RAYO_OK)
                 return status;
         }

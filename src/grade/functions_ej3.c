@@ -39,6 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../course/course_impl.h"
 #include "harness.h"
 #include "harness_math.h"
 
@@ -240,31 +241,14 @@ typedef struct scene {
 } scene;
 
 #define WHITE {1, 1, 1}
-#define ROW_TOP(x, kd) {{x, 2.5, 4.3}, 0.3, WHITE, 1, kd}
-#define ROW_MID(x, ka) {{x, 1.5, 4}, 0.3, WHITE, ka, 1}
+
+/* Scene 0 is the course's scene 3, filled from the course module
+   (course_scenes.c, the one copy of its numbers) by scene_of. */
+#define COURSE_SCENE 0
 
 static const scene scenes[] = {
-    {"the course's scene 3",
-     25,
-     4,
-     {{{0, 1, 2.4}, 0.3, WHITE, 1, 1},
-      {{0, -0.4, 3}, 1, WHITE, 1, 1},
-      {{-2, -0.6, 3}, 0.3, {1, 0, 0}, 1, 0.8},
-      {{-1.73, -0.6, 2}, 0.3, {1, 1, 0}, 1, 1},
-      {{-1, -0.6, 1.26}, 0.3, {0, 1, 0}, 1, 1},
-      {{0, -0.6, 1}, 0.3, WHITE, 1, 1},
-      {{1, -0.6, 1.26}, 0.3, {0, 1, 1}, 1, 1},
-      {{1.73, -0.6, 2}, 0.3, {0, 0, 1}, 1, 1},
-      {{2, -0.6, 3}, 0.3, {1, 0, 1}, 1, 1},
-      ROW_TOP(-3, 0), ROW_TOP(-2, 0.16), ROW_TOP(-1, 0.33),
-      ROW_TOP(0, 0.5), ROW_TOP(1, 0.66), ROW_TOP(2, 0.83), ROW_TOP(3, 1),
-      ROW_MID(-3, 0), ROW_MID(-2, 0.16), ROW_MID(-1, 0.33),
-      ROW_MID(0, 0.5), ROW_MID(1, 0.66), ROW_MID(2, 0.83), ROW_MID(3, 1)},
-     {{{0, 1, 0}, {0.2, 0.2, 0.2}, 0},
-      {{-2, 10, 2.5}, {0.9, 0, 0}, 1},
-      {{2, 10, 2.5}, {0, 0.9, 0}, 1},
-      {{0, 10, 5}, {0, 0, 0.9}, 1}},
-     {0.05, 0.05, 0.05}},
+    {"the course's scene 3", 0, 0, {{{0, 0, 0}, 0, {0, 0, 0}, 0, 0}},
+     {{{0, 0, 0}, {0, 0, 0}, 0}}, {0, 0, 0}},
     {"a red sphere (0, 0, 3) r 1 first in the array, a white one "
      "(0, 0, 1) r 0.2 second, a directional light towards the camera",
      2,
@@ -362,12 +346,40 @@ static double sphere_t(const double *c, double r, const double *o,
     return INFINITY;
 }
 
+/* Scene index as written (in double): the course's from its module. */
+static void scene_of(unsigned index, scene *s)
+{
+    const rayo_course_data *data = rayo_course_data_of(RAYO_COURSE_EJ3);
+    size_t i;
+    *s = scenes[index];
+    if (index != COURSE_SCENE || data == NULL)
+        return;
+    s->spheres = data->ball_count < MAX_SPHERES ? data->ball_count
+                                                : MAX_SPHERES;
+    s->lights = data->lamp_count < MAX_LIGHTS ? data->lamp_count
+                                              : MAX_LIGHTS;
+    for (i = 0; i < s->spheres; i++) {
+        const rayo_course_ball *b = &data->balls[i];
+        memcpy(s->s[i].c, b->center, sizeof s->s[i].c);
+        s->s[i].r = b->radius;
+        memcpy(s->s[i].color, b->color, sizeof s->s[i].color);
+        s->s[i].ka = b->ka;
+        s->s[i].kd = b->kd;
+    }
+    for (i = 0; i < s->lights; i++) {
+        memcpy(s->l[i].v, data->lamps[i].vector, sizeof s->l[i].v);
+        memcpy(s->l[i].color, data->lamps[i].color, sizeof s->l[i].color);
+        s->l[i].point = data->lamps[i].point != 0;
+    }
+    memcpy(s->ambient, data->ambient, sizeof s->ambient);
+}
+
 /* The scene of a ray case as the harness passes it: floats, directions
    normalised. */
 static void ray_scene(const ray_case *rc, scene *s, double *d)
 {
     size_t i;
-    *s = scenes[rc->scene];
+    scene_of(rc->scene, s);
     for (i = 0; i < s->spheres; i++) {
         vfl(s->s[i].c, s->s[i].c);
         vfl(s->s[i].color, s->s[i].color);
@@ -525,7 +537,7 @@ static void put_vec(harness_text *t, const char *type, const char *name,
 
 static void announce(harness_text *t, const char *name, unsigned k)
 {
-    harness_append(t, "        printf(\"\\ncall %s %u\\n\");\n"
+    harness_append(t, "        rayo_say(\"call %s %u\");\n"
                       "        fflush(stdout);\n",
                    name, k);
 }
@@ -533,8 +545,8 @@ static void announce(harness_text *t, const char *name, unsigned k)
 static void result3(harness_text *t, const char *name, unsigned k,
                     const char *first, const char *v)
 {
-    harness_append(t, "        printf(\"\\nresult %s %u %%.9g %%.9g %%.9g "
-                      "%%.9g\\n\", (double)%s, %s.%c, %s.%c, %s.%c);\n"
+    harness_append(t, "        rayo_say(\"result %s %u %%.9g %%.9g %%.9g "
+                      "%%.9g\", (double)%s, %s.%c, %s.%c, %s.%c);\n"
                       "        fflush(stdout);\n",
                    name, k, first, v, v[0] == 'c' ? 'r' : 'x', v,
                    v[0] == 'c' ? 'g' : 'y', v, v[0] == 'c' ? 'b' : 'z');
@@ -593,12 +605,12 @@ static void write_value_case(harness_text *t, const value_case *v,
     case F_IMPRIMIR:
         put_vec(t, "color_t", "a", a);
         announce(t, name, k);
-        harness_append(t, "        printf(\"\\nout color_imprimir %u\\n\");\n"
+        harness_append(t, "        rayo_say(\"out color_imprimir %u\");\n"
                           "        fflush(stdout);\n"
                           "        color_imprimir(a);\n"
                           "        fflush(stdout);\n"
-                          "        printf(\"\\nend color_imprimir %u\\n"
-                          "\\nresult color_imprimir %u 0\\n\");\n"
+                          "        rayo_say(\"end color_imprimir %u\");\n"
+                          "        rayo_say(\"result color_imprimir %u 0\");\n"
                           "        fflush(stdout);\n",
                        k, k, k);
         break;
@@ -611,22 +623,22 @@ static void write_value_case(harness_text *t, const value_case *v,
             t,
             "        e = esfera_crear(a, %.9g, b, %.9g, %.9g);\n"
             "        if (e == NULL) {\n"
-            "            printf(\"\\nresult esfera_crear %u null\\n\");\n"
+            "            rayo_say(\"result esfera_crear %u null\");\n"
             "        } else {\n"
-            "            printf(\"\\nresult esfera_crear %u %%.9g %%.9g "
-            "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\\n\", e->centro.x, "
+            "            rayo_say(\"result esfera_crear %u %%.9g %%.9g "
+            "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\", e->centro.x, "
             "e->centro.y, e->centro.z, e->radio, e->color.r, e->color.g, "
             "e->color.b, e->ka, e->kd);\n"
             "            fflush(stdout);\n"
             "            if (esfera_destruir != 0) {\n"
-            "                printf(\"\\ncall esfera_destruir 0\\n\");\n"
+            "                rayo_say(\"call esfera_destruir %u\");\n"
             "                fflush(stdout);\n"
             "                esfera_destruir(e);\n"
-            "                printf(\"\\nresult esfera_destruir 0 0\\n\");\n"
+            "                rayo_say(\"result esfera_destruir %u 0\");\n"
             "            }\n"
             "        }\n"
             "        fflush(stdout);\n",
-            s, c[0], c[1], k, k);
+            s, c[0], c[1], k, k, k, k);
         break;
     case F_LUZ_CREAR:
         put_vec(t, "vector_t", "a", a);
@@ -637,22 +649,22 @@ static void write_value_case(harness_text *t, const value_case *v,
             t,
             "        l = luz_crear(a, b, %d);\n"
             "        if (l == NULL) {\n"
-            "            printf(\"\\nresult luz_crear %u null\\n\");\n"
+            "            rayo_say(\"result luz_crear %u null\");\n"
             "        } else {\n"
-            "            printf(\"\\nresult luz_crear %u %%.9g %%.9g %%.9g "
-            "%%.9g %%.9g %%.9g %%d\\n\", l->posicion.x, l->posicion.y, "
+            "            rayo_say(\"result luz_crear %u %%.9g %%.9g %%.9g "
+            "%%.9g %%.9g %%.9g %%d\", l->posicion.x, l->posicion.y, "
             "l->posicion.z, l->color.r, l->color.g, l->color.b, "
             "(int)l->es_puntual);\n"
             "            fflush(stdout);\n"
             "            if (luz_destruir != 0) {\n"
-            "                printf(\"\\ncall luz_destruir 0\\n\");\n"
+            "                rayo_say(\"call luz_destruir %u\");\n"
             "                fflush(stdout);\n"
             "                luz_destruir(l);\n"
-            "                printf(\"\\nresult luz_destruir 0 0\\n\");\n"
+            "                rayo_say(\"result luz_destruir %u 0\");\n"
             "            }\n"
             "        }\n"
             "        fflush(stdout);\n",
-            s != 0, k, k);
+            s != 0, k, k, k, k);
         break;
     default: /* F_DISTANCIA */
         harness_append(t, "        esfera_t e = {{%.9g, %.9g, %.9g}, %.9g, "
@@ -665,8 +677,8 @@ static void write_value_case(harness_text *t, const value_case *v,
                           "        double v;\n");
         announce(t, name, k);
         harness_append(t, "        v = esfera_distancia(&e, o, d, &p, &n);\n"
-                          "        printf(\"\\nresult esfera_distancia %u "
-                          "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\\n\", "
+                          "        rayo_say(\"result esfera_distancia %u "
+                          "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\", "
                           "v, p.x, p.y, p.z, n.x, n.y, n.z);\n"
                           "        fflush(stdout);\n",
                        k);
@@ -685,7 +697,7 @@ static const char agregar_source[] =
     "        void **before;\n"
     "        size_t n, i;\n"
     "        int r0, r1, r2, r, same = 1, guard;\n"
-    "        printf(\"\\ncall arreglo_agregar 0\\n\");\n"
+    "        rayo_say(\"call arreglo_agregar 0\");\n"
     "        fflush(stdout);\n"
     "        r0 = arreglo_agregar(&a, &x[0]);\n"
     "        r1 = arreglo_agregar(&a, &x[1]);\n"
@@ -694,14 +706,16 @@ static const char agregar_source[] =
     "                rayo_guard_intact();\n"
     "        for (i = 0; i < 3 && a.v != NULL && a.n == 3; i++)\n"
     "            same &= a.v[i] == (void *)&x[i];\n"
-    "        printf(\"\\nresult arreglo_agregar 0 %d %d %d %lu %d %d %d "
-    "%lu\\n\",\n"
+    "        rayo_say(\"result arreglo_agregar 0 %d %d %d %lu %d %d %d "
+    "%lu\",\n"
     "               r0, r1, r2, (unsigned long)a.n, a.v != NULL, same,\n"
     "               guard, (unsigned long)rayo_last_size);\n"
     "        fflush(stdout);\n"
-    "        if (a.v == NULL || a.n != 3 || !same)\n"
+    "        if (a.v == NULL || a.n != 3 || !same) {\n"
+    "            rayo_say(\"done\");\n"
     "            return 0;\n"
-    "        printf(\"\\ncall arreglo_agregar 1\\n\");\n"
+    "        }\n"
+    "        rayo_say(\"call arreglo_agregar 1\");\n"
     "        fflush(stdout);\n"
     "        for (i = 3; i < 67; i++) {\n"
     "            before = a.v;\n"
@@ -716,7 +730,7 @@ static const char agregar_source[] =
     "        }\n"
     "        same = a.v == before && a.v != NULL &&\n"
     "               memcmp(saved, a.v, n * sizeof *saved) == 0;\n"
-    "        printf(\"\\nresult arreglo_agregar 1 %u %d %lu %lu %d %d %d\\n"
+    "        rayo_say(\"result arreglo_agregar 1 %u %d %lu %lu %d %d %d"
     "\",\n"
     "               rayo_alloc_tries, r, (unsigned long)n,\n"
     "               (unsigned long)a.n, a.v == NULL, a.v == before, "
@@ -835,6 +849,7 @@ static char *harness_source(const int *usable)
 {
     harness_text t = {NULL, 0, 0, 0};
     unsigned i, k;
+    harness_prelude(&t);
     harness_append(&t, "#include <stddef.h>\n#include <stdio.h>\n"
                        "#include <stdlib.h>\n#include <string.h>\n%s%s%s",
                    mirror_types, harness_types, wrap_source);
@@ -845,7 +860,7 @@ static char *harness_source(const int *usable)
     for (i = 0; i < F_COUNT; i++)
         if (usable[i])
             harness_append(&t, "    if (%s == 0)\n"
-                               "        printf(\"\\nmissing %s\\n\");\n",
+                               "        rayo_say(\"missing %s\");\n",
                            functions[i].name, functions[i].name);
     for (k = 0; k < VALUE_CASES; k++)
         if (usable[value_cases[k].function])
@@ -854,12 +869,21 @@ static char *harness_source(const int *usable)
         write_ray_case(&t, &ray_cases[k], k);
     if (usable[F_AGREGAR])
         harness_append(&t, "%s", agregar_source);
-    harness_append(&t, "    return 0;\n}\n");
+    harness_append(&t, "    rayo_say(\"done\");\n    return 0;\n}\n");
     if (t.failed) {
         free(t.data);
         return NULL;
     }
     return t.data;
+}
+
+char *grade_functions_ej3_source(void)
+{
+    int usable[F_COUNT];
+    unsigned i;
+    for (i = 0; i < F_COUNT; i++)
+        usable[i] = 1;
+    return harness_source(usable);
 }
 
 /* ---- what the student reads ---- */
@@ -948,6 +972,10 @@ typedef struct judging {
     const char *log;
     unsigned wrong, unsaid, cases;
     unsigned limit; /* wrong cases given a line */
+    /* Readings of an ambiguous statement seen, each accepted and named:
+       a sphere beyond a point light casts a shadow; color_imprimir
+       rounds 255 c. */
+    int beyond_light, between_only, rounds;
 } judging;
 
 static rayo_status wrong_line(judging *j, rayo_error *err,
@@ -970,6 +998,24 @@ static rayo_status wrong_line(judging *j, rayo_error *err,
     return grade_fail(j->item, err, "%s", line);
 }
 
+/* What most likely makes function f return a NaN. */
+static const char *nan_cause(unsigned f)
+{
+    switch (f) {
+    case F_NORMA:
+        return "the square root of a negative sum (a sum of squares is "
+               "never negative: check the signs) or 0/0";
+    case F_NORMALIZAR:
+        return HARNESS_NAN_NORMAL;
+    case F_DISTANCIA:
+        return HARNESS_NAN_DISCRIMINANT;
+    case F_INTENSIDAD:
+        return HARNESS_NAN_SHADING;
+    default:
+        return HARNESS_NAN_ARITHMETIC;
+    }
+}
+
 static rayo_status judge_value(judging *j, unsigned k, rayo_error *err)
 {
     const value_case *v = &value_cases[k];
@@ -984,6 +1030,29 @@ static rayo_status judge_value(judging *j, unsigned k, rayo_error *err)
     if (count < 0)
         return RAYO_ERR_CANCELLED; /* it ended before: said elsewhere */
     j->cases++;
+    {
+        int scalar = v->function == F_PRODUCTO || v->function == F_NORMA ||
+                     v->function == F_DISTANCIA;
+        char line[1024];
+        if (v->function != F_IMPRIMIR && v->function != F_ESFERA_CREAR &&
+            v->function != F_LUZ_CREAR && count >= 4 &&
+            harness_not_finite(call, scalar ? got : got + 1, scalar ? 1 : 3,
+                               nan_cause(v->function),
+                               v->function == F_DISTANCIA
+                                   ? "the statement's INFINITO is FLT_MAX, the "
+                                     "largest "
+                                     "float, not an infinity"
+                                   : NULL,
+                               line, sizeof line))
+            return wrong_line(j, err, "%s", line);
+        if (v->function == F_DISTANCIA && count >= 7 &&
+            !is_infinito(got[0]) &&
+            (harness_not_finite(call, got + 1, 3, HARNESS_NAN_ARITHMETIC,
+                                NULL, line, sizeof line) ||
+             harness_not_finite(call, got + 4, 3, HARNESS_NAN_NORMAL, NULL,
+                                line, sizeof line)))
+            return wrong_line(j, err, "%s (in *punto or *normal)", line);
+    }
     switch (v->function) {
     case F_PRODUCTO:
     case F_NORMA: {
@@ -1118,6 +1187,14 @@ static rayo_status judge_imprimir(judging *j, unsigned k, rayo_error *err)
     for (i = 0; i < 3; i++)
         want[i] = channel_byte(a[i]);
     snprintf(expect, sizeof expect, "%d %d %d", want[0], want[1], want[2]);
+    if (strstr(shown, "nan") != NULL || strstr(shown, "inf") != NULL ||
+        strstr(shown, "-2147483648") != NULL)
+        return wrong_line(j, err, "%s printed \"%s\"; expected \"%s\": "
+                                  "nan and inf (printed by %%f) and "
+                                  "-2147483648 (a NaN or a value past the "
+                                  "int range through (int)) come from a "
+                                  "result that is not a number: likely %s",
+                          call, shown, expect, HARNESS_NAN_ARITHMETIC);
     if (sscanf(start, "%d %d %d%n", &got[0], &got[1], &got[2], &used) != 3 ||
         start + used > end || strspn(start + used, " \t\n") <
                                   (size_t)(end - start - used))
@@ -1142,11 +1219,10 @@ static rayo_status judge_imprimir(judging *j, unsigned k, rayo_error *err)
             return wrong_line(j, err, "%s printed \"%s\"; expected \"%s\": "
                                       "a component above 1 prints as 255",
                               call, shown, expect);
-        if (got[i] == (int)floor(255 * a[i] + 0.5))
-            return wrong_line(j, err, "%s printed \"%s\"; expected \"%s\": "
-                                      "255 x %.7g was rounded; the byte is "
-                                      "the integer part of 255 c",
-                              call, shown, expect, a[i]);
+        if (got[i] == (int)floor(255 * a[i] + 0.5)) {
+            j->rounds = 1; /* a reading, accepted: judge() names it */
+            continue;
+        }
         if (got[i] == (int)floor(256 * a[i]))
             return wrong_line(j, err, "%s printed \"%s\"; expected \"%s\": "
                                       "scaled by 256; 0..1 scales to "
@@ -1276,7 +1352,9 @@ static void colour_text(const double *c, char *out, size_t room)
 static void sphere_text(const ray_case *rc, size_t i, char *out,
                         size_t room)
 {
-    const sphere *s = &scenes[rc->scene].s[i];
+    scene whole;
+    const sphere *s = &whole.s[i];
+    scene_of(rc->scene, &whole);
     snprintf(out, room, "the sphere at (%g, %g, %g) of colour (%g, %g, %g)",
              s->c[0], s->c[1], s->c[2], s->color[0], s->color[1],
              s->color[2]);
@@ -1376,6 +1454,7 @@ static rayo_status say_ray(judging *j, unsigned c, const double *got,
 static rayo_status judge_rays(judging *j, rayo_error *err)
 {
     double got[RAY_CASES][3];
+    char call[512], line[1024];
     unsigned c, said = 0, score[M_COUNT];
     rayo_status status = RAYO_OK;
     for (c = 0; c < RAY_CASES; c++) {
@@ -1389,8 +1468,29 @@ static rayo_status judge_rays(judging *j, rayo_error *err)
         const ray_case *rc = &ray_cases[c];
         int mistake;
         j->cases++;
-        if (same_colour(got[c], shade(rc, M_NONE).c))
+        if (harness_not_finite("", got[c], 3, "", NULL, line, sizeof line)) {
+            if (said & (1u << (M_COUNT + 1))) {
+                j->wrong++;
+                j->unsaid++;
+                continue;
+            }
+            said |= 1u << (M_COUNT + 1);
+            describe_ray_case(c, call, sizeof call);
+            harness_not_finite(call, got[c], 3, HARNESS_NAN_SHADING, NULL,
+                               line, sizeof line);
+            status = wrong_line(j, err, "%s", line);
             continue;
+        }
+        if (same_colour(got[c], shade(rc, M_NONE).c)) {
+            if (!same_colour(shade(rc, M_NONE).c,
+                             shade(rc, M_BEYOND_LIGHT).c))
+                j->between_only = 1; /* the other reading, named too */
+            continue;
+        }
+        if (same_colour(got[c], shade(rc, M_BEYOND_LIGHT).c)) {
+            j->beyond_light = 1; /* a reading, accepted: judge() names it */
+            continue;
+        }
         mistake = ray_mistake(rc, got[c], score);
         /* One line per mistake recognised; the same one again counted. */
         if (said & (1u << mistake)) {
@@ -1416,6 +1516,7 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
     j.item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
     j.log = log;
     j.wrong = j.unsaid = j.cases = 0;
+    j.beyond_light = j.between_only = j.rounds = 0;
     j.limit = f == F_INTENSIDAD ? SAID_PER_FUNCTION + 2 : SAID_PER_FUNCTION;
     if (harness_missing(log, functions[f].name))
         return grade_fail(j.item, err, "%s: not defined; the statement asks "
@@ -1428,8 +1529,12 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
             return grade_say(j.item, err, "%s: not called (it needs what "
                                           "%s returns)",
                              functions[f].name, functions[maker].name);
-        if (!harness_result_text(log, functions[f].name, 0, (char[4]){0},
-                                 4))
+        for (k = 0; k < VALUE_CASES; k++)
+            if (value_cases[k].function == maker &&
+                harness_result_text(log, functions[f].name, k, (char[4]){0},
+                                    4))
+                break;
+        if (k == VALUE_CASES)
             return RAYO_OK;
         return grade_say(j.item, err, "%s: called on what %s returned "
                                       "(valgrind checks what it frees)",
@@ -1459,6 +1564,36 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
         status = grade_fail(j.item, err, "%s: wrong on %u more of its %u "
                                          "known inputs",
                             functions[f].name, j.unsaid, j.cases);
+    if (status == RAYO_OK && j.beyond_light)
+        status = grade_say(j.item, err, "computar_intensidad: a sphere "
+                                        "beyond a point light casts a "
+                                        "shadow: the statement's rule (an "
+                                        "object in the light's direction "
+                                        "casts a shadow) read to the "
+                                        "letter, accepted; the other "
+                                        "reading, a shadow only from a "
+                                        "sphere between the point and the "
+                                        "light, is accepted too, and the "
+                                        "course's scenes look the same "
+                                        "either way");
+    if (status == RAYO_OK && j.between_only && !j.beyond_light)
+        status = grade_say(j.item, err, "computar_intensidad: only a sphere "
+                                        "between the point and a point "
+                                        "light casts a shadow, not one "
+                                        "beyond the light: one of the "
+                                        "statement's two readings, "
+                                        "accepted; the other, to the "
+                                        "letter (an object in the light's "
+                                        "direction casts a shadow), is "
+                                        "accepted too, and the course's "
+                                        "scenes look the same either way");
+    if (status == RAYO_OK && j.rounds)
+        status = grade_say(j.item, err, "color_imprimir: rounds 255 c to "
+                                        "the nearest integer (0.999 prints "
+                                        "255) instead of taking its integer "
+                                        "part (254): a reading of the "
+                                        "statement's 'scale 0..1 to the "
+                                        "integers 0..255', accepted");
     return status;
 }
 
@@ -1592,9 +1727,10 @@ static rayo_status probe_functions(grade_context *ctx, size_t i,
         memcpy(said, reason, sizeof said);
         if (type[0] != '\0')
             snprintf(reason, HARNESS_REASON, "the file has %s", type);
-        else
-            snprintf(reason, HARNESS_REASON, "the compiler says: %.300s",
-                     said);
+        else {
+            harness_shorten(said, 300);
+            snprintf(reason, HARNESS_REASON, "the compiler says: %s", said);
+        }
     }
     free(messages);
     free(t.data);

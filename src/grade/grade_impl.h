@@ -131,6 +131,9 @@ typedef struct grade_run {
                              its soft RLIMIT_NOFILE lowered to it */
     int collect;          /* STUDENT: bring back the one image file
                              (.pbm .pgm .ppm .pnm) it left in its folder */
+    int input;            /* > 0: a descriptor (a pipe's reading end)
+                             that becomes its standard input; 0: none,
+                             /dev/null */
 } grade_run;
 
 /* What came back.  Free with grade_captured_free. */
@@ -154,7 +157,7 @@ struct grade_context;
 
 /*
  * Runs one program under limits, inside the sandbox when ctx has one.
- * Standard input is /dev/null; standard output and error go to unlinked
+ * Standard input is /dev/null (or run->input); standard output and error go to unlinked
  * files the grader opened (the program cannot swap them), read back
  * into got.  The wall clock is the grader's: a run that ends after
  * limits->wall seconds by that clock counts as timed out, whatever

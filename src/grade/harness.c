@@ -1,7 +1,8 @@
 /*
  * harness.c - the shared machinery of the "functions" criterion
  * (harness.h): generated sources, the compiler, probes, building and
- * running the harness and reading its log.  The exercises' cases and
+ * running the harness and reading its log (its channel, the nonce and
+ * the forged lines, is harness_channel.c's).  The exercises' cases and
  * their expected values live in functions_ej1.c, functions_ej2.c and
  * functions_ej3.c; nothing here knows a function of the course.
  *
@@ -13,6 +14,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -114,15 +116,108 @@ void harness_clean(const char *in, size_t length, char *out, size_t room)
     out[n] = '\0';
 }
 
+int harness_not_finite(const char *call, const double *v, size_t n,
+                       const char *nan_cause, const char *inf_cause,
+                       char *out, size_t room)
+{
+    size_t i, nans = 0, infs = 0;
+    char text[128];
+    for (i = 0; i < n; i++) {
+        nans += isnan(v[i]) != 0;
+        infs += isinf(v[i]) != 0;
+    }
+    if (nans == 0 && infs == 0)
+        return 0;
+    if (inf_cause == NULL)
+        inf_cause = "likely a division by 0";
+    if (n == 1) {
+        snprintf(text, sizeof text, "%g", v[0]);
+        if (nans > 0)
+            snprintf(out, room, "%s returned nan (not a number): likely %s",
+                     call, nan_cause);
+        else
+            snprintf(out, room, "%s returned %s (infinity): %s", call, text,
+                     inf_cause);
+        return 1;
+    }
+    {
+        char part[3][32];
+        for (i = 0; i < 3; i++) {
+            double x = i < n ? v[i] : 0;
+            if (isnan(x))
+                snprintf(part[i], sizeof part[i], "nan");
+            else
+                snprintf(part[i], sizeof part[i], "%.7g", x);
+        }
+        snprintf(text, sizeof text, "(%s, %s, %s)", part[0], part[1],
+                 part[2]);
+    }
+    if (nans > 0)
+        snprintf(out, room, "%s returned %s, with nan (not a number) in it: "
+                            "likely %s",
+                 call, text, nan_cause);
+    else
+        snprintf(out, room, "%s returned %s, with an infinity in it: %s",
+                 call, text, inf_cause);
+    return 1;
+}
+
+/* 1 when the quotes in text[0..n) are not all closed: ASCII ' and "
+   taken as pairs, UTF-8 left and right single quotes matched. */
+static int quotes_open(const char *text, size_t n)
+{
+    size_t i, single = 0, dbl = 0;
+    long curly = 0;
+    for (i = 0; i < n; i++) {
+        if (text[i] == '\'')
+            single++;
+        else if (text[i] == '"')
+            dbl++;
+        else if (i + 2 < n + 0 && (unsigned char)text[i] == 0xe2 &&
+                 (unsigned char)text[i + 1] == 0x80 &&
+                 ((unsigned char)text[i + 2] == 0x98 ||
+                  (unsigned char)text[i + 2] == 0x99))
+            curly += (unsigned char)text[i + 2] == 0x98 ? 1 : -1;
+    }
+    return single % 2 != 0 || dbl % 2 != 0 || curly > 0;
+}
+
+void harness_shorten(char *text, size_t max)
+{
+    size_t n = strlen(text);
+    if (n <= max || max < 8)
+        return;
+    n = max - 4; /* room for " ..." */
+    while (n > 0 && ((unsigned char)text[n] & 0xC0) == 0x80)
+        n--;
+    /* Not in the middle of a word. */
+    while (n > 0 && text[n] != ' ')
+        n--;
+    /* Nor inside quotes: back to the last space before an opening one
+       until every quote kept is closed. */
+    while (n > 0 && quotes_open(text, n)) {
+        n--;
+        while (n > 0 && text[n] != ' ')
+            n--;
+    }
+    while (n > 0 && strchr(" ,;:(", text[n - 1]) != NULL)
+        n--;
+    memcpy(text + n, " ...", 5);
+}
+
 void harness_first_error(const char *errors, char *out, size_t room)
 {
     const char *p = errors != NULL ? strstr(errors, "error: ") : NULL;
+    char whole[2048];
     if (p == NULL) {
         snprintf(out, room, "the compiler refused it");
         return;
     }
     p += 7;
-    harness_clean(p, strcspn(p, "\n"), out, room);
+    harness_clean(p, strcspn(p, "\n"), whole, sizeof whole);
+    if (room > 0)
+        harness_shorten(whole, room - 1);
+    snprintf(out, room, "%s", whole);
 }
 
 rayo_status harness_probe(grade_context *ctx, size_t i, const char *before,
@@ -220,7 +315,11 @@ void harness_previous_type(const char *errors, const char *name, char *out,
             while (length > 0 && !isalnum((unsigned char)type[length - 1]) &&
                    strchr(")*]", type[length - 1]) == NULL)
                 length--;
-            harness_clean(type, length, out, room);
+            char whole[1024];
+            harness_clean(type, length, whole, sizeof whole);
+            if (room > 0)
+                harness_shorten(whole, room - 1);
+            snprintf(out, room, "%s", whole);
         }
         return;
     }
@@ -283,39 +382,6 @@ rayo_status harness_build(grade_context *ctx, const char *source,
     free(words);
     free(harness_c);
     free(harness);
-    return status;
-}
-
-rayo_status harness_run(grade_context *ctx, char **log,
-                        grade_outcome *outcome, rayo_error *err)
-{
-    char *argv[2];
-    grade_limits limits = grade_run_limits(ctx->options);
-    grade_run run;
-    grade_captured got;
-    rayo_status status = RAYO_OK;
-    *log = NULL;
-    memset(&got, 0, sizeof got);
-    argv[0] = grade_path_join(ctx->dir, "harness");
-    argv[1] = NULL;
-    memset(&run, 0, sizeof run);
-    run.argv = argv;
-    run.role = GRADE_ROLE_STUDENT;
-    run.program = argv[0];
-    run.out_limit = LOG_LIMIT;
-    if (argv[0] == NULL)
-        status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    if (status == RAYO_OK)
-        status = grade_spawn(ctx, &run, &limits, &got, err);
-    if (status == RAYO_OK) {
-        *outcome = got.outcome;
-        *log = got.out != NULL ? got.out : strdup("");
-        got.out = NULL;
-        if (*log == NULL)
-            status = rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
-    }
-    grade_captured_free(&got);
-    free(argv[0]);
     return status;
 }
 
@@ -400,6 +466,12 @@ rayo_status harness_judge_ending(grade_context *ctx, const char *log,
     if (outcome->ending == GRADE_SIGNALED)
         return grade_fail(item, err, "%s crashed: %s", call,
                           grade_signal_name(outcome->status));
+    if (outcome->status == HARNESS_EXITED_EARLY)
+        return grade_fail(item, err, "%s ended the program (exit status 0) "
+                                     "before the other calls were made: a "
+                                     "function returns to its caller, it "
+                                     "does not call exit",
+                          call);
     return grade_fail(item, err, "%s ended the program with exit status %d",
                       call, outcome->status);
 }

@@ -5,12 +5,19 @@
  * building a harness program around the student's objects, running it
  * and reading what it printed.
  *
- * The harness protocol: before each call the generated program prints
+ * The harness protocol: before each call the generated program says
  * "call NAME K" and flushes, after it "result NAME K V1 V2 ..." (numbers
- * as %.9g, or words); "missing NAME" when a weak function is absent.
- * So a crash or a hang is pinned on the last call announced.  What the
- * cases are and what they expect is each exercise's own business
- * (functions_ej1.c, functions_ej2.c, functions_ej3.c).
+ * as %.9g, or words); "missing NAME" when a weak function is absent,
+ * "done" at the end of its main.  So a crash or a hang is pinned on the
+ * last call announced.  The student's code runs in the same process and
+ * writes to the same standard output, so each line the harness says
+ * begins with a per-run nonce that the grader writes into its standard
+ * input and that it reads before any of the student's code runs
+ * (harness_prelude); a "result" line without it, or a second result of
+ * one case, is the finding "the program wrote into the grader's
+ * channel".  What the cases are and what they expect is each
+ * exercise's own business (functions_ej1.c, functions_ej2.c,
+ * functions_ej3.c).
  *
  * Private to src/grade; not a public interface.
  */
@@ -22,6 +29,10 @@
 #include "grade_impl.h"
 
 #define HARNESS_REASON 400 /* room for one probe's reason */
+#define HARNESS_NONCE 32   /* hexadecimal digits of the channel's nonce */
+/* grade_outcome.status of a harness that exited with status 0 before
+   saying "done" (exit(0) in a student's function): not an exit status. */
+#define HARNESS_EXITED_EARLY 256
 
 /* A growing string; failed is set once memory runs out. */
 typedef struct harness_text {
@@ -69,8 +80,19 @@ rayo_status harness_build(grade_context *ctx, const char *source,
                           const char *const *extra, size_t extra_count,
                           int *ok, char **errors, rayo_error *err);
 
-/* Runs the harness under the program's limits: its standard output in
-   *log (allocated, NUL-terminated), how it ended in *outcome. */
+/* The start of every harness source: the headers it needs, the nonce
+   read from standard input (from .preinit_array, before any constructor
+   of the student's; standard input then closed), and
+   rayo_say(format, ...), which prints one line framed by the nonce and
+   flushes.  The generated code says every protocol line with it. */
+void harness_prelude(harness_text *t);
+
+/* Runs the harness under the program's limits with a fresh nonce on its
+   standard input: in *log (allocated, NUL-terminated) the protocol lines
+   it said, unframed (of each case the last result), and the student's
+   own output; how it ended in *outcome (HARNESS_EXITED_EARLY when it
+   exited 0 before "done").  Lines posing as the harness's fail the
+   criterion with the channel finding. */
 rayo_status harness_run(grade_context *ctx, char **log,
                         grade_outcome *outcome, rayo_error *err);
 
@@ -96,8 +118,40 @@ rayo_status harness_judge_ending(grade_context *ctx, const char *log,
                                  const grade_outcome *outcome,
                                  harness_describe describe, rayo_error *err);
 
+/* The likely causes of a NaN a function returns, by kind of function. */
+#define HARNESS_NAN_ARITHMETIC "0/0 or the square root of a negative number"
+#define HARNESS_NAN_DISCRIMINANT                                            \
+    "the square root of a negative discriminant (delta < 0: the ray "       \
+    "misses; test it before taking the root) or 0/0"
+#define HARNESS_NAN_NORMAL                                                  \
+    "a vector of length 0 divided by its length (0/0)"
+#define HARNESS_NAN_SHADING                                                 \
+    "0/0, the square root of a negative discriminant or a normal of "      \
+    "length 0"
+#define HARNESS_INT_MIN -2147483648.0
+
+/* When one of v[0..n-1] (n 1: a number, 3: a vector or colour) is NaN
+   or infinite: the whole reason line for call in out ("... returned nan
+   (not a number): likely CAUSE"), nan_cause for a NaN and inf_cause
+   for an infinity (a whole clause; NULL: "likely a division by 0"),
+   and 1; else 0. */
+int harness_not_finite(const char *call, const double *v, size_t n,
+                       const char *nan_cause, const char *inf_cause,
+                       char *out, size_t room);
+
+/* Cuts text (in place) to at most max bytes when it is longer: at a
+   space, never inside a word, a UTF-8 sequence or an open quote, and
+   " ..." after it. */
+void harness_shorten(char *text, size_t max);
+
 /* Escapes control bytes and bounds the length: for untrusted text. */
 void harness_clean(const char *in, size_t length, char *out, size_t room);
+
+/* The harness source of ej2 and ej3 with every function called
+   (allocated; NULL when memory runs out): for the tests, which check
+   that the course's scene it passes is the course module's. */
+char *grade_functions_ej2_source(void);
+char *grade_functions_ej3_source(void);
 
 /* The step for each exercise (functions_ejN.c). */
 rayo_status grade_functions_ej1(grade_context *ctx, rayo_error *err);

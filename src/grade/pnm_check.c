@@ -32,6 +32,7 @@ typedef struct sample_tally {
     unsigned long long samples, bad, comments;
     size_t first_bad, first_comment;
     sample_note above, negative, fraction;
+    sample_note int_min;    /* -2147483648: a NaN or overflow through (int) */
     unsigned long largest;  /* the largest sample, saturated */
     int over_one;           /* some sample is above 1 */
 } sample_tally;
@@ -41,6 +42,7 @@ typedef struct sample {
     size_t offset, length;
     unsigned long value; /* the whole part, saturated */
     int negative, fraction, fraction_nonzero;
+    int int_min; /* exactly -2147483648 */
 } sample;
 
 static const char *header_name(int magic)
@@ -153,6 +155,8 @@ static int read_sample(netpbm_scan *s, sample *n)
                 n->fraction_nonzero = 1;
     }
     n->length = p - s->pos;
+    n->int_min = n->length == 11 && !n->fraction &&
+                 memcmp(s->data + s->pos, "-2147483648", 11) == 0;
     s->pos = p;
     return 1;
 }
@@ -180,7 +184,9 @@ static void take_sample(sample_tally *t, const sample *n,
     if (index < row_samples * image->info.height)
         rayo_image_row(image, (uint32_t)(index / row_samples))
             [index % row_samples] = (unsigned char)value;
-    if (n->negative)
+    if (n->int_min)
+        note(&t->int_min, n, index);
+    else if (n->negative)
         note(&t->negative, n, index);
     else if (n->value > STATEMENT_MAXVAL)
         note(&t->above, n, index);
@@ -274,6 +280,18 @@ static void say_wrong_numbers(netpbm_scan *s, const netpbm_kind *kind,
                        "L.N < 0 (the statement adds it only when L.N > 0); "
                        "the comparison takes %s as 0",
                     n->count, n->count == 1 ? "" : "s", seen, at,
+                    n->count == 1 ? "it" : "them");
+    }
+    n = &t->int_min;
+    if (n->count > 0) {
+        describe(s, kind, w, h, n, at, sizeof at);
+        NETPBM_FAIL(s, "%llu number%s -2147483648, the first at %s: that is "
+                       "what a NaN (not a number) or a value past the int "
+                       "range becomes through (int), not an intensity; look "
+                       "for 0/0, the square root of a negative "
+                       "discriminant or a normal of length 0; the "
+                       "comparison takes %s as 0",
+                    n->count, n->count == 1 ? " is" : "s are", at,
                     n->count == 1 ? "it" : "them");
     }
     n = &t->fraction;

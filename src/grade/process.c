@@ -122,6 +122,7 @@ typedef struct child_fds {
     int out, err;            /* captures */
     int log, log_number;     /* the log socket's write end, its number */
     int json, name, file;    /* sandbox only; -1 when unused */
+    int in;                  /* standard input; -1: /dev/null */
 } child_fds;
 
 /* fd onto number, even when it already is that number (dup2 would
@@ -168,7 +169,7 @@ static void child(const char *program, char *const argv[],
                   const grade_limits *limits, const grade_cgroup *cg,
                   long max_fd)
 {
-    int fd, moved[6], i;
+    int fd, moved[6], in = -1, i;
     long k;
     /* Into the run's cgroup before anything else: all it starts is
        counted there. */
@@ -194,7 +195,9 @@ static void child(const char *program, char *const argv[],
             }
         }
     }
-    fd = open("/dev/null", O_RDONLY);
+    if (fds->in >= 0 && (in = fcntl(fds->in, F_DUPFD, 20)) < 0)
+        _exit(126);
+    fd = in >= 0 ? in : open("/dev/null", O_RDONLY);
     if (fd < 0 || dup2(fd, 0) < 0)
         _exit(126);
     if (place(moved[0], 1) != 0 || place(moved[1], 2) != 0)
@@ -555,6 +558,7 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
         if (status != RAYO_OK)
             goto done;
     }
+    fds.in = run->input > 0 ? run->input : -1;
     pid = fork();
     if (pid < 0) {
         status = rayo_error_set(err, RAYO_ERR_IO, "grade: cannot start %s: %s",

@@ -155,6 +155,14 @@ else
     diag "valgrind is not installed: its criterion is not tested"
 fi
 
+# --- issue 24: NaN, and the statements' two readings ----------------------
+check ej2_nan_miss "$BAD_FN image=pass" \
+    'distancia_esfera\(\(0, 0, 3\), 1, \(0, 0, 0\), \(1, 0, 0\)\) returned nan \(not a number\): likely the square root of a negative discriminant'
+check ej3_shadow_beyond_light "$OK4 image=pass" \
+    "computar_intensidad: a sphere beyond a point light casts a shadow: the statement's rule .* read to the letter, accepted"
+check ej3_imprimir_rounds "$OK4 image=pass" \
+    "color_imprimir: rounds 255 c to the nearest integer \(0\.999 prints 255\) instead of taking its integer part \(254\): a reading of the statement's 'scale 0\.\.1 to the integers 0\.\.255', accepted"
+
 # --- a class, and JSON ----------------------------------------------------
 mkdir "$TMP/class"
 cp -r "$STUDENTS/ej3_correct" "$STUDENTS/ej3_channels_bgr" "$TMP/class/"

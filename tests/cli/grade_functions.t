@@ -30,18 +30,40 @@ says() {
     [ "$found" -eq 0 ] || sed 's/^/#   /' "$TMP/functions"
 }
 
+# right NAME N NAME: the one line that sums up the passing functions
+# names NAME with its N known inputs.
+right() {
+    found=0
+    grep -q "^right on all their known inputs: \(.*, \)\{0,1\}$1 ($2)\(,\|\$\)" "$TMP/functions" || found=1
+    ok "$found" "$3"
+    [ "$found" -eq 0 ] || sed 's/^/#   /' "$TMP/functions"
+}
+
 registered() {
     rayo grade --help 2>/dev/null | grep -q "^  $1 "
 }
+
+# The channel (issue 25): a submission whose functions are all wrong and
+# that prints the expected results on its first call fails, named.
+grade ej1 "$STUDENTS/hostile/forge_functions/main.c"
+is "$result" FAIL "forge_functions: the functions fail"
+says "the program wrote into the grader's channel: 12 lines posing as the harness's results (the first: \"result producto_interno 0 32\"); a function's results come from what it returns, never from what it prints" \
+    "forge_functions: the channel finding, first"
+is "$(head -n 1 "$TMP/functions" | cut -c1-44)" "the program wrote into the grader's channel:" \
+    "forge_functions: the finding is the first line"
+says "norma(3, 4, 12) returned 169; expected 13" \
+    "forge_functions: the real results are judged"
+says "intersecta_esfera(0, 0, 1) returned 1; expected 0 (this ray misses the sphere)" \
+    "forge_functions: intersecta_esfera's real result"
 
 tested=0
 if registered ej2; then
     tested=1
     grade ej2 "$FIX/ej2_right.c"
     is "$result" pass "ej2 right: the functions pass"
-    is "$(wc -l <"$TMP/functions" | tr -d ' ')" 8 "ej2 right: eight functions"
-    says "distancia_esfera: right on 6 known inputs" "ej2 right: distancia_esfera"
-    says "computar_intensidad: right on 11 known inputs" \
+    is "$(wc -l <"$TMP/functions" | tr -d ' ')" 1 "ej2 right: the eight functions in one line"
+    right distancia_esfera 6 "ej2 right: distancia_esfera"
+    right computar_intensidad 11 \
         "ej2 right: computar_intensidad"
 
     grade ej2 "$FIX/ej2_near_root_always.c"
@@ -52,7 +74,7 @@ if registered ej2; then
     grade ej2 "$FIX/ej2_normal_crash.c"
     says "normal_esfera(n, (1, 2, 3), 2, (1, 2, 5)) crashed: segmentation fault (SIGSEGV)" \
         "ej2 crash: pinned on the call"
-    says "distancia_esfera: right on 6 known inputs" \
+    right distancia_esfera 6 \
         "ej2 crash: the functions called before it are judged"
 
     mkdir "$TMP/scratch"
@@ -64,7 +86,7 @@ if registered ej2; then
     grade ej2 "$FIX/ej2_no_intensidad.c"
     says "computar_intensidad: not defined; the statement asks for int computar_intensidad(const float cs[][3], const float rs[], size_t n_esferas, const float luz[3], const float o[3], const float d[3])" \
         "ej2 missing function: named with the statement's prototype"
-    says "normal_esfera: right on 2 known inputs" \
+    right normal_esfera 2 \
         "ej2 missing function: the others are called"
 
     if [ -d "$STUDENTS/ej2_correct" ]; then
@@ -82,7 +104,7 @@ if registered ej2; then
         grade ej2 "$STUDENTS/ej2_wrong_signature/main.c"
         grep -q "^normal_esfera: the signature differs from the statement's void normal_esfera(float normal\[3\], const float c\[3\], float r, const float p\[3\]) (the compiler says: .*); not called$" "$TMP/functions"
         ok $? "ej2_wrong_signature: reported as ej1's are"
-        says "computar_intensidad: right on 11 known inputs" \
+        right computar_intensidad 11 \
             "ej2_wrong_signature: the others are still called"
     else
         diag "tests/grade/ej2_* not there: the corpus is not tested"
@@ -95,26 +117,30 @@ if registered ej3; then
     tested=1
     grade ej3 "$FIX/ej3_right.c"
     is "$result" pass "ej3 right: the functions pass"
-    is "$(wc -l <"$TMP/functions" | tr -d ' ')" 15 "ej3 right: fifteen functions"
-    says "arreglo_agregar: right on 2 known inputs" "ej3 right: arreglo_agregar"
-    says "color_imprimir: right on 4 known inputs" "ej3 right: color_imprimir"
+    is "$(wc -l <"$TMP/functions" | tr -d ' ')" 2 "ej3 right: the fifteen functions in one line, and the shadows' reading"
+    says "computar_intensidad: only a sphere between the point and a point light casts a shadow, not one beyond the light: one of the statement's two readings, accepted; the other, to the letter (an object in the light's direction casts a shadow), is accepted too, and the course's scenes look the same either way" \
+        "ej3 right: the shadows' reading named"
+    right arreglo_agregar 2 "ej3 right: arreglo_agregar"
+    right color_imprimir 4 "ej3 right: color_imprimir"
 
     grade ej3 "$FIX/ej3_realloc_direct.c"
     says "arreglo_agregar lost the array when realloc failed: a->v became NULL; keep realloc's result in a temporary and assign it only when it is not NULL" \
         "ej3 realloc into a->v: the lost array named"
 
     grade ej3 "$FIX/ej3_beyond_light.c"
-    says "computar_intensidad on a sphere (0, 0, 3) r 1, a point light at (0, 0, 1) and a sphere (0, 0, -2) r 0.5 beyond the light, along d = (0, 0, 1) returned (0.1, 0.1, 0.1); expected (0.6, 0.6, 0.6): the sphere at (0, 0, -2) of colour (1, 1, 1) lies beyond the point light, not between the point and the light, and casts no shadow: only a sphere hit at t < |posicion - P| does" \
-        "ej3 a sphere beyond a point light: named"
+    is "$result" pass "ej3 a sphere beyond a point light casts a shadow: accepted"
+    says "computar_intensidad: a sphere beyond a point light casts a shadow: the statement's rule (an object in the light's direction casts a shadow) read to the letter, accepted; the other reading, a shadow only from a sphere between the point and the light, is accepted too, and the course's scenes look the same either way" \
+        "ej3 a sphere beyond a point light: the reading named"
 
     grade ej3 "$FIX/ej3_imprimir_rounds.c"
-    says 'color_imprimir((0.999, 0.5, 0)) printed "255 128 0"; expected "254 127 0": 255 x 0.999 was rounded; the byte is the integer part of 255 c' \
-        "ej3 color_imprimir rounding: named"
+    is "$result" pass "ej3 color_imprimir rounding: accepted"
+    says "color_imprimir: rounds 255 c to the nearest integer (0.999 prints 255) instead of taking its integer part (254): a reading of the statement's 'scale 0..1 to the integers 0..255', accepted" \
+        "ej3 color_imprimir rounding: the reading named"
 
     grade ej3 "$FIX/ej3_double_vector.c"
     says "vector_t: its member x is not of the statement's type; the statement gives typedef struct { float x, y, z; } vector_t;" \
         "ej3 double members: the type named"
-    says "color_imprimir: right on 4 known inputs" \
+    right color_imprimir 4 \
         "ej3 double members: the functions without vector_t are called"
 
     if [ -d "$STUDENTS/ej3_realloc_loses" ]; then

@@ -78,7 +78,7 @@ is "$results" "compile=pass functions=FAIL run=pass output=pass image=pass valgr
 says 'norma\(0\.5, 0\.5, 0\.5\) returned 0; expected 0\.8660254' \
     "integer norma: input, result and expected value"
 says 'is an int used inside the function' "integer norma: truncation named"
-says 'producto_interno: right on 3 known inputs' "integer norma: the others are right"
+says '^ +right on all their known inputs: producto_interno \(3\)' "integer norma: the others are right"
 
 grade wrong_signature --no-valgrind
 is "$results" "compile=pass functions=FAIL run=pass output=pass image=pass valgrind=skipped" \
@@ -86,7 +86,7 @@ is "$results" "compile=pass functions=FAIL run=pass output=pass image=pass valgr
 says "norma: the signature differs from the assignment's float norma\(float x, float y, float z\)" \
     "wrong signature: reported, not fatal"
 says 'double' "wrong signature: the student's types are quoted"
-says 'intersecta_esfera: right on 5 known inputs' "wrong signature: the others are still called"
+says '^ +right on all their known inputs: .*intersecta_esfera \(5\)$' "wrong signature: the others are still called"
 
 grade werror --no-valgrind
 is "$status" 1 "-Werror: exit status 1"
@@ -94,6 +94,12 @@ is "$results" "compile=FAIL functions=skipped run=skipped output=skipped image=s
     "-Werror: compile fails, the rest is skipped"
 says 'unused variable' "-Werror: the compiler's first error is quoted"
 says 'that -Werror turns into an error' "-Werror: explained"
+
+grade macro_parameter --no-valgrind
+is "$results" "compile=FAIL functions=skipped run=skipped output=skipped image=skipped valgrind=skipped" \
+    "a parameter named as a macro: compile fails"
+says "the first real error is at [^ ]*/macro_parameter/main\.c:23:30, where the name CX is one of the file's macros \(#define CX\): the preprocessor puts the macro's value in its place, so a parameter or a variable cannot have that name; rename it" \
+    "a parameter named as a macro: the hint points at the parameter"
 
 mkdir "$TMP/scratch"
 TMPDIR="$TMP/scratch" grade infinite_loop --no-valgrind --timeout 1

@@ -182,6 +182,21 @@ static void test_out_of_range(void)
     is_string(got, "0 0 0 0/0 0 0 0", "negative: salvaged as 0");
     release(&o);
 
+    check("P2\n4 1\n255\n0 -2147483648 -3 -2147483648\n", '2', 4, 1, &o);
+    ok(says(&o, "2 numbers are -2147483648, the first at line 4, column 3 "
+                "(pixel (1, 0)): that is what a NaN (not a number) or a "
+                "value past the int range becomes through (int), not an "
+                "intensity; look for 0/0, the square root of a negative "
+                "discriminant or a normal of length 0; the comparison takes "
+                "them as 0"),
+       "-2147483648: a NaN through (int), not a negative intensity");
+    ok(says(&o, "1 negative number; the first, '-3', at line 4, column 15 "
+                "(pixel (2, 0)): a negative intensity"),
+       "-2147483648: the other negative number is said apart");
+    samples(&o.image, got, sizeof got);
+    is_string(got, "0 0 0 0", "-2147483648: salvaged as 0");
+    release(&o);
+
     check("P3\n1 2\n255\n1 2 3\n4 -5 6\n", '3', 1, 2, &o);
     ok(says(&o, "'-5', at line 5, column 3 (pixel (0, 1), channel G)"),
        "P3 negative: pixel and channel");
