@@ -660,6 +660,33 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
     return RAYO_OK;
 }
 
+/* With the reference one of the course's scenes and no mistake found
+   (or only a constant offset, which the scene's constants say better),
+   what the image differs from the scene in (tone_scene.c): named, it is
+   the diagnosis; else, for UNKNOWN, where the differences lie. */
+static rayo_status against_scene(const tone_image *ref,
+                                 const tone_image *image, const choice *ch,
+                                 rayo_compare_report *r, rayo_error *err)
+{
+    int named = 0;
+    rayo_status s;
+    int offset = ch->found && ch->mistake < 0 &&
+                 (ch->t.kind == TONE_OFFSET ||
+                  ch->t.kind == TONE_OFFSET_ON_SHAPES);
+    if (r->tone.course < 0 || (ch->found && !offset))
+        return RAYO_OK;
+    s = tone_scene_find(ref, image, r->tone.course, r, &named, err);
+    if (s != RAYO_OK)
+        return s;
+    if (named) {
+        r->diagnosis = RAYO_DIAGNOSIS_SCENE;
+        r->diagnosis_exact = 0;
+    } else if (ch->found) {
+        r->tone.findings = 0; /* the offset says it */
+    }
+    return RAYO_OK;
+}
+
 rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
                           const rayo_compare_options *options,
                           rayo_compare_report *r, rayo_error *err)
@@ -700,5 +727,5 @@ rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
         name_choice(&ch, r);
     else
         r->diagnosis = RAYO_DIAGNOSIS_UNKNOWN;
-    return RAYO_OK;
+    return against_scene(ref, image, &ch, r, err);
 }

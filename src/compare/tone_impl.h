@@ -230,6 +230,23 @@ rayo_status tone_write_diff(const rayo_image *reference,
                             const rayo_compare_options *options,
                             rayo_output *out, rayo_error *err);
 
+/* tone_scene.c: what image differs from the course's scene `course`
+   (EJ2 or EJ3) in, into r->tone.finding: *named 1 when something is
+   named (a background, a sphere, a constant), else the findings say
+   only where the differences lie (RAYO_FINDING_WHERE).  The scene's map
+   is kept until tone_scene_release_cache (rayo_compare_release_cache). */
+rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
+                            int course, rayo_compare_report *r, int *named,
+                            rayo_error *err);
+void tone_scene_release_cache(void);
+
+/* tone_scene_text.c: the findings as sentences joined by "; ", and as
+   the JSON member "findings". */
+struct cmp_sink;
+void tone_put_findings(const rayo_compare_report *r, struct cmp_sink *s);
+void tone_put_findings_json(const rayo_compare_report *r,
+                            struct cmp_sink *s);
+
 /* tone_format.c: the tone parts of report_format.c's forms. */
 struct cmp_sink;
 void tone_format_text(const rayo_compare_report *r, struct cmp_sink *s);

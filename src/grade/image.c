@@ -120,6 +120,7 @@ static rayo_status say_diagnosis(rayo_grade_item *item,
     case RAYO_DIAGNOSIS_WRAPPED:
     case RAYO_DIAGNOSIS_MISTAKE:
     case RAYO_DIAGNOSIS_OUT_OF_RANGE:
+    case RAYO_DIAGNOSIS_SCENE:
         break;
     }
     return grade_fail(item, err, "no simple mistake explains the "
