@@ -22,8 +22,10 @@
 #include "../course/course_impl.h"
 #include "tone_impl.h"
 
-/* Objects smaller than this (pixels) are not named as added. */
-#define ADDED_MIN 30
+/* Objects smaller than this (pixels), or filling less than half their
+   box (specks of noise joined), are not named as added; nor is one
+   that covers more than a quarter of the background. */
+#define ADDED_MIN 100
 /* More stray regions than this on the background: not objects. */
 #define ADDED_MAX 4
 /* A sphere whose pixels show the background at least this share of
@@ -32,6 +34,15 @@
 #define PARTLY_SHARE 0.2
 /* Fewest pixels a finding about a sphere or a constant stands on. */
 #define FEW 20
+/* A pixel of a sphere tells a missing sphere only where the scene's
+   value is this far (levels) from black and from the background. */
+#define CLEAR 16
+/* Pixels below the ambient term are named when they are at least this
+   share of the lit, the shadowed or the unlit pixels (not noise) ... */
+#define BELOW_SHARE 0.5
+/* ... and darker than the ambient term by this many levels more than
+   the comparison's own (a level or two of noise is not a finding). */
+#define DARK_MARGIN 2
 
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 static rayo_course_map maps[RAYO_COURSE_EXERCISES];
@@ -163,8 +174,8 @@ typedef struct region {
    ADDED_MAX + 1 of at least ADDED_MIN pixels into out (largest first);
    their number returned (ADDED_MAX + 1: too many to be objects). */
 static rayo_status find_regions(unsigned char *mark, uint32_t width,
-                                uint32_t height, region *out,
-                                size_t *found, rayo_error *err)
+                                uint32_t height, uint64_t background,
+                                region *out, size_t *found, rayo_error *err)
 {
     size_t pixels = (size_t)width * height, p, n = 0;
     uint32_t *stack = malloc(pixels * sizeof *stack);
@@ -205,7 +216,9 @@ static rayo_status find_regions(unsigned char *mark, uint32_t width,
             if (y + 1 < (int32_t)height && mark[q + width] == 1)
                 mark[q + width] = 2, stack[top++] = q + width;
         }
-        if (g.pixels < ADDED_MIN)
+        if (g.pixels < ADDED_MIN ||
+            2 * g.pixels < (uint64_t)(g.box[2] - g.box[0] + 1) *
+                               (uint64_t)(g.box[3] - g.box[1] + 1))
             continue;
         /* kept in order, largest first */
         for (k = n < ADDED_MAX + 1 ? n : ADDED_MAX; k > 0; k--) {
@@ -218,6 +231,8 @@ static rayo_status find_regions(unsigned char *mark, uint32_t width,
             out[k] = g;
         if (n < ADDED_MAX + 1)
             n++;
+        if (4 * g.pixels > background)
+            n = ADDED_MAX + 1; /* not an object: the picture is off */
     }
     free(stack);
     *found = n;
@@ -232,7 +247,8 @@ static rayo_status find_objects(scene_work *w, rayo_error *err)
     const rayo_course_map *m = w->map;
     size_t pixels = (size_t)m->width * m->height, p, i, found = 0;
     size_t balls = w->data->ball_count;
-    uint64_t area[32], eligible[32], shows_bg[32];
+    uint64_t area[32], eligible[32], shows_bg[32], background = 0;
+    int black[3] = {0, 0, 0};
     region regions[ADDED_MAX + 1];
     int used[ADDED_MAX + 1];
     unsigned char *mark;
@@ -255,14 +271,19 @@ static rayo_status find_objects(scene_work *w, rayo_error *err)
             continue;
         if (b < 0) {
             mark[p] = !is_bg(w, v);
+            background++;
             continue;
         }
-        if (is_bg(w, w->ref->v + p * w->n))
-            continue; /* the scene's own value there: says nothing */
+        /* where the scene's value is near black or the background, the
+           background in the image says nothing */
+        if (near_value(w->ref->v + p * w->n, w->bg, w->n, CLEAR) ||
+            near_value(w->ref->v + p * w->n, black, w->n, CLEAR))
+            continue;
         eligible[b]++;
         shows_bg[b] += is_bg(w, v);
     }
-    s = find_regions(mark, m->width, m->height, regions, &found, err);
+    s = find_regions(mark, m->width, m->height, background, regions, &found,
+                     err);
     free(mark);
     if (s != RAYO_OK)
         return s;
@@ -445,36 +466,46 @@ static void find_light(scene_work *w)
 }
 
 /* Pixels of the spheres darker than their ambient term, which the model
-   never gives; the sphere with most of them, and how many lie in a
-   shadow another sphere casts. */
+   never gives, named when they are a good share of the lit, the
+   shadowed (by another sphere) or the unlit pixels, not specks of
+   noise; the sphere with most of them, and how many are shadowed. */
 static void find_below(scene_work *w)
 {
     const rayo_course_map *m = w->map;
     size_t pixels = (size_t)m->width * m->height, p, l;
-    uint64_t per_ball[32], count = 0, shadowed = 0, most = 0;
-    int b, best = -1;
+    uint64_t per_ball[32], count = 0, most = 0;
+    uint64_t below[3] = {0, 0, 0}, of[3] = {0, 0, 0}; /* lit, cast, unlit */
+    int b, best = -1, k, shared = 0;
     unsigned c;
     memset(per_ball, 0, sizeof per_ball);
     for (p = 0; p < pixels; p++) {
-        int below = 0, cast = 0;
+        int dark = 0, lit = 0, cast = 0;
         if (!on_sphere(w, p))
             continue;
         b = m->ball[p];
         for (c = 0; c < w->n; c++) {
             int a = ambient_byte(w, b, c);
-            if (w->image->v[p * w->n + c] + (int)w->levels < a)
-                below = 1;
+            if (w->image->v[p * w->n + c] + (int)w->levels + DARK_MARGIN <
+                a)
+                dark = 1;
         }
-        if (!below)
+        for (l = 0; l < m->lamp_count; l++) {
+            float f = m->light[p * m->lamp_count + l];
+            lit |= f > 0;
+            cast |= f < 0;
+        }
+        k = lit ? 0 : cast ? 1 : 2;
+        of[k]++;
+        if (!dark)
             continue;
-        for (l = 0; l < m->lamp_count; l++)
-            if (m->light[p * m->lamp_count + l] < 0)
-                cast = 1;
+        below[k]++;
         per_ball[b]++;
         count++;
-        shadowed += cast;
     }
-    if (count < FEW)
+    for (k = 0; k < 3; k++)
+        if (below[k] >= FEW && (double)below[k] >= BELOW_SHARE * (double)of[k])
+            shared = 1;
+    if (!shared)
         return;
     for (b = 0; b < (int)w->data->ball_count; b++)
         if (per_ball[b] > most) {
@@ -489,7 +520,7 @@ static void find_below(scene_work *w)
         ball_at(w, best, f);
         f->pixels = count;
         f->total = most;
-        f->shadowed = shadowed;
+        f->shadowed = below[1];
         for (c = 0; c < w->n; c++)
             f->expected[c] = w->data->ambient[c];
     }
