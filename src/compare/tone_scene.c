@@ -30,8 +30,12 @@
 #define ADDED_MAX 4
 /* A sphere whose pixels show the background at least this share of
    them is missing; from PARTLY_SHARE on it is partly drawn. */
-#define MISSING_SHARE 0.9
+#define MISSING_SHARE 0.75
 #define PARTLY_SHARE 0.2
+/* A missing sphere is moved when an object of about its size (its
+   whole disc, within this factor: the frame may cut it, perspective
+   stretch it) is where the scene shows background. */
+#define MOVED_SIZE 3
 /* Fewest pixels a finding about a sphere or a constant stands on. */
 #define FEW 20
 /* A pixel of a sphere tells a missing sphere only where the scene's
@@ -265,8 +269,6 @@ static rayo_status find_objects(scene_work *w, rayo_error *err)
     for (p = 0; p < pixels; p++) {
         int b = m->ball[p];
         const unsigned char *v = w->image->v + p * w->n;
-        if (b >= 0)
-            area[b]++;
         if (!m->core[p])
             continue;
         if (b < 0) {
@@ -290,6 +292,12 @@ static rayo_status find_objects(scene_work *w, rayo_error *err)
     if (found > ADDED_MAX)
         found = 0; /* a background of noise, not objects */
     for (i = 0; i < balls; i++) {
+        /* its whole disc, hidden parts too: the size it has moved */
+        const rayo_course_ball *ball = &w->data->balls[i];
+        double r = m->focal * ball->radius / ball->center[2];
+        area[i] = (uint64_t)(3.14159 * r * r);
+    }
+    for (i = 0; i < balls; i++) {
         rayo_compare_finding *f;
         double share;
         size_t k, best = found;
@@ -300,8 +308,8 @@ static rayo_status find_objects(scene_work *w, rayo_error *err)
             continue;
         w->gone[i] = share >= MISSING_SHARE;
         for (k = 0; w->gone[i] && k < found; k++)
-            if (!used[k] && 2 * regions[k].pixels >= area[i] &&
-                regions[k].pixels <= 2 * area[i] &&
+            if (!used[k] && MOVED_SIZE * regions[k].pixels >= area[i] &&
+                regions[k].pixels <= MOVED_SIZE * area[i] &&
                 (best == found || regions[k].pixels > regions[best].pixels))
                 best = k;
         f = add_finding(w->r, !w->gone[i]   ? RAYO_FINDING_PARTLY
