@@ -141,6 +141,33 @@ static rayo_status judge_mask(rayo_grade_item *item,
         return grade_say(item, err, "identical to the reference, pixel for "
                                     "pixel");
     }
+    if (r->verdict == RAYO_VERDICT_CONSISTENT && r->scale_found > 1) {
+        /* compare found the course's focal distance (diagnose.c) */
+        item->result = RAYO_GRADE_PASS;
+        return grade_say(item, err, "consistent with the reference: %llu "
+                                    "pixels differ (%.3f%%), all within %g "
+                                    "pixels of the sphere's outline, "
+                                    "because your sphere is %.2f%% larger "
+                                    "than the formula's, as in the course's "
+                                    "own reference: z = ANCHO / (2 "
+                                    "tan(FOV/2)) gives 320 and yours is "
+                                    "about 321.5 (is PI sqrt(9.81)?)",
+                         (unsigned long long)r->mismatches,
+                         r->mismatch_percent, r->tolerance,
+                         100 * (r->scale_found - 1));
+    }
+    if (r->verdict == RAYO_VERDICT_CONSISTENT && r->scale_found < 1) {
+        item->result = RAYO_GRADE_PASS;
+        return grade_say(item, err, "consistent with the reference: %llu "
+                                    "pixels differ (%.3f%%), all within %g "
+                                    "pixels of the sphere's outline, "
+                                    "because the reference was drawn with "
+                                    "the course's focal distance, z = 321.5 "
+                                    "(pi as sqrt(9.81)), where the formula "
+                                    "gives 320",
+                         (unsigned long long)r->mismatches,
+                         r->mismatch_percent, r->tolerance);
+    }
     if (r->verdict == RAYO_VERDICT_CONSISTENT) {
         item->result = RAYO_GRADE_PASS;
         return grade_say(item, err, "consistent with the reference: %llu "
