@@ -660,60 +660,6 @@ static rayo_status try_all(const tone_image *ref, const tone_image *image,
     return RAYO_OK;
 }
 
-/* Whether the findings are only the ambient term (and the background,
-   which an ambient of the same value may colour), changed by the
-   offset the choice found on the objects: an IA of 20 for 5 is an
-   offset of +15 on every sphere, and the scene's words say which
-   constant it is. */
-static int ambient_is_offset(const rayo_compare_report *r, const choice *ch)
-{
-    unsigned i, c, ambient = 0;
-    for (i = 0; i < r->tone.findings; i++) {
-        const rayo_compare_finding *f = &r->tone.finding[i];
-        if (f->kind == RAYO_FINDING_BACKGROUND)
-            continue;
-        if (f->kind != RAYO_FINDING_AMBIENT)
-            return 0;
-        for (c = 0; c < r->tone.channels; c++) {
-            double seen = r->tone.course == RAYO_COURSE_EJ2
-                              ? f->value[c] - f->expected[c]
-                              : 255 * (f->value[c] - f->expected[c]);
-            if (fabs(seen - ch->t.offset[c]) > r->tone.levels + 1)
-                return 0;
-        }
-        ambient = 1;
-    }
-    return ambient;
-}
-
-/* With the reference one of the course's scenes and no mistake found
-   (or only a constant offset, which the scene's constants say better),
-   what the image differs from the scene in (tone_scene.c): named, it is
-   the diagnosis; else, for UNKNOWN, where the differences lie. */
-static rayo_status against_scene(const tone_image *ref,
-                                 const tone_image *image, const choice *ch,
-                                 rayo_compare_report *r, rayo_error *err)
-{
-    int named = 0;
-    rayo_status s;
-    int offset = ch->found && ch->mistake < 0 &&
-                 ch->t.kind == TONE_OFFSET_ON_SHAPES;
-    if (r->tone.course < 0 || (ch->found && !offset))
-        return RAYO_OK;
-    s = tone_scene_find(ref, image, r->tone.course, r, &named, err);
-    if (s != RAYO_OK)
-        return s;
-    if (offset && !(named && ambient_is_offset(r, ch))) {
-        r->tone.findings = 0; /* the offset says it as well */
-        return RAYO_OK;
-    }
-    if (named) {
-        r->diagnosis = RAYO_DIAGNOSIS_SCENE;
-        r->diagnosis_exact = 0;
-    }
-    return RAYO_OK;
-}
-
 rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
                           const rayo_compare_options *options,
                           rayo_compare_report *r, rayo_error *err)
@@ -754,5 +700,12 @@ rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
         name_choice(&ch, r);
     else
         r->diagnosis = RAYO_DIAGNOSIS_UNKNOWN;
-    return against_scene(ref, image, &ch, r, err);
+    /* against the course's scene when nothing, or only an offset on
+       the objects, was found (tone_scene.c) */
+    return tone_scene_diagnose(
+        ref, image, ch.found,
+        ch.found && ch.mistake < 0 && ch.t.kind == TONE_OFFSET_ON_SHAPES
+            ? ch.t.offset
+            : NULL,
+        r, err);
 }

@@ -9,6 +9,9 @@
  *                   undone by a candidate mistake: statistics, and which
  *                   differences an edge or the shading explains;
  *   tone_diagnose.c the candidate mistakes, tried one at a time;
+ *   tone_scene*.c   against one of the course's scenes, what the image
+ *                   differs from it in (a background, a sphere, a
+ *                   constant), and its words;
  *   tone_diff.c     the difference picture;
  *   tone_format.c   the report as text and JSON;
  *   tone_cache.c    the reference's maps and the course's render, kept
@@ -239,6 +242,18 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
                             int course, rayo_compare_report *r, int *named,
                             rayo_error *err);
 void tone_scene_release_cache(void);
+
+/* The diagnosis against the course's scene, after tone_diagnose's
+   candidates: found, whether one was chosen (r has its diagnosis);
+   offset, its offsets when it is an offset on the objects, else NULL.
+   With nothing found, or such an offset that the ambient term explains,
+   the findings make the diagnosis RAYO_DIAGNOSIS_SCENE; with nothing
+   found and nothing named, UNKNOWN keeps the findings that say where
+   the differences lie. */
+rayo_status tone_scene_diagnose(const tone_image *ref,
+                                const tone_image *image, int found,
+                                const int *offset, rayo_compare_report *r,
+                                rayo_error *err);
 
 /* tone_scene_text.c: the findings as sentences joined by "; ", and as
    the JSON member "findings". */

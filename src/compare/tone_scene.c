@@ -15,32 +15,13 @@
  * to a picture: the course's scene, read against the image, and only
  * for EJ2 (gray) and EJ3 (colour) at 640x480.
  */
+#include <math.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "../course/course_impl.h"
-#include "tone_impl.h"
+#include "tone_scene.h"
 
-/* Objects smaller than this (pixels), or filling less than half their
-   box (specks of noise joined), are not named as added; nor is one
-   that covers more than a quarter of the background. */
-#define ADDED_MIN 100
-/* More stray regions than this on the background: not objects. */
-#define ADDED_MAX 4
-/* A sphere whose pixels show the background at least this share of
-   them is missing; from PARTLY_SHARE on it is partly drawn. */
-#define MISSING_SHARE 0.75
-#define PARTLY_SHARE 0.2
-/* A missing sphere is moved when an object of about its size (its
-   whole disc, within this factor: the frame may cut it, perspective
-   stretch it) is where the scene shows background. */
-#define MOVED_SIZE 3
-/* Fewest pixels a finding about a sphere or a constant stands on. */
-#define FEW 20
-/* A pixel of a sphere tells a missing sphere only where the scene's
-   value is this far (levels) from black and from the background. */
-#define CLEAR 16
 /* Pixels below the ambient term are named when they are at least this
    share of the lit, the shadowed or the unlit pixels (not noise) ... */
 #define BELOW_SHARE 0.5
@@ -74,35 +55,8 @@ static rayo_status map_of(rayo_course_exercise e, const rayo_course_map **map,
     return s;
 }
 
-typedef struct scene_work {
-    const tone_image *ref, *image;
-    const rayo_course_map *map;
-    const rayo_course_data *data;
-    rayo_compare_report *r;
-    unsigned n, levels;
-    int bg[3];
-    int gone[32]; /* a sphere found missing */
-} scene_work;
-
-static int near_value(const unsigned char *v, const int *to, unsigned n,
-                      unsigned levels)
-{
-    unsigned c;
-    for (c = 0; c < n; c++) {
-        int d = (int)v[c] - to[c];
-        if (d > (int)levels || -d > (int)levels)
-            return 0;
-    }
-    return 1;
-}
-
-static int is_bg(const scene_work *w, const unsigned char *v)
-{
-    return near_value(v, w->bg, w->n, w->levels);
-}
-
-static rayo_compare_finding *add_finding(rayo_compare_report *r,
-                                         rayo_compare_finding_kind kind)
+rayo_compare_finding *tone_scene_add(rayo_compare_report *r,
+                                     rayo_compare_finding_kind kind)
 {
     rayo_compare_finding *f;
     if (r->tone.findings >= RAYO_COMPARE_FINDINGS)
@@ -114,11 +68,12 @@ static rayo_compare_finding *add_finding(rayo_compare_report *r,
     return f;
 }
 
-static void ball_at(const scene_work *w, int b, rayo_compare_finding *f)
+void tone_scene_ball_at(const scene_work *w, int b, rayo_compare_finding *f)
 {
     f->ball = b;
     rayo_course_ball_pixel(w->map, &w->data->balls[b], &f->x, &f->y);
 }
+
 
 /* The most common value of each channel over the core of the
    background, and whether it is most of it. */
@@ -153,7 +108,7 @@ static void find_background(scene_work *w)
             if (w->bg[c] > (int)w->levels)
                 black = 0;
         if (!black) {
-            rayo_compare_finding *f = add_finding(w->r,
+            rayo_compare_finding *f = tone_scene_add(w->r,
                                                   RAYO_FINDING_BACKGROUND);
             if (f != NULL) {
                 for (c = 0; c < w->n; c++)
@@ -167,177 +122,6 @@ static void find_background(scene_work *w)
     }
 }
 
-/* A stray region of the background: its pixels, box and centroid. */
-typedef struct region {
-    uint64_t pixels;
-    int32_t box[4];
-    double sx, sy;
-} region;
-
-/* The 4-connected regions of stray pixels (1 in mark), the largest
-   ADDED_MAX + 1 of at least ADDED_MIN pixels into out (largest first);
-   their number returned (ADDED_MAX + 1: too many to be objects). */
-static rayo_status find_regions(unsigned char *mark, uint32_t width,
-                                uint32_t height, uint64_t background,
-                                region *out, size_t *found, rayo_error *err)
-{
-    size_t pixels = (size_t)width * height, p, n = 0;
-    uint32_t *stack = malloc(pixels * sizeof *stack);
-    if (stack == NULL)
-        return rayo_error_set(err, RAYO_ERR_NOMEM,
-                              "compare: out of memory for the scene's "
-                              "regions");
-    for (p = 0; p < pixels; p++) {
-        region g;
-        size_t top = 0, k;
-        if (mark[p] != 1)
-            continue;
-        memset(&g, 0, sizeof g);
-        g.box[0] = g.box[1] = INT32_MAX;
-        g.box[2] = g.box[3] = -1;
-        mark[p] = 2;
-        stack[top++] = (uint32_t)p;
-        while (top > 0) {
-            uint32_t q = stack[--top];
-            int32_t x = (int32_t)(q % width), y = (int32_t)(q / width);
-            g.pixels++;
-            g.sx += x;
-            g.sy += y;
-            if (x < g.box[0])
-                g.box[0] = x;
-            if (y < g.box[1])
-                g.box[1] = y;
-            if (x > g.box[2])
-                g.box[2] = x;
-            if (y > g.box[3])
-                g.box[3] = y;
-            if (x > 0 && mark[q - 1] == 1)
-                mark[q - 1] = 2, stack[top++] = q - 1;
-            if (x + 1 < (int32_t)width && mark[q + 1] == 1)
-                mark[q + 1] = 2, stack[top++] = q + 1;
-            if (y > 0 && mark[q - width] == 1)
-                mark[q - width] = 2, stack[top++] = q - width;
-            if (y + 1 < (int32_t)height && mark[q + width] == 1)
-                mark[q + width] = 2, stack[top++] = q + width;
-        }
-        if (g.pixels < ADDED_MIN ||
-            2 * g.pixels < (uint64_t)(g.box[2] - g.box[0] + 1) *
-                               (uint64_t)(g.box[3] - g.box[1] + 1))
-            continue;
-        /* kept in order, largest first */
-        for (k = n < ADDED_MAX + 1 ? n : ADDED_MAX; k > 0; k--) {
-            if (out[k - 1].pixels >= g.pixels)
-                break;
-            if (k < ADDED_MAX + 1)
-                out[k] = out[k - 1];
-        }
-        if (k < ADDED_MAX + 1)
-            out[k] = g;
-        if (n < ADDED_MAX + 1)
-            n++;
-        if (4 * g.pixels > background)
-            n = ADDED_MAX + 1; /* not an object: the picture is off */
-    }
-    free(stack);
-    *found = n;
-    return RAYO_OK;
-}
-
-/* Each sphere's pixels that show the background (where the scene's do
-   not), and the objects where the scene shows only background; a
-   sphere missing with an object of its size elsewhere is moved. */
-static rayo_status find_objects(scene_work *w, rayo_error *err)
-{
-    const rayo_course_map *m = w->map;
-    size_t pixels = (size_t)m->width * m->height, p, i, found = 0;
-    size_t balls = w->data->ball_count;
-    uint64_t area[32], eligible[32], shows_bg[32], background = 0;
-    int black[3] = {0, 0, 0};
-    region regions[ADDED_MAX + 1];
-    int used[ADDED_MAX + 1];
-    unsigned char *mark;
-    rayo_status s;
-    memset(area, 0, sizeof area);
-    memset(eligible, 0, sizeof eligible);
-    memset(shows_bg, 0, sizeof shows_bg);
-    memset(used, 0, sizeof used);
-    mark = calloc(pixels, 1);
-    if (mark == NULL)
-        return rayo_error_set(err, RAYO_ERR_NOMEM,
-                              "compare: out of memory for the scene's "
-                              "regions");
-    for (p = 0; p < pixels; p++) {
-        int b = m->ball[p];
-        const unsigned char *v = w->image->v + p * w->n;
-        if (!m->core[p])
-            continue;
-        if (b < 0) {
-            mark[p] = !is_bg(w, v);
-            background++;
-            continue;
-        }
-        /* where the scene's value is near black or the background, the
-           background in the image says nothing */
-        if (near_value(w->ref->v + p * w->n, w->bg, w->n, CLEAR) ||
-            near_value(w->ref->v + p * w->n, black, w->n, CLEAR))
-            continue;
-        eligible[b]++;
-        shows_bg[b] += is_bg(w, v);
-    }
-    s = find_regions(mark, m->width, m->height, background, regions, &found,
-                     err);
-    free(mark);
-    if (s != RAYO_OK)
-        return s;
-    if (found > ADDED_MAX)
-        found = 0; /* a background of noise, not objects */
-    for (i = 0; i < balls; i++) {
-        /* its whole disc, hidden parts too: the size it has moved */
-        const rayo_course_ball *ball = &w->data->balls[i];
-        double r = m->focal * ball->radius / ball->center[2];
-        area[i] = (uint64_t)(3.14159 * r * r);
-    }
-    for (i = 0; i < balls; i++) {
-        rayo_compare_finding *f;
-        double share;
-        size_t k, best = found;
-        if (eligible[i] < FEW)
-            continue;
-        share = (double)shows_bg[i] / (double)eligible[i];
-        if (share < PARTLY_SHARE)
-            continue;
-        w->gone[i] = share >= MISSING_SHARE;
-        for (k = 0; w->gone[i] && k < found; k++)
-            if (!used[k] && MOVED_SIZE * regions[k].pixels >= area[i] &&
-                regions[k].pixels <= MOVED_SIZE * area[i] &&
-                (best == found || regions[k].pixels > regions[best].pixels))
-                best = k;
-        f = add_finding(w->r, !w->gone[i]   ? RAYO_FINDING_PARTLY
-                              : best < found ? RAYO_FINDING_MOVED
-                                             : RAYO_FINDING_MISSING);
-        if (f == NULL)
-            break;
-        ball_at(w, (int)i, f);
-        f->pixels = shows_bg[i];
-        f->total = eligible[i];
-        if (best < found) {
-            used[best] = 1;
-            memcpy(f->box, regions[best].box, sizeof f->box);
-            f->value[0] = regions[best].sx / (double)regions[best].pixels;
-            f->value[1] = regions[best].sy / (double)regions[best].pixels;
-        }
-    }
-    for (i = 0; i < found; i++) {
-        rayo_compare_finding *f;
-        if (used[i] || (f = add_finding(w->r, RAYO_FINDING_ADDED)) == NULL)
-            continue;
-        f->x = regions[i].sx / (double)regions[i].pixels;
-        f->y = regions[i].sy / (double)regions[i].pixels;
-        memcpy(f->box, regions[i].box, sizeof f->box);
-        f->pixels = regions[i].pixels;
-    }
-    return RAYO_OK;
-}
 
 /* Whether pixel p is on a sphere still drawn, away from its outline. */
 static int on_sphere(const scene_work *w, size_t p)
@@ -409,7 +193,7 @@ static void find_ambient(scene_work *w)
             off = 1;
     }
     if (off) {
-        rayo_compare_finding *f = add_finding(w->r, RAYO_FINDING_AMBIENT);
+        rayo_compare_finding *f = tone_scene_add(w->r, RAYO_FINDING_AMBIENT);
         if (f == NULL)
             return;
         for (c = 0; c < w->n; c++) {
@@ -463,7 +247,7 @@ static void find_light(scene_work *w)
         (median >= ii * 0.97 && median <= ii * 1.03))
         return;
     {
-        rayo_compare_finding *f = add_finding(w->r, RAYO_FINDING_LIGHT);
+        rayo_compare_finding *f = tone_scene_add(w->r, RAYO_FINDING_LIGHT);
         if (f != NULL) {
             f->value[0] = (double)median;
             f->expected[0] = ii;
@@ -481,7 +265,7 @@ static void find_below(scene_work *w)
 {
     const rayo_course_map *m = w->map;
     size_t pixels = (size_t)m->width * m->height, p, l;
-    uint64_t per_ball[32], count = 0, most = 0;
+    uint64_t per_ball[SCENE_BALLS], count = 0, most = 0;
     uint64_t below[3] = {0, 0, 0}, of[3] = {0, 0, 0}; /* lit, cast, unlit */
     int b, best = -1, k, shared = 0;
     unsigned c;
@@ -521,11 +305,11 @@ static void find_below(scene_work *w)
             best = b;
         }
     {
-        rayo_compare_finding *f = add_finding(w->r,
+        rayo_compare_finding *f = tone_scene_add(w->r,
                                               RAYO_FINDING_BELOW_AMBIENT);
         if (f == NULL)
             return;
-        ball_at(w, best, f);
+        tone_scene_ball_at(w, best, f);
         f->pixels = count;
         f->total = most;
         f->shadowed = below[1];
@@ -540,9 +324,9 @@ static void find_where(scene_work *w)
 {
     const rayo_course_map *m = w->map;
     size_t pixels = (size_t)m->width * m->height, p, i;
-    uint64_t differ[33], total[33];
+    uint64_t differ[SCENE_BALLS + 1], total[SCENE_BALLS + 1];
     int32_t box[4] = {INT32_MAX, INT32_MAX, -1, -1};
-    int shown[33];
+    int shown[SCENE_BALLS + 1];
     memset(differ, 0, sizeof differ);
     memset(total, 0, sizeof total);
     memset(shown, 0, sizeof shown);
@@ -578,14 +362,14 @@ static void find_where(scene_work *w)
                 most = differ[b];
                 best = b;
             }
-        if (most < FEW || (f = add_finding(w->r, RAYO_FINDING_WHERE)) ==
+        if (most < FEW || (f = tone_scene_add(w->r, RAYO_FINDING_WHERE)) ==
                               NULL)
             break;
         shown[best] = 1;
         f->pixels = most;
         f->total = total[best];
         if (best > 0)
-            ball_at(w, (int)best - 1, f);
+            tone_scene_ball_at(w, (int)best - 1, f);
         else
             memcpy(f->box, box, sizeof box);
     }
@@ -613,12 +397,12 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     w.n = ref->channels;
     w.levels = r->tone.levels;
     w.data = rayo_course_data_of((rayo_course_exercise)course);
-    if (w.data == NULL || w.data->ball_count > 32)
+    if (w.data == NULL || w.data->ball_count > SCENE_BALLS)
         return RAYO_OK;
     if ((s = map_of((rayo_course_exercise)course, &w.map, err)) != RAYO_OK)
         return s;
     find_background(&w);
-    if ((s = find_objects(&w, err)) != RAYO_OK)
+    if ((s = tone_scene_objects(&w, err)) != RAYO_OK)
         return s;
     find_ambient(&w);
     if (course == RAYO_COURSE_EJ2)
@@ -627,5 +411,54 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     *named = r->tone.findings > 0;
     if (!*named)
         find_where(&w);
+    return RAYO_OK;
+}
+
+/* Whether the findings are only the ambient term (and the background,
+   which an ambient of the same value may colour), changed by the
+   offset found on the objects: an IA of 20 for 5 is an offset of +15
+   on every sphere, and the scene's words say which constant it is. */
+static int ambient_is_offset(const rayo_compare_report *r,
+                             const int *offset)
+{
+    unsigned i, c, ambient = 0;
+    for (i = 0; i < r->tone.findings; i++) {
+        const rayo_compare_finding *f = &r->tone.finding[i];
+        if (f->kind == RAYO_FINDING_BACKGROUND)
+            continue;
+        if (f->kind != RAYO_FINDING_AMBIENT)
+            return 0;
+        for (c = 0; c < r->tone.channels; c++) {
+            double seen = r->tone.course == RAYO_COURSE_EJ2
+                              ? f->value[c] - f->expected[c]
+                              : 255 * (f->value[c] - f->expected[c]);
+            if (fabs(seen - offset[c]) > r->tone.levels + 1)
+                return 0;
+        }
+        ambient = 1;
+    }
+    return ambient;
+}
+
+rayo_status tone_scene_diagnose(const tone_image *ref,
+                                const tone_image *image, int found,
+                                const int *offset, rayo_compare_report *r,
+                                rayo_error *err)
+{
+    int named = 0;
+    rayo_status s;
+    if (r->tone.course < 0 || (found && offset == NULL))
+        return RAYO_OK;
+    s = tone_scene_find(ref, image, r->tone.course, r, &named, err);
+    if (s != RAYO_OK)
+        return s;
+    if (offset != NULL && !(named && ambient_is_offset(r, offset))) {
+        r->tone.findings = 0; /* the offset says it as well */
+        return RAYO_OK;
+    }
+    if (named) {
+        r->diagnosis = RAYO_DIAGNOSIS_SCENE;
+        r->diagnosis_exact = 0;
+    }
     return RAYO_OK;
 }
