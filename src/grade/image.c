@@ -194,7 +194,7 @@ static rayo_status judge_tone(rayo_grade_item *item,
                               const rayo_compare_report *r, rayo_error *err)
 {
     const rayo_compare_tone *t = &r->tone;
-    char sentence[1024];
+    char sentence[4096]; /* up to six findings of the scene */
     unsigned c, largest = 0;
     for (c = 0; c < t->channels; c++)
         if (t->channel[c].max_difference > largest)
