@@ -132,19 +132,6 @@ typedef struct rayo_compare_channel {
     double psnr;              /* dB, peak 255; INFINITY when rmse is 0 */
 } rayo_compare_channel;
 
-/*
- * What a tone comparison measured.  Both images are taken as 8-bit (16-
- * bit and other maxvals scaled to 255), gray when neither has colour
- * (an RGB image whose channels are all equal is gray), else RGB.  A
- * pixel differs when a channel is off by more than `levels`.  A
- * differing pixel is explained when, in every channel, the reference
- * takes the image's value (within the levels) somewhere within
- * `tolerance` pixels: the same picture with its outlines, shadow edges
- * or shading a pixel or two away.  Explained pixels are at an edge when
- * an outline or shadow edge of the reference (a step between two
- * neighbours larger than the levels and than twice the steps beside it)
- * lies within the tolerance, else in shading.
- */
 /* What an image differs from one of the course's scenes in
    (RAYO_DIAGNOSIS_SCENE, or where the differences lie for
    RAYO_DIAGNOSIS_UNKNOWN): docs/compare.md, "Against the course's
@@ -155,15 +142,17 @@ typedef enum rayo_compare_finding_kind {
                                 x, y its centre, box, pixels */
     RAYO_FINDING_MISSING,    /* ball shows the background: x, y where */
     RAYO_FINDING_MOVED,      /* ball missing at x, y and an object of its
-                                size at box's centre */
+                                size in box, centred at value[0],
+                                value[1] */
     RAYO_FINDING_PARTLY,     /* ball shows the background in part:
                                 pixels of total */
     RAYO_FINDING_AMBIENT,    /* value: the ambient (levels for EJ2, 0..1
                                 for EJ3); expected: the statement's */
     RAYO_FINDING_LIGHT,      /* value: the light's intensity II (EJ2) */
     RAYO_FINDING_BELOW_AMBIENT, /* pixels of the spheres darker than the
-                                ambient term; ball: where most are,
-                                shadowed: how many in a cast shadow */
+                                ambient term; ball: where most (total)
+                                are, shadowed: how many in a cast
+                                shadow */
     RAYO_FINDING_WHERE       /* nothing fits: pixels of total differ on
                                 ball (-1: the background, box) */
 } rayo_compare_finding_kind;
@@ -179,6 +168,19 @@ typedef struct rayo_compare_finding {
     uint64_t pixels, total, shadowed;
 } rayo_compare_finding;
 
+/*
+ * What a tone comparison measured.  Both images are taken as 8-bit (16-
+ * bit and other maxvals scaled to 255), gray when neither has colour
+ * (an RGB image whose channels are all equal is gray), else RGB.  A
+ * pixel differs when a channel is off by more than `levels`.  A
+ * differing pixel is explained when, in every channel, the reference
+ * takes the image's value (within the levels) somewhere within
+ * `tolerance` pixels: the same picture with its outlines, shadow edges
+ * or shading a pixel or two away.  Explained pixels are at an edge when
+ * an outline or shadow edge of the reference (a step between two
+ * neighbours larger than the levels and than twice the steps beside it)
+ * lies within the tolerance, else in shading.
+ */
 typedef struct rayo_compare_tone {
     unsigned channels;        /* 1 gray, 3 RGB: what was compared */
     unsigned reference_channels, image_channels; /* as read (1 or 3) */
@@ -258,7 +260,10 @@ typedef struct rayo_compare_report {
                                  image (0: it only comes close) */
     int32_t shift_x, shift_y; /* RAYO_DIAGNOSIS_SHIFTED: the image is the
                                  reference moved this far (right, down) */
-    double scale_found;       /* RAYO_DIAGNOSIS_SCALED */
+    double scale_found;       /* RAYO_DIAGNOSIS_SCALED; for consistent
+                                 masks, the course's focal factor (about
+                                 1.0048, or its inverse) when scaling by
+                                 it halves the mismatches, else 1 */
 } rayo_compare_report;
 
 /*
