@@ -85,9 +85,14 @@ typedef enum rayo_compare_diagnosis {
                                        around 256 */
     RAYO_DIAGNOSIS_MISTAKE,         /* the render of one of the course's
                                        typical mistakes: tone.mistake */
-    RAYO_DIAGNOSIS_OUT_OF_RANGE     /* the image's file holds samples
+    RAYO_DIAGNOSIS_OUT_OF_RANGE,    /* the image's file holds samples
                                        outside 0..maxval (clamped to
                                        compare: rayo_compare_note_clamped) */
+    RAYO_DIAGNOSIS_SCENE            /* the reference is one of the
+                                       course's scenes and the image
+                                       differs from it as tone.finding
+                                       says (a background, a sphere added
+                                       or missing, a constant) */
 } rayo_compare_diagnosis;
 
 /* The most of the band (rayo_compare_report.band) the differences of a
@@ -128,6 +133,42 @@ typedef struct rayo_compare_channel {
     double psnr;              /* dB, peak 255; INFINITY when rmse is 0 */
 } rayo_compare_channel;
 
+/* What an image differs from one of the course's scenes in
+   (RAYO_DIAGNOSIS_SCENE, or where the differences lie for
+   RAYO_DIAGNOSIS_UNKNOWN): docs/compare.md, "Against the course's
+   scene". */
+typedef enum rayo_compare_finding_kind {
+    RAYO_FINDING_BACKGROUND, /* value: the background; expected: 0 */
+    RAYO_FINDING_ADDED,      /* an object where the scene has background:
+                                x, y its centre, box, pixels */
+    RAYO_FINDING_MISSING,    /* ball shows the background: x, y where */
+    RAYO_FINDING_MOVED,      /* ball missing at x, y and an object of its
+                                size in box, centred at value[0],
+                                value[1] */
+    RAYO_FINDING_PARTLY,     /* ball shows the background in part:
+                                pixels of total */
+    RAYO_FINDING_AMBIENT,    /* value: the ambient (levels for EJ2, 0..1
+                                for EJ3); expected: the statement's */
+    RAYO_FINDING_LIGHT,      /* value: the light's intensity II (EJ2) */
+    RAYO_FINDING_BELOW_AMBIENT, /* pixels of the spheres darker than the
+                                ambient term; ball: where most (total)
+                                are, shadowed: how many in a cast
+                                shadow */
+    RAYO_FINDING_WHERE       /* nothing fits: pixels of total differ on
+                                ball (-1: the background, box) */
+} rayo_compare_finding_kind;
+
+#define RAYO_COMPARE_FINDINGS 6
+
+typedef struct rayo_compare_finding {
+    rayo_compare_finding_kind kind;
+    int ball;                 /* the scene's sphere (0 first), or -1 */
+    double x, y;              /* pixels: column, row */
+    int32_t box[4];           /* x0, y0, x1, y1 (inclusive) */
+    double value[3], expected[3];
+    uint64_t pixels, total, shadowed;
+} rayo_compare_finding;
+
 /*
  * What a tone comparison measured.  Both images are taken as 8-bit (16-
  * bit and other maxvals scaled to 255), gray when neither has colour
@@ -162,6 +203,8 @@ typedef struct rayo_compare_tone {
     int offset[3];            /* OFFSET: image - reference, per channel */
     int offset_on_shapes;     /* OFFSET only where the reference is not
                                  black (the objects, not the background) */
+    unsigned findings;        /* SCENE, UNKNOWN: finding[0..findings-1] */
+    rayo_compare_finding finding[RAYO_COMPARE_FINDINGS];
 } rayo_compare_tone;
 
 typedef struct rayo_compare_report {
@@ -219,7 +262,10 @@ typedef struct rayo_compare_report {
                                  image (0: it only comes close) */
     int32_t shift_x, shift_y; /* RAYO_DIAGNOSIS_SHIFTED: the image is the
                                  reference moved this far (right, down) */
-    double scale_found;       /* RAYO_DIAGNOSIS_SCALED */
+    double scale_found;       /* RAYO_DIAGNOSIS_SCALED; for consistent
+                                 masks, the course's focal factor (about
+                                 1.0048, or its inverse) when scaling by
+                                 it halves the mismatches, else 1 */
 } rayo_compare_report;
 
 /*

@@ -150,7 +150,8 @@ const char *rayo_compare_diagnosis_name(rayo_compare_diagnosis diagnosis)
         "shifted",     "scaled",             "different-size",
         "empty",       "not-a-sphere",       "other-sphere",
         "unknown",     "channels-swapped",   "offset",
-        "wrapped",     "mistake",            "out-of-range"};
+        "wrapped",     "mistake",            "out-of-range",
+        "scene"};
     if ((size_t)diagnosis >= sizeof names / sizeof names[0])
         return "unknown";
     return names[diagnosis];

@@ -181,6 +181,28 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
     }
 }
 
+/* A consistent picture whose mismatches the course's focal distance
+   explains (diagnose.c: scale_found, about 1.0048 or its inverse). */
+static void put_focal_text(cmp_sink *s, const rayo_compare_report *r)
+{
+    if (r->verdict != RAYO_VERDICT_CONSISTENT || r->scale_found == 1)
+        return;
+    if (r->scale_found > 1)
+        cmp_put(s, "note: the image is the reference enlarged %.4f times "
+                   "about the centre (the sphere %.2f%% larger): it was drawn "
+                   "with the course's focal distance, z = 321.5 (pi computed "
+                   "as sqrt(9.81)), where ANCHO / (2 tan(FOV/2)) gives 320; "
+                   "that, not rounding, is why the outlines differ\n",
+            r->scale_found, 100 * (r->scale_found - 1));
+    else
+        cmp_put(s, "note: the reference is the image enlarged %.4f times "
+                   "about the centre: the reference was drawn with the "
+                   "course's focal distance, z = 321.5 (pi computed as "
+                   "sqrt(9.81)), where ANCHO / (2 tan(FOV/2)) gives 320; "
+                   "that, not rounding, is why the outlines differ\n",
+            1 / r->scale_found);
+}
+
 /* Why mismatches all within the tolerance are not consistent. */
 static void put_crowded_text(cmp_sink *s, const rayo_compare_report *r)
 {
@@ -255,6 +277,7 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
         cmp_put(&s, "black shape of the image vs the reference: - (one of "
                     "them has no black pixel)\n");
     put_crowded_text(&s, r);
+    put_focal_text(&s, r);
     cmp_put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
         cmp_put(&s, "diagnosis: ");

@@ -344,5 +344,6 @@ void rayo_compare_release_cache(void)
             memset(&mistakes[i][j], 0, sizeof mistakes[i][j]);
         }
     pthread_mutex_unlock(&lock);
+    tone_scene_release_cache();
 }
 

@@ -700,5 +700,12 @@ rayo_status tone_diagnose(const tone_image *ref, const tone_image *image,
         name_choice(&ch, r);
     else
         r->diagnosis = RAYO_DIAGNOSIS_UNKNOWN;
-    return RAYO_OK;
+    /* against the course's scene when nothing, or only an offset on
+       the objects, was found (tone_scene.c) */
+    return tone_scene_diagnose(
+        ref, image, ch.found,
+        ch.found && ch.mistake < 0 && ch.t.kind == TONE_OFFSET_ON_SHAPES
+            ? ch.t.offset
+            : NULL,
+        r, err);
 }

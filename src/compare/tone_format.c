@@ -117,7 +117,8 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
     if (!r->diagnosis_exact && r->diagnosis != RAYO_DIAGNOSIS_NONE &&
         r->diagnosis != RAYO_DIAGNOSIS_DIFFERENT_SIZE &&
         r->diagnosis != RAYO_DIAGNOSIS_EMPTY &&
-        r->diagnosis != RAYO_DIAGNOSIS_UNKNOWN)
+        r->diagnosis != RAYO_DIAGNOSIS_UNKNOWN &&
+        r->diagnosis != RAYO_DIAGNOSIS_SCENE)
         cmp_put(s, "most likely (undoing it comes close, not exact): ");
     if (text != NULL) {
         cmp_put(s, "%s", text);
@@ -168,8 +169,14 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
             r->image_width, r->image_height, r->reference_width,
             r->reference_height);
         break;
+    case RAYO_DIAGNOSIS_SCENE:
+        tone_put_findings(r, s);
+        break;
     default:
-        if (t->first_x < 0) /* crowded: nothing unexplained, too much */
+        if (t->findings > 0) { /* where they lie, on the course's scene */
+            cmp_put(s, "no single mistake explains the differences: ");
+            tone_put_findings(r, s);
+        } else if (t->first_x < 0) /* crowded: nothing unexplained */
             cmp_put(s, "no single mistake explains the differences, and "
                        "there are too many of them for one picture drawn a "
                        "pixel or two apart");
@@ -315,6 +322,8 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         cmp_put(s, "], \"on_shapes\": %s",
             t->offset_on_shapes ? "true" : "false");
     }
+    if (t->findings > 0)
+        tone_put_findings_json(r, s);
     cmp_put(s, ", \"text\": \"");
     tone_put_diagnosis(r, s);
     cmp_put(s, "\"}}\n");

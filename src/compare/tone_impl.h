@@ -9,6 +9,9 @@
  *                   undone by a candidate mistake: statistics, and which
  *                   differences an edge or the shading explains;
  *   tone_diagnose.c the candidate mistakes, tried one at a time;
+ *   tone_scene*.c   against one of the course's scenes, what the image
+ *                   differs from it in (a background, a sphere, a
+ *                   constant), and its words;
  *   tone_diff.c     the difference picture;
  *   tone_format.c   the report as text and JSON;
  *   tone_cache.c    the reference's maps and the course's render, kept
@@ -229,6 +232,35 @@ rayo_status tone_write_diff(const rayo_image *reference,
                             const rayo_image *image,
                             const rayo_compare_options *options,
                             rayo_output *out, rayo_error *err);
+
+/* tone_scene.c: what image differs from the course's scene `course`
+   (EJ2 or EJ3) in, into r->tone.finding: *named 1 when something is
+   named (a background, a sphere, a constant), else the findings say
+   only where the differences lie (RAYO_FINDING_WHERE).  The scene's map
+   is kept until tone_scene_release_cache (rayo_compare_release_cache). */
+rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
+                            int course, rayo_compare_report *r, int *named,
+                            rayo_error *err);
+void tone_scene_release_cache(void);
+
+/* The diagnosis against the course's scene, after tone_diagnose's
+   candidates: found, whether one was chosen (r has its diagnosis);
+   offset, its offsets when it is an offset on the objects, else NULL.
+   With nothing found, or such an offset that the ambient term explains,
+   the findings make the diagnosis RAYO_DIAGNOSIS_SCENE; with nothing
+   found and nothing named, UNKNOWN keeps the findings that say where
+   the differences lie. */
+rayo_status tone_scene_diagnose(const tone_image *ref,
+                                const tone_image *image, int found,
+                                const int *offset, rayo_compare_report *r,
+                                rayo_error *err);
+
+/* tone_scene_text.c: the findings as sentences joined by "; ", and as
+   the JSON member "findings". */
+struct cmp_sink;
+void tone_put_findings(const rayo_compare_report *r, struct cmp_sink *s);
+void tone_put_findings_json(const rayo_compare_report *r,
+                            struct cmp_sink *s);
 
 /* tone_format.c: the tone parts of report_format.c's forms. */
 struct cmp_sink;

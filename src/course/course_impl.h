@@ -89,4 +89,38 @@ rayo_status rayo_course_render_student_rows(rayo_course_exercise exercise,
                                             rayo_image *image, uint32_t first,
                                             uint32_t end, rayo_error *err);
 
+/*
+ * What the correct image of EJ2 or EJ3 is made of, pixel by pixel, as
+ * the student model's main sees it (course_map.c): the sphere each ray
+ * shows and, for each light, whether and how much it lights the point.
+ * The tone comparison reads a student's image against it to name what
+ * differs from the scene (a background, a sphere added or missing, the
+ * model's constants).
+ */
+#define RAYO_COURSE_MAP_CORE 3
+typedef struct rayo_course_map {
+    rayo_course_exercise exercise;
+    uint32_t width, height;
+    size_t lamp_count;
+    double focal;        /* the formula's z: 320 */
+    signed char *ball;   /* the sphere's index in the data, -1 none */
+    /* 1 where every pixel within RAYO_COURSE_MAP_CORE (a square) shows
+       the same sphere, or none: away from every outline */
+    unsigned char *core;
+    /* lamp_count a pixel: Li.N where Li.N > 0 and no sphere shadows P,
+       -(Li.N) where Li.N > 0 but one does, 0 where Li.N <= 0 or no
+       sphere is hit */
+    float *light;
+} rayo_course_map;
+
+/* The map of EJ2 or EJ3 (RAYO_ERR_INVALID for EJ1), new into map. */
+rayo_status rayo_course_map_make(rayo_course_exercise exercise,
+                                 rayo_course_map *map, rayo_error *err);
+void rayo_course_map_free(rayo_course_map *map);
+
+/* Where the centre of ball appears in the image: column x and row y. */
+void rayo_course_ball_pixel(const rayo_course_map *map,
+                            const rayo_course_ball *ball, double *x,
+                            double *y);
+
 #endif

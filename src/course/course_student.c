@@ -23,8 +23,8 @@ static course_fvec fvec_of(const double v[3])
 }
 
 /* The program's constants: the statement's numbers written as float. */
-static void student_init(course_student *s, const rayo_course_data *data,
-                         rayo_course_mistake mistake)
+void rayo_course_student_init(course_student *s, const rayo_course_data *data,
+                              rayo_course_mistake mistake)
 {
     size_t i;
     s->ball_count = data->ball_count;
@@ -105,8 +105,8 @@ int rayo_course_student_shadowed(const course_student *s, course_fvec p,
  * widened by a pixel on each side.  A sphere around the eye, or one
  * whose cone of rays is not bounded along the row, marks the whole row.
  */
-static void row_may_hit(course_student *s, double vy, double vz,
-                        int half_w, unsigned char *maybe)
+void rayo_course_student_row_may_hit(course_student *s, double vy, double vz,
+                                     int half_w, unsigned char *maybe)
 {
     size_t b;
     int w = (int)RAYO_COURSE_WIDTH;
@@ -189,7 +189,7 @@ rayo_status rayo_course_render_student_rows(rayo_course_exercise exercise,
     if (status != RAYO_OK)
         return status;
     vz = (float)(camera.focal * options->focal_scale);
-    student_init(&student, data, options->mistake);
+    rayo_course_student_init(&student, data, options->mistake);
     info = gray ? rayo_image_info_gray8(RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT)
                 : rayo_image_info_rgb8(RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT);
     if (first == 0) {
@@ -203,7 +203,7 @@ rayo_status rayo_course_render_student_rows(rayo_course_exercise exercise,
         unsigned char *row = rayo_image_row(image, j);
         unsigned char maybe[RAYO_COURSE_WIDTH];
         float vy = (float)(top - (int)j);
-        row_may_hit(&student, vy, vz, half_w, maybe);
+        rayo_course_student_row_may_hit(&student, vy, vz, half_w, maybe);
         for (i = 0; i < RAYO_COURSE_WIDTH; i++) {
             float vx = (float)((int)i - half_w);
             course_fvec d;

@@ -137,6 +137,17 @@ static inline float course_fdistance(const course_fball *ball, course_fvec o,
     return RAYO_COURSE_INFINITO;
 }
 
+/* The program's constants: the statement's numbers written as float,
+   with one mistake (course_student.c). */
+void rayo_course_student_init(course_student *s, const rayo_course_data *data,
+                              rayo_course_mistake mistake);
+
+/* Marks in maybe[] (RAYO_COURSE_WIDTH bytes) the pixels of the row at
+   height vy whose ray may meet some sphere, and sets s->span_lo and
+   span_hi (course_student.c says how). */
+void rayo_course_student_row_may_hit(course_student *s, double vy, double vz,
+                                     int half_w, unsigned char *maybe);
+
 /* The sphere the ray o + t d shows (the nearest, or with FIRST_SPHERE
    the first of the array it meets), its t in *t; ball_count if none. */
 size_t rayo_course_student_nearest(const course_student *s, course_fvec o,

@@ -120,6 +120,7 @@ static rayo_status say_diagnosis(rayo_grade_item *item,
     case RAYO_DIAGNOSIS_WRAPPED:
     case RAYO_DIAGNOSIS_MISTAKE:
     case RAYO_DIAGNOSIS_OUT_OF_RANGE:
+    case RAYO_DIAGNOSIS_SCENE:
         break;
     }
     return grade_fail(item, err, "no simple mistake explains the "
@@ -139,6 +140,33 @@ static rayo_status judge_mask(rayo_grade_item *item,
         item->result = RAYO_GRADE_PASS;
         return grade_say(item, err, "identical to the reference, pixel for "
                                     "pixel");
+    }
+    if (r->verdict == RAYO_VERDICT_CONSISTENT && r->scale_found > 1) {
+        /* compare found the course's focal distance (diagnose.c) */
+        item->result = RAYO_GRADE_PASS;
+        return grade_say(item, err, "consistent with the reference: %llu "
+                                    "pixels differ (%.3f%%), all within %g "
+                                    "pixels of the sphere's outline, "
+                                    "because your sphere is %.2f%% larger "
+                                    "than the formula's, as in the course's "
+                                    "own reference: z = ANCHO / (2 "
+                                    "tan(FOV/2)) gives 320 and yours is "
+                                    "about 321.5 (is PI sqrt(9.81)?)",
+                         (unsigned long long)r->mismatches,
+                         r->mismatch_percent, r->tolerance,
+                         100 * (r->scale_found - 1));
+    }
+    if (r->verdict == RAYO_VERDICT_CONSISTENT && r->scale_found < 1) {
+        item->result = RAYO_GRADE_PASS;
+        return grade_say(item, err, "consistent with the reference: %llu "
+                                    "pixels differ (%.3f%%), all within %g "
+                                    "pixels of the sphere's outline, "
+                                    "because the reference was drawn with "
+                                    "the course's focal distance, z = 321.5 "
+                                    "(pi as sqrt(9.81)), where the formula "
+                                    "gives 320",
+                         (unsigned long long)r->mismatches,
+                         r->mismatch_percent, r->tolerance);
     }
     if (r->verdict == RAYO_VERDICT_CONSISTENT) {
         item->result = RAYO_GRADE_PASS;
@@ -166,7 +194,7 @@ static rayo_status judge_tone(rayo_grade_item *item,
                               const rayo_compare_report *r, rayo_error *err)
 {
     const rayo_compare_tone *t = &r->tone;
-    char sentence[1024];
+    char sentence[4096]; /* up to six findings of the scene */
     unsigned c, largest = 0;
     for (c = 0; c < t->channels; c++)
         if (t->channel[c].max_difference > largest)

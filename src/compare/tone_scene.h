@@ -1,0 +1,56 @@
+/*
+ * tone_scene.h - what tone_scene.c and tone_scene_objects.c share: the
+ * image being read against the course's scene, and the helpers that add
+ * a finding to the report.  Private to those two files.
+ */
+#ifndef RAYO_TONE_SCENE_H
+#define RAYO_TONE_SCENE_H
+
+#include "../course/course_impl.h"
+#include "tone_impl.h"
+
+/* At most as many spheres as the course's scenes have. */
+#define SCENE_BALLS 32
+/* Fewest pixels a finding about a sphere or a constant stands on. */
+#define FEW 20
+
+typedef struct scene_work {
+    const tone_image *ref, *image;
+    const rayo_course_map *map;
+    const rayo_course_data *data;
+    rayo_compare_report *r;
+    unsigned n, levels;
+    int bg[3];              /* the image's background (find_background) */
+    int gone[SCENE_BALLS];  /* a sphere found missing */
+} scene_work;
+
+/* Every channel of v within levels of to. */
+static inline int near_value(const unsigned char *v, const int *to,
+                             unsigned n, unsigned levels)
+{
+    unsigned c;
+    for (c = 0; c < n; c++) {
+        int d = (int)v[c] - to[c];
+        if (d > (int)levels || -d > (int)levels)
+            return 0;
+    }
+    return 1;
+}
+
+static inline int is_bg(const scene_work *w, const unsigned char *v)
+{
+    return near_value(v, w->bg, w->n, w->levels);
+}
+
+/* A new finding of kind in r (NULL when r has no room left). */
+rayo_compare_finding *tone_scene_add(rayo_compare_report *r,
+                                     rayo_compare_finding_kind kind);
+
+/* f is about sphere b: its index and where its centre appears. */
+void tone_scene_ball_at(const scene_work *w, int b, rayo_compare_finding *f);
+
+/* tone_scene_objects.c: each sphere missing, moved or partly drawn,
+   and the objects where the scene shows only background. */
+rayo_status tone_scene_objects(scene_work *w, rayo_error *err);
+
+#endif

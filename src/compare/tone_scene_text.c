@@ -1,0 +1,255 @@
+/*
+ * tone_scene_text.c - the findings of tone_scene.c in words, for a
+ * student, and as JSON.
+ *
+ * Each finding is one whole sentence in the statement's terms (IA, II,
+ * Ia ka, "a ray that meets no sphere gives 0"), naming a sphere by where
+ * it appears in the picture (column, row) and by its centre and radius
+ * in the statement, so the student can find it in the code.  Sentences
+ * hold no double quote and no backslash: they go into JSON as they are.
+ * The measuring is tone_scene.c's.
+ */
+#include <math.h>
+
+#include "../course/course_impl.h"
+#include "report_sink.h"
+#include "tone_impl.h"
+
+static const char *const kind_names[] = {
+    "background", "added", "missing", "moved", "partly",
+    "ambient", "light", "below-ambient", "where"};
+
+static int gray_course(const rayo_compare_report *r)
+{
+    return r->tone.course == RAYO_COURSE_EJ2;
+}
+
+static const rayo_course_ball *ball_of(const rayo_compare_report *r,
+                                       const rayo_compare_finding *f)
+{
+    const rayo_course_data *d =
+        rayo_course_data_of((rayo_course_exercise)r->tone.course);
+    if (d == NULL || f->ball < 0 || (size_t)f->ball >= d->ball_count)
+        return NULL;
+    return &d->balls[f->ball];
+}
+
+/* A region that looks like a disc: filling about pi/4 of a box about
+   as wide as high. */
+static int round_region(const rayo_compare_finding *f)
+{
+    double w = f->box[2] - f->box[0] + 1, h = f->box[3] - f->box[1] + 1;
+    double fill = (double)f->pixels / (w * h);
+    return fill > 0.6 && fill < 0.95 && w < 1.5 * h && h < 1.5 * w;
+}
+
+static void put_background(cmp_sink *s, const rayo_compare_report *r,
+                           const rayo_compare_finding *f)
+{
+    const rayo_course_data *d =
+        rayo_course_data_of((rayo_course_exercise)r->tone.course);
+    if (!gray_course(r))
+        cmp_put(s, "the background is (%.0f, %.0f, %.0f), not black (0, 0, "
+                   "0): a ray that meets no sphere gives black",
+            f->value[0], f->value[1], f->value[2]);
+    else if (d != NULL && fabs(f->value[0] - d->ambient[0]) < 1.5)
+        cmp_put(s, "the background is %.0f, the ambient intensity IA, not 0 "
+                   "(black): a ray that meets no sphere gives 0, and IA "
+                   "belongs only to the spheres",
+            f->value[0]);
+    else
+        cmp_put(s, "the background is %.0f, not 0 (black): a ray that meets "
+                   "no sphere gives 0",
+            f->value[0]);
+}
+
+static void put_ball_finding(cmp_sink *s, const rayo_compare_finding *f,
+                             const rayo_course_ball *b)
+{
+    switch (f->kind) {
+    case RAYO_FINDING_MISSING:
+        cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, %g) "
+                   "and radius %g in the statement, is missing: its pixels "
+                   "show the background",
+            f->x, f->y, b->center[0], b->center[1], b->center[2], b->radius);
+        break;
+    case RAYO_FINDING_MOVED:
+        cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, %g) "
+                   "and radius %g in the statement, is missing there, and "
+                   "an object of about its size is at about (%.0f, %.0f) px "
+                   "instead: check its centre",
+            f->x, f->y, b->center[0], b->center[1], b->center[2], b->radius,
+            f->value[0], f->value[1]);
+        break;
+    default: /* PARTLY */
+        cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, %g) "
+                   "and radius %g in the statement, shows the background in "
+                   "%llu of its %llu pixels away from its outline: it is "
+                   "drawn smaller, cut or hidden",
+            f->x, f->y, b->center[0], b->center[1], b->center[2], b->radius,
+            (unsigned long long)f->pixels, (unsigned long long)f->total);
+        break;
+    }
+}
+
+static void put_added(cmp_sink *s, const rayo_compare_finding *f)
+{
+    if (round_region(f))
+        cmp_put(s, "there is a sphere at about (%.0f, %.0f) px (columns %d to "
+                   "%d, rows %d to %d) that is not in the course's scene",
+            f->x, f->y, (int)f->box[0], (int)f->box[2], (int)f->box[1],
+            (int)f->box[3]);
+    else
+        cmp_put(s, "something is drawn at about (%.0f, %.0f) px (columns %d "
+                   "to %d, rows %d to %d, %llu pixels) where the course's "
+                   "scene shows only background",
+            f->x, f->y, (int)f->box[0], (int)f->box[2], (int)f->box[1],
+            (int)f->box[3], (unsigned long long)f->pixels);
+}
+
+static void put_ambient(cmp_sink *s, const rayo_compare_report *r,
+                        const rayo_compare_finding *f)
+{
+    if (gray_course(r))
+        cmp_put(s, "the ambient intensity looks like %.0f, not the "
+                   "statement's IA = %.0f: where the light does not reach "
+                   "(L.N <= 0, or in shadow) I = IA",
+            f->value[0], f->expected[0]);
+    else
+        cmp_put(s, "the ambient light looks like (%.3f, %.3f, %.3f), not the "
+                   "statement's Ia = (%g, %g, %g): where no light reaches, C "
+                   "= Ia ka (then times M)",
+            f->value[0], f->value[1], f->value[2], f->expected[0],
+            f->expected[1], f->expected[2]);
+}
+
+static void put_below(cmp_sink *s, const rayo_compare_report *r,
+                      const rayo_compare_finding *f)
+{
+    if (gray_course(r))
+        cmp_put(s, "%llu pixels of the spheres are darker than IA = %g, which "
+                   "the model never gives (I = IA + II (L.N) where lit, IA "
+                   "in shadow and where L.N <= 0); %llu of them lie in a "
+                   "shadow another sphere casts, and most (%llu) are on the "
+                   "sphere at about (%.0f, %.0f) px",
+            (unsigned long long)f->pixels, f->expected[0],
+            (unsigned long long)f->shadowed, (unsigned long long)f->total,
+            f->x, f->y);
+    else
+        cmp_put(s, "%llu pixels of the spheres are darker than their ambient "
+                   "colour Ia ka M, which the model never gives (C = Ia ka + "
+                   "the lights, then times M); %llu of them lie in a shadow "
+                   "another sphere casts, and most (%llu) are on the sphere "
+                   "at about (%.0f, %.0f) px",
+            (unsigned long long)f->pixels, (unsigned long long)f->shadowed,
+            (unsigned long long)f->total, f->x, f->y);
+}
+
+static void put_where(cmp_sink *s, const rayo_compare_finding *f)
+{
+    if (f->ball >= 0)
+        cmp_put(s, "%llu of the %llu pixels of the sphere at about (%.0f, "
+                   "%.0f) px differ, away from its outline",
+            (unsigned long long)f->pixels, (unsigned long long)f->total,
+            f->x, f->y);
+    else
+        cmp_put(s, "%llu of the %llu pixels of the background differ, within "
+                   "columns %d to %d and rows %d to %d",
+            (unsigned long long)f->pixels, (unsigned long long)f->total,
+            (int)f->box[0], (int)f->box[2], (int)f->box[1], (int)f->box[3]);
+}
+
+static void put_one(cmp_sink *s, const rayo_compare_report *r,
+                    const rayo_compare_finding *f)
+{
+    const rayo_course_ball *b = ball_of(r, f);
+    switch (f->kind) {
+    case RAYO_FINDING_BACKGROUND:
+        put_background(s, r, f);
+        break;
+    case RAYO_FINDING_ADDED:
+        put_added(s, f);
+        break;
+    case RAYO_FINDING_MISSING:
+    case RAYO_FINDING_MOVED:
+    case RAYO_FINDING_PARTLY:
+        if (b != NULL)
+            put_ball_finding(s, f, b);
+        break;
+    case RAYO_FINDING_AMBIENT:
+        put_ambient(s, r, f);
+        break;
+    case RAYO_FINDING_LIGHT:
+        cmp_put(s, "the light's intensity looks like %.0f, not the "
+                   "statement's II = %.0f: I = IA + II (L.N)",
+            f->value[0], f->expected[0]);
+        break;
+    case RAYO_FINDING_BELOW_AMBIENT:
+        put_below(s, r, f);
+        break;
+    case RAYO_FINDING_WHERE:
+        put_where(s, f);
+        break;
+    }
+}
+
+void tone_put_findings(const rayo_compare_report *r, cmp_sink *s)
+{
+    unsigned i;
+    for (i = 0; i < r->tone.findings; i++) {
+        if (i > 0)
+            cmp_put(s, "; ");
+        put_one(s, r, &r->tone.finding[i]);
+    }
+}
+
+static void put_triple(cmp_sink *s, const char *name, const double *v,
+                       unsigned n)
+{
+    unsigned c;
+    cmp_put(s, ", \"%s\": [", name);
+    for (c = 0; c < n; c++)
+        cmp_put(s, "%s%.6g", c ? ", " : "", v[c]);
+    cmp_put(s, "]");
+}
+
+void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
+{
+    unsigned i, n = r->tone.channels;
+    cmp_put(s, ", \"findings\": [");
+    for (i = 0; i < r->tone.findings; i++) {
+        const rayo_compare_finding *f = &r->tone.finding[i];
+        cmp_put(s, "%s{\"kind\": \"%s\"", i ? ", " : "",
+            (size_t)f->kind < sizeof kind_names / sizeof kind_names[0]
+                ? kind_names[f->kind]
+                : "unknown");
+        if (f->ball >= 0)
+            cmp_put(s, ", \"ball\": %d, \"x\": %.1f, \"y\": %.1f", f->ball,
+                f->x, f->y);
+        if (f->kind == RAYO_FINDING_ADDED)
+            cmp_put(s, ", \"x\": %.1f, \"y\": %.1f", f->x, f->y);
+        if (f->kind == RAYO_FINDING_MOVED)
+            cmp_put(s, ", \"to\": {\"x\": %.1f, \"y\": %.1f}", f->value[0],
+                f->value[1]);
+        if (f->kind == RAYO_FINDING_ADDED || f->kind == RAYO_FINDING_MOVED ||
+            (f->kind == RAYO_FINDING_WHERE && f->ball < 0))
+            cmp_put(s, ", \"box\": [%d, %d, %d, %d]", (int)f->box[0],
+                (int)f->box[1], (int)f->box[2], (int)f->box[3]);
+        if (f->kind == RAYO_FINDING_BACKGROUND ||
+            f->kind == RAYO_FINDING_AMBIENT || f->kind == RAYO_FINDING_LIGHT)
+            put_triple(s, "value", f->value,
+                       f->kind == RAYO_FINDING_LIGHT ? 1 : n);
+        if (f->kind == RAYO_FINDING_AMBIENT || f->kind == RAYO_FINDING_LIGHT)
+            put_triple(s, "expected", f->expected,
+                       f->kind == RAYO_FINDING_LIGHT ? 1 : n);
+        cmp_put(s, ", \"pixels\": %llu", (unsigned long long)f->pixels);
+        if (f->kind == RAYO_FINDING_BELOW_AMBIENT)
+            cmp_put(s, ", \"on_ball\": %llu, \"shadowed\": %llu",
+                (unsigned long long)f->total,
+                (unsigned long long)f->shadowed);
+        else if (f->kind != RAYO_FINDING_ADDED)
+            cmp_put(s, ", \"of\": %llu", (unsigned long long)f->total);
+        cmp_put(s, "}");
+    }
+    cmp_put(s, "]");
+}

@@ -1,0 +1,162 @@
+#!/bin/sh
+# compare_scene.t - `rayo compare` against one of the course's scenes
+# names what a student's image differs in, in the statement's terms
+# (src/compare/tone_scene.c): the student-style programs of tests/grade
+# with one such mistake each (tests/grade/CORPUS.md) are compiled, run,
+# and compared with the course's reference; each gets the finding its
+# mistake deserves, with numbers worked out here from the statement (a
+# sphere's place in the picture, the ambient's byte) or counted here in
+# the images.  Also EJ1's pi = sqrt(9.81), said as the course's focal
+# distance, not rounding; and where nothing fits, where the differences
+# lie instead of a first pixel.
+. "$(dirname "$0")/lib.sh"
+
+STUDENTS="$RAYO_SOURCE/tests/grade"
+COURSE="$RAYO_SOURCE/data/course"
+CC_STUDENT=${RAYO_CC:-cc}
+json() { jq -r "$1" "$TMP/out"; }
+# within GOT WANT SLACK: |GOT - WANT| <= SLACK (0/1 as a status)
+within() { awk -v g="$1" -v w="$2" -v s="$3" 'BEGIN { d = g - w; if (d < 0) d = -d; exit !(d <= s) }'; }
+
+# student NAME: tests/grade/NAME compiled and run, its image in $TMP/NAME.out
+student() {
+    # shellcheck disable=SC2086
+    $CC_STUDENT -std=c99 -O2 -o "$TMP/$1" "$STUDENTS/$1/main.c" -lm &&
+        "$TMP/$1" >"$TMP/$1.out"
+}
+
+# scene NAME REFERENCE: compares NAME's image with REFERENCE, --json
+scene() {
+    run_capture compare "$2" "$TMP/$1.out" --json
+}
+
+# Where the centre (X, Y, Z) of a sphere appears: column and row, with
+# the formula's focal distance 320 (640 pixels, 90 degrees).
+column() { awk -v x="$1" -v z="$2" 'BEGIN { printf "%.1f", 320 + 320 * x / z }'; }
+row() { awk -v y="$1" -v z="$2" 'BEGIN { printf "%.1f", 240 - 320 * y / z }'; }
+
+for p in ej2_correct ej2_ambient_20 ej2_seventh_sphere ej2_background_ambient \
+         ej2_shadow_zero ej2_missing_sphere ej2_last_sphere ej3_background_ambient \
+         ej3_sphere_moved ej3_ambient_doubled correct pi_course; do
+    student "$p"
+    ok $? "$p compiles and runs"
+done
+rayo render "$RAYO_SOURCE/examples/ej2.scene" -o "$TMP/r2.pgm"
+rayo render "$RAYO_SOURCE/examples/ej1.scene" -o "$TMP/r1.pbm"
+C2="$COURSE/referencia-catedra-ej2.png"
+C3="$COURSE/referencia-catedra-ej3.png"
+
+# --- a right image gets no findings ------------------------------------------
+scene ej2_correct "$C2"
+is "$(json .verdict)/$(json '.diagnosis.findings')" "consistent/null" \
+    "ej2_correct: consistent, nothing found"
+
+# --- EJ2 -------------------------------------------------------------------
+scene ej2_ambient_20 "$C2"
+is "$status/$(json .diagnosis.kind)" "1/scene" "IA = 20: inconsistent, a scene finding"
+is "$(json '[.diagnosis.findings[].kind] | join(",")')" "ambient" "  only the ambient term"
+is "$(json '.diagnosis.findings[0].value[0]')/$(json '.diagnosis.findings[0].expected[0]')" \
+    "20/5" "  20 seen, the statement's 5"
+json .diagnosis.text | grep -q "^the ambient intensity looks like 20, not the statement's IA = 5"
+ok $? "  said as the statement's IA"
+
+scene ej2_background_ambient "$C2"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/background" "background at IA: the background found"
+is "$(json '.diagnosis.findings[0].value[0]')" 5 "  at 5"
+json .diagnosis.text | grep -q "^the background is 5, the ambient intensity IA, not 0 (black): a ray that meets no sphere gives 0"
+ok $? "  said as the statement says a ray that meets nothing"
+
+scene ej2_seventh_sphere "$C2"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/added" "a seventh sphere: one object added"
+x=$(column -2 3) y=$(row 1 3) # the added sphere's centre, (-2, 1, 3)
+within "$(json '.diagnosis.findings[0].x')" "$x" 8
+ok $? "  its column $(json '.diagnosis.findings[0].x') near $x, where (-2, 1, 3) appears"
+within "$(json '.diagnosis.findings[0].y')" "$y" 8
+ok $? "  its row $(json '.diagnosis.findings[0].y') near $y"
+json .diagnosis.text | grep -q "^there is a sphere at about ([0-9]*, [0-9]*) px (columns [0-9]* to [0-9]*, rows [0-9]* to [0-9]*) that is not in the course's scene$"
+ok $? "  said as a sphere not in the course's scene"
+
+scene ej2_missing_sphere "$C2"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/missing" "a sphere left out: missing"
+is "$(json '.diagnosis.findings[0].ball')" 3 "  the fourth of the statement's array"
+within "$(json '.diagnosis.findings[0].x')" "$(column 3 5)" 0.05 &&
+    within "$(json '.diagnosis.findings[0].y')" "$(row 1.5 5)" 0.05
+ok $? "  where (3, 1.5, 5) appears: $(column 3 5), $(row 1.5 5)"
+json .diagnosis.text | grep -q "^the sphere at about (512, 144) px, centre (3, 1.5, 5) and radius 0.4 in the statement, is missing"
+ok $? "  named by its place and the statement's numbers"
+
+scene ej2_shadow_zero "$C2"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/below-ambient" "shadow at 0: values below IA"
+# Pixels that are 0 in the student's image where rayo's render has IA:
+# the finding counts those away from the outlines, so a little fewer.
+zeros=$(pnmtoplainpnm "$TMP/ej2_shadow_zero.out" | tail -n +4 | tr -s ' ' '\n' | grep -v '^$' >"$TMP/a";
+        pnmtoplainpnm "$TMP/r2.pgm" | tail -n +4 | tr -s ' ' '\n' | grep -v '^$' >"$TMP/b";
+        paste "$TMP/a" "$TMP/b" | awk '$1 == 0 && $2 == 5 { n++ } END { print n + 0 }')
+got=$(json '.diagnosis.findings[0].pixels')
+[ "$got" -le "$zeros" ] && [ $((got * 10)) -ge $((zeros * 9)) ]
+ok $? "  $got pixels below IA: at most the $zeros counted here, and 90% of them"
+is "$(json '.diagnosis.findings[0].shadowed')" "$got" "  all in a shadow another sphere casts"
+json .diagnosis.text | grep -q "^$got pixels of the spheres are darker than IA = 5, which the model never gives"
+ok $? "  said against the model: I is never below IA"
+
+# --- EJ3 -------------------------------------------------------------------
+scene ej3_background_ambient "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/background" "EJ3 background at Ia: the background found"
+b=$(awk 'BEGIN { printf "%d", 255 * 0.05 }')
+is "$(json '.diagnosis.findings[0].value | map(tostring) | join(",")')" "$b,$b,$b" \
+    "  at the byte of Ia = 0.05: $b"
+json .diagnosis.text | grep -q "^the background is ($b, $b, $b), not black (0, 0, 0): a ray that meets no sphere gives black$"
+ok $? "  said as the statement says"
+
+scene ej3_ambient_doubled "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/ambient" "Ia doubled: the ambient term found"
+for c in 0 1 2; do
+    within "$(json ".diagnosis.findings[0].value[$c]")" 0.1 0.004
+    ok $? "  channel $c: $(json ".diagnosis.findings[0].value[$c]"), about 0.1"
+done
+json .diagnosis.text | grep -q "^the ambient light looks like (0.100, 0.100, 0.100), not the statement's Ia = (0.05, 0.05, 0.05)"
+ok $? "  said as the statement's Ia"
+
+scene ej3_sphere_moved "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/moved" "a centre mistyped: the sphere moved"
+[ "$(json '.diagnosis.findings[0].ball')" = 7 ] &&
+    within "$(json '.diagnosis.findings[0].x')" "$(column 1.73 2)" 0.05 &&
+    within "$(json '.diagnosis.findings[0].y')" "$(row -0.6 2)" 0.05
+ok $? "  the blue sphere, (1.73, -0.6, 2), where it appears: $(column 1.73 2), $(row -0.6 2)"
+within "$(json '.diagnosis.findings[0].to.x')" "$(column 1.73 2)" 8 &&
+    within "$(json '.diagnosis.findings[0].to.y')" "$(row 0.3 2)" 8
+ok $? "  found near where (1.73, 0.3, 2) appears: $(json '.diagnosis.findings[0].to.x'), $(json '.diagnosis.findings[0].to.y')"
+
+# --- nothing fits: where the differences lie -------------------------------
+scene ej2_last_sphere "$TMP/r2.pgm"
+is "$(json .diagnosis.kind)/$(json '.diagnosis.findings[0].kind')" "unknown/where" \
+    "the last sphere drawn over the nearer: unknown, and where"
+is "$(json '.diagnosis.findings[0].ball')" 2 \
+    "  most on the sphere (3, 1.5, 4), which (3, 1.5, 5) is drawn over"
+json .diagnosis.text | grep -q "^no single mistake explains the differences: [0-9]* of the [0-9]* pixels of the sphere at about ($(column 3 4 | cut -d. -f1), $(row 1.5 4 | cut -d. -f1)) px differ"
+ok $? "  said as which sphere, not a first pixel"
+
+# --- EJ1: pi = sqrt(9.81) ----------------------------------------------------
+focal=$(awk 'BEGIN { printf "%.4f", 1 / (sin(sqrt(9.81) / 4) / cos(sqrt(9.81) / 4)) }')
+run_capture compare "$TMP/r1.pbm" "$TMP/pi_course.out"
+is "$status" 0 "EJ1 with pi = sqrt(9.81): consistent with rayo's render"
+grep -q "^note: the image is the reference enlarged $focal times about the centre" "$TMP/out"
+ok $? "  the sphere $focal times larger: the course's focal distance"
+run_capture compare "$TMP/r1.pbm" "$TMP/correct.out"
+grep -q "^note:" "$TMP/out"
+is $? 1 "  the right program's image (identical) gets no such note"
+run_capture compare "$COURSE/referencia-catedra-ej1.png" "$TMP/correct.out"
+grep -q "^note: the reference is the image enlarged $focal times" "$TMP/out"
+ok $? "  a right image against the course's reference: the reference's focal distance"
+run_capture grade --exercise ej1 --no-valgrind "$STUDENTS/pi_course"
+grep -q "^image  *pass  *consistent with the reference: .*, because your sphere is 0.48% larger than the formula's, as in the course's own reference" "$TMP/out"
+ok $? "  grade: passes, and says the sphere is 0.48% larger, not rounding"
+
+done_testing
