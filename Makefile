@@ -36,7 +36,9 @@ WARNINGS := -Wall -Wextra -Werror -pedantic -Wshadow -Wstrict-prototypes \
 CFLAGS ?=
 ALL_CFLAGS = -std=c11 $(OPT) $(WARNINGS) -Iinclude $(PNG_CFLAGS) $(CFLAGS) \
               -MMD -MP
-LDLIBS = $(PNG_LIBS) -lpthread -lm
+# zlib (which libpng-dev brings): the command reads students' zip files
+# (cli/zip_read.c).
+LDLIBS = $(PNG_LIBS) -lz -lpthread -lm
 
 LIB_SRC := $(sort $(shell find src -name '*.c'))
 CLI_SRC := $(sort $(wildcard cli/*.c))
