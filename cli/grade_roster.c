@@ -36,11 +36,6 @@
 
 /* ---- small helpers ---- */
 
-static int by_string(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
 static char *join(const char *dir, const char *name)
 {
     size_t room = strlen(dir) + strlen(name) + 2;
@@ -510,11 +505,14 @@ static void split_files(flat_file *f, size_t count)
         f[k].prefix = best;
         f[k].own = s + best + 1;
     }
-    /* A name no other file took gives way to one that others took. */
+    /* A file whose own name no other file shares, and whose name no
+       other file took, joins a name that others took. */
     for (k = 0; k < count; k++) {
         const char *s = f[k].entry;
         size_t best = 0;
-        if (f[k].fixed || name_taken(f, count, k, s, f[k].prefix) > 0)
+        if (f[k].fixed || f[k].own == NULL ||
+            own_count(f, count, f[k].own) > 1 ||
+            name_taken(f, count, k, s, f[k].prefix) > 0)
             continue;
         for (i = 0; s[i] != '\0'; i++)
             if (i != f[k].prefix && splits_at(s, i) &&
@@ -745,10 +743,6 @@ rayo_status cli_roster_build(const char *dir, cli_roster *roster,
     entries_free(list, count);
     if (status != RAYO_OK)
         return status;
-    for (i = 0; i < roster->count; i++)
-        if (roster->students[i].file_count > 1)
-            qsort(roster->students[i].files, roster->students[i].file_count,
-                  sizeof(char *), by_string);
     if (roster->count > 1)
         qsort(roster->students, roster->count, sizeof *roster->students,
               by_student);

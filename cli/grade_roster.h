@@ -38,8 +38,8 @@ typedef struct cli_student {
     char *folder;      /* what is graded: the student's folder, or one
                           rayo filled */
     cli_layout layout;
-    char **files;      /* what went with it, as named in DIR or in the
-                          zip (sorted) */
+    char **files;      /* what went with it, as named in DIR (a zip: the
+                          zip, then its sources) */
     size_t file_count;
     char *problem;     /* why it cannot be graded (a refused zip), or
                           NULL */
