@@ -827,9 +827,12 @@ static int grade_each(const char *dir, grade_request *req)
                     &req->options, 1, print_graded, &p);
     if (req->json)
         printf("]\n");
-    else if (!p.quiet && !p.cancelled) {
-        printf("\n%zu of %zu submissions passed\n\n", p.passed, count);
-        cli_tally_print(stdout, &p.tally);
+    else if (!p.quiet) {
+        printf("\n%zu of %zu submissions passed\n", p.passed, count);
+        if (!p.cancelled && cli_interrupted() == 0) {
+            putchar('\n');
+            cli_tally_print(stdout, &p.tally);
+        }
     }
     status = p.passed == count ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
     if (p.feedback_status != CLI_EXIT_OK)
