@@ -23,7 +23,7 @@
 void cli_roster_say(const char *dir, const cli_roster *roster)
 {
     size_t i, j;
-    cli_sayf("%s: %zu submissions, grouped as follows", dir,
+    cli_sayf("%s: how the submissions were grouped (%zu in all)", dir,
              roster->count);
     for (i = 0; i < roster->count; i++) {
         const cli_student *s = &roster->students[i];

@@ -10,10 +10,12 @@
  * Flat files: the student's name is what comes before a '_' or '-', the
  * file's own name what follows.  Which '_' or '-' is decided by the
  * class: the split whose own name the most files share wins ("main.c",
- * which everyone hands in, beats "perez_main.c"), ties going to the
- * longer name; then a file whose name no other file took joins a name
- * that others did take, if one of its splits gives it.  The grouping is
- * printed, so a teacher sees it before trusting the table.
+ * which everyone hands in, beats "perez_main.c"), then the one whose
+ * name the most files could have ("ana_vector_utils.c" is ana's when
+ * "ana_main.c" is there), then the longer name; last, a file whose own
+ * name and name no other file shares joins a name that others took, if
+ * one of its splits gives it.  The grouping is printed, so a teacher
+ * sees it before trusting the table.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -471,6 +473,18 @@ static size_t own_count(const flat_file *f, size_t count, const char *own)
     return total;
 }
 
+/* How many files split into the name s[0..n) and an own name. */
+static size_t name_count(const flat_file *f, size_t count, const char *s,
+                         size_t n)
+{
+    size_t k, total = 0;
+    for (k = 0; k < count; k++)
+        if (strlen(f[k].entry) > n && strncmp(f[k].entry, s, n) == 0 &&
+            splits_at(f[k].entry, n))
+            total++;
+    return total;
+}
+
 /* How many files other than f[skip] took the name s[0..n). */
 static size_t name_taken(const flat_file *f, size_t count, size_t skip,
                          const char *s, size_t n)
@@ -489,17 +503,20 @@ static void split_files(flat_file *f, size_t count)
     size_t k, i;
     for (k = 0; k < count; k++) {
         const char *s = f[k].entry;
-        size_t best = 0, best_count = 0;
+        size_t best = 0, best_own = 0, best_name = 0;
         if (f[k].fixed)
             continue;
         for (i = 0; s[i] != '\0'; i++) {
-            size_t c;
+            size_t own, name;
             if (!splits_at(s, i))
                 continue;
-            c = own_count(f, count, s + i + 1);
-            if (c >= best_count) { /* ties: the longer name */
+            own = own_count(f, count, s + i + 1);
+            name = name_count(f, count, s, i);
+            /* ties: the longer name */
+            if (own > best_own || (own == best_own && name >= best_name)) {
                 best = i;
-                best_count = c;
+                best_own = own;
+                best_name = name;
             }
         }
         f[k].prefix = best;

@@ -31,7 +31,7 @@ cp "$CORRECT" "$TMP/flat/main.c"
 run_capture grade $NV -j 2 --json --each "$TMP/flat"
 is "$(results "$TMP/out")" "ana=pass ana_perez=fail beto=fail " \
     "flat: three students; ana's header went with her main.c"
-is "$(cat "$TMP/err")" "rayo: $TMP/flat: 3 submissions, grouped as follows
+is "$(cat "$TMP/err")" "rayo: $TMP/flat: how the submissions were grouped (3 in all)
 rayo: ana (files named by student): ana_main.c, ana_nota.h
 rayo: ana_perez (files named by student): ana_perez_main.c
 rayo: beto (files named by student): beto-main.c
@@ -40,6 +40,21 @@ rayo: left out: main.c (no student's name before the file's own name; expected N
     "flat: a line per student and per file left out; 'main.c', which everyone hands in, is the own name"
 is "$(jq -r '.[1].criteria[1].reasons[0]' "$TMP/out" | cut -c 1-24)" "norma(0.5, 0.5, 0.5) ret" \
     "flat: ana_perez is graded on her own file"
+
+# The split is the class's: the own name most files share, then the
+# name most files could have, then the longer name.  (The compiler is
+# 'false': only the grouping is looked at.)
+mkdir "$TMP/split"
+for f in ana_main.c ana_vector_utils.c beto_main.c beto_vector_utils.c \
+    carla_lopez_main.c carla_lopez_vec.h dan-main.c; do
+    echo 'int x;' >"$TMP/split/$f"
+done
+run_capture grade $NV --cc false --each "$TMP/split"
+is "$(sed 1d "$TMP/err")" "rayo: ana (files named by student): ana_main.c, ana_vector_utils.c
+rayo: beto (files named by student): beto_main.c, beto_vector_utils.c
+rayo: carla_lopez (files named by student): carla_lopez_main.c, carla_lopez_vec.h
+rayo: dan (files named by student): dan-main.c" \
+    "flat: underscores in the name and in the own name, split by the class"
 
 # ---- Moodle ----
 mkdir "$TMP/moodle"
@@ -51,7 +66,7 @@ cp "$STUDENTS/lowercase_magic/main.c" "$b/main.c"
 cp "$STUDENTS/dimensions_x/main.c" "$TMP/moodle/Caro Díaz_12347_assignsubmission_file_main.c"
 run_capture grade $NV -j 2 --each "$TMP/moodle" --feedback "$TMP/fb"
 is "$status" 1 "Moodle: exit 1 (two failed)"
-is "$(cat "$TMP/err")" "rayo: $TMP/moodle: 3 submissions, grouped as follows
+is "$(cat "$TMP/err")" "rayo: $TMP/moodle: how the submissions were grouped (3 in all)
 rayo: Ana Pérez (Moodle): Ana Pérez_12345_assignsubmission_file_/main.c
 rayo: Beto Gómez (Moodle): Beto Gómez_12346_assignsubmission_file_/main.c
 rayo: Caro Díaz (Moodle): Caro Díaz_12347_assignsubmission_file_main.c
