@@ -227,11 +227,12 @@ static rayo_status check_duplicates(const char *path, const zip_entry *e,
             size_t b = own_name_start(&e[j]), nb = e[j].name_length - b;
             if (is_source(&e[j]) && na == nb &&
                 memcmp(e[i].name + a, e[j].name + b, na) == 0) {
-                char text[NAME_SHOWN + 4];
-                return rayo_error_set(err, RAYO_ERR_FORMAT, "%s: two "
-                                      "entries are named '%s' in different "
-                                      "folders; expected one of each "
-                                      "source", path, shown(&e[j], text));
+                char first[NAME_SHOWN + 4], second[NAME_SHOWN + 4];
+                return rayo_error_set(err, RAYO_ERR_FORMAT, "%s: the "
+                                      "entries '%s' and '%s' have the same "
+                                      "name; expected one of each source",
+                                      path, shown(&e[i], first),
+                                      shown(&e[j], second));
             }
         }
     }

@@ -167,6 +167,18 @@ grep -q '^h_climb    error: .*climbs out of the folder' "$TMP/out"
 ok $? "the table: the refused zip's row is one line saying why"
 is "$(ls -A "$TMP/tmpdir")" "" "rayo's folder of copied sources is removed at the end"
 
+# The fuzz corpus's other refusals (fuzz/corpus/generate_zip.py).
+mkdir "$TMP/more"
+for z in bad-crc bad-duplicate bad-encrypted bad-truncated; do
+    cp "$RAYO_SOURCE/fuzz/corpus/zip/$z.zip" "$TMP/more/"
+done
+run_capture grade $NV --cc false --json --each "$TMP/more"
+is "$(jq -r '.[].error' "$TMP/out" | sed "s|^$TMP/more/||")" "bad-crc.zip: the entry 'main.c' is damaged (its size or CRC does not match)
+bad-duplicate.zip: the entries 'a/main.c' and 'b/main.c' have the same name; expected one of each source
+bad-encrypted.zip: the entry 'e.c' is encrypted; refusing the archive
+bad-truncated.zip: not a zip file (no end of central directory); expected a zip archive" \
+    "zip: a wrong CRC, two sources of one name, encryption, a cut end: refused, one line each"
+
 # ---- GitHub Classroom ----
 mkdir "$TMP/gh" "$TMP/gh/ej1-rayo-ana" "$TMP/gh/ej1-rayo-anabel"
 cp "$CORRECT" "$TMP/gh/ej1-rayo-ana/"
