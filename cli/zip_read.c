@@ -26,6 +26,8 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include "cli.h"
+
 #define EOCD_SIZE 22
 #define CENTRAL_SIZE 46
 #define LOCAL_SIZE 30
@@ -49,12 +51,27 @@ static uint32_t get32(const unsigned char *p)
            (uint32_t)p[3] << 24;
 }
 
-/* The entry's name for a message: at most NAME_SHOWN bytes. */
-static const char *shown(const zip_entry *e, char text[NAME_SHOWN + 4])
+/* The entry's name for a message, on one line: control bytes and bytes
+   that are not UTF-8 escaped as the command escapes names (\n, \xHH),
+   at most about NAME_SHOWN bytes, then "...". */
+static const char *shown(const zip_entry *e, char text[NAME_SHOWN + 16])
 {
+    char raw[NAME_SHOWN + 8];
     size_t n = e->name_length < NAME_SHOWN ? e->name_length : NAME_SHOWN;
-    memcpy(text, e->name, n);
-    strcpy(text + n, n < e->name_length ? "..." : "");
+    size_t used = 0, at = 0;
+    memcpy(raw, e->name, n);
+    memset(raw + n, 0, sizeof raw - n);
+    while (at < n && raw[at] != '\0') {
+        char unit[8];
+        size_t columns, length;
+        at += cli_escape_unit(raw + at, 1, unit, &columns);
+        length = strlen(unit);
+        if (used + length > NAME_SHOWN)
+            break;
+        memcpy(text + used, unit, length);
+        used += length;
+    }
+    strcpy(text + used, at < e->name_length ? "..." : "");
     return text;
 }
 
@@ -168,7 +185,7 @@ static rayo_status read_entries(const char *path, const unsigned char *zip,
         return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
                               path);
     for (i = 0, at = start; i < entries; i++) {
-        char text[NAME_SHOWN + 4];
+        char text[NAME_SHOWN + 16];
         const char *why;
         if (at + CENTRAL_SIZE > size || get32(zip + at) != 0x02014b50u) {
             free(e);
@@ -227,7 +244,7 @@ static rayo_status check_duplicates(const char *path, const zip_entry *e,
             size_t b = own_name_start(&e[j]), nb = e[j].name_length - b;
             if (is_source(&e[j]) && na == nb &&
                 memcmp(e[i].name + a, e[j].name + b, na) == 0) {
-                char first[NAME_SHOWN + 4], second[NAME_SHOWN + 4];
+                char first[NAME_SHOWN + 16], second[NAME_SHOWN + 16];
                 return rayo_error_set(err, RAYO_ERR_FORMAT, "%s: the "
                                       "entries '%s' and '%s' have the same "
                                       "name; expected one of each source",
@@ -246,7 +263,7 @@ static rayo_status inflate_entry(const char *path, const unsigned char *zip,
                                  unsigned char *out, size_t *length,
                                  rayo_error *err)
 {
-    char text[NAME_SHOWN + 4];
+    char text[NAME_SHOWN + 16];
     size_t data;
     if ((size_t)e->offset + LOCAL_SIZE > size ||
         get32(zip + e->offset) != 0x04034b50u)
