@@ -355,38 +355,75 @@ static rayo_status add_zip(builder *b, cli_student *s, const char *path,
     return status;
 }
 
-/* A folder of DIR: one student's, graded where it is (or its one zip). */
+/* What a student's folder holds: its entries, how many C sources and
+   zips, its one zip's and its one subfolder's names. */
+typedef struct folder_look {
+    entry *inside;
+    size_t count, sources, zips, folders;
+    const char *zip, *folder;
+} folder_look;
+
+static rayo_status look_into(builder *b, const char *path, folder_look *l)
+{
+    size_t i;
+    memset(l, 0, sizeof *l);
+    /* A folder that cannot be listed is graded all the same, and the
+       grading says why it failed. */
+    if (list_entries(path, &l->inside, &l->count, b->err) == RAYO_ERR_NOMEM)
+        return RAYO_ERR_NOMEM;
+    rayo_error_clear(b->err);
+    for (i = 0; i < l->count; i++) {
+        const char *name = l->inside[i].name;
+        if (l->inside[i].kind == 'd' && l->folders++ == 0)
+            l->folder = name;
+        if (l->inside[i].kind != 'f')
+            continue;
+        l->sources += is_c_name(name);
+        if (ends_with(name, ".zip") && l->zips++ == 0)
+            l->zip = name;
+    }
+    return RAYO_OK;
+}
+
+/* A folder of DIR: one student's, graded where it is, or its one zip,
+   or (twice at most) its one subfolder when it holds nothing else. */
 static rayo_status add_folder(builder *b, const char *name, size_t n,
                               cli_layout layout, const char *entry_name)
 {
-    char *path = join(b->dir, entry_name), *zip = NULL;
-    entry *inside = NULL;
-    size_t count = 0, i, sources = 0, zips = 0;
-    cli_student *s;
+    char *path = join(b->dir, entry_name), *shown_as = strdup(entry_name);
+    folder_look l;
+    size_t i, depth;
+    cli_student *s = add_student(b, name, n, layout);
     rayo_status status;
-    if (path == NULL)
-        return nomem(b);
-    s = add_student(b, name, n, layout);
-    if (s == NULL) {
+    if (path == NULL || shown_as == NULL || s == NULL) {
         free(path);
+        free(shown_as);
         return nomem(b);
     }
-    /* A folder that cannot be listed is graded all the same, and the
-       grading says why it failed. */
-    if (list_entries(path, &inside, &count, b->err) == RAYO_ERR_NOMEM) {
+    for (depth = 0;; depth++) {
+        char *deeper, *deeper_shown;
+        if (look_into(b, path, &l) != RAYO_OK) {
+            free(path);
+            free(shown_as);
+            return RAYO_ERR_NOMEM;
+        }
+        if (depth == 2 || l.sources > 0 || l.zips > 0 || l.folders != 1)
+            break;
+        deeper = join(path, l.folder);
+        deeper_shown = join(shown_as, l.folder);
+        entries_free(l.inside, l.count);
         free(path);
-        return RAYO_ERR_NOMEM;
+        free(shown_as);
+        path = deeper;
+        shown_as = deeper_shown;
+        if (path == NULL || shown_as == NULL) {
+            free(path);
+            free(shown_as);
+            return nomem(b);
+        }
     }
-    rayo_error_clear(b->err);
-    for (i = 0; i < count; i++) {
-        if (inside[i].kind != 'f')
-            continue;
-        sources += is_c_name(inside[i].name);
-        if (ends_with(inside[i].name, ".zip") && zips++ == 0)
-            zip = inside[i].name;
-    }
-    if (sources == 0 && zips == 1) {
-        char *zip_path = join(path, zip), *from = join(entry_name, zip);
+    if (l.sources == 0 && l.zips == 1) {
+        char *zip_path = join(path, l.zip), *from = join(shown_as, l.zip);
         status = zip_path != NULL && from != NULL
                      ? add_zip(b, s, zip_path, from) : nomem(b);
         free(zip_path);
@@ -395,18 +432,19 @@ static rayo_status add_folder(builder *b, const char *name, size_t n,
         status = RAYO_OK;
         s->folder = path;
         path = NULL;
-        for (i = 0; i < count && status == RAYO_OK; i++) {
-            char *shown;
-            if (inside[i].kind != 'f' || !is_source_name(inside[i].name))
+        for (i = 0; i < l.count && status == RAYO_OK; i++) {
+            char *file;
+            if (l.inside[i].kind != 'f' || !is_source_name(l.inside[i].name))
                 continue;
-            shown = join(entry_name, inside[i].name);
-            if (shown == NULL || !add_file(s, shown))
+            file = join(shown_as, l.inside[i].name);
+            if (file == NULL || !add_file(s, file))
                 status = nomem(b);
-            free(shown);
+            free(file);
         }
     }
-    entries_free(inside, count);
+    entries_free(l.inside, l.count);
     free(path);
+    free(shown_as);
     return status;
 }
 

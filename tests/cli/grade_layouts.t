@@ -64,19 +64,23 @@ mkdir "$a" "$b" "$TMP/moodle/Beto Gómez_12346_assignsubmission_onlinetext_"
 cp "$CORRECT" "$a/main.c"
 cp "$STUDENTS/lowercase_magic/main.c" "$b/main.c"
 cp "$STUDENTS/dimensions_x/main.c" "$TMP/moodle/Caro Díaz_12347_assignsubmission_file_main.c"
+# Dani uploaded a folder: the sources are two folders down.
+mkdir -p "$TMP/moodle/Dani Ruiz_12348_assignsubmission_file_/tp1/src"
+cp "$CORRECT" "$TMP/moodle/Dani Ruiz_12348_assignsubmission_file_/tp1/src/"
 run_capture grade $NV -j 2 --each "$TMP/moodle" --feedback "$TMP/fb"
 is "$status" 1 "Moodle: exit 1 (two failed)"
-is "$(cat "$TMP/err")" "rayo: $TMP/moodle: how the submissions were grouped (3 in all)
+is "$(cat "$TMP/err")" "rayo: $TMP/moodle: how the submissions were grouped (4 in all)
 rayo: Ana Pérez (Moodle): Ana Pérez_12345_assignsubmission_file_/main.c
 rayo: Beto Gómez (Moodle): Beto Gómez_12346_assignsubmission_file_/main.c
 rayo: Caro Díaz (Moodle): Caro Díaz_12347_assignsubmission_file_main.c
+rayo: Dani Ruiz (Moodle): Dani Ruiz_12348_assignsubmission_file_/tp1/src/main.c
 rayo: left out: Beto Gómez_12346_assignsubmission_onlinetext_ (Moodle's online text, not a file)" \
-    "Moodle: the name before _ID_assignsubmission_, folders and flat files"
-is "$(sed -n '3,5p' "$TMP/out" | awk '{ print $1, $2, $NF }' | tr '\n' ' ')" \
-    "Ana Pérez PASS Beto Gómez FAIL Caro Díaz FAIL " "Moodle: the table's rows"
+    "Moodle: the name before _ID_assignsubmission_, folders (one inside another too) and flat files"
+is "$(sed -n '3,6p' "$TMP/out" | awk '{ print $1, $2, $NF }' | tr '\n' ' ')" \
+    "Ana Pérez PASS Beto Gómez FAIL Caro Díaz FAIL Dani Ruiz PASS " "Moodle: the table's rows"
 
 # ---- --feedback ----
-is "$(ls "$TMP/fb" | LC_ALL=C sort | tr '\n' ' ')" "Ana_Pérez.txt Beto_Gómez.txt Caro_Díaz.txt " \
+is "$(ls "$TMP/fb" | LC_ALL=C sort | tr '\n' ' ')" "Ana_Pérez.txt Beto_Gómez.txt Caro_Díaz.txt Dani_Ruiz.txt " \
     "--feedback: one report per student, named from the name, nothing else left"
 untimed() { sed 's/ran to the end in [0-9.]* s/ran to the end in T s/'; }
 rayo grade $NV "$b" 2>/dev/null | untimed >"$TMP/beto.txt"
