@@ -7,15 +7,8 @@
  * `#include "vector.h"` finds ana_vector.h) goes into one temporary
  * folder of rayo's, a subfolder per student, removed at the end.
  *
- * Flat files: the student's name is what comes before a '_' or '-', the
- * file's own name what follows.  Which '_' or '-' is decided by the
- * class: the split whose own name the most files share wins ("main.c",
- * which everyone hands in, beats "perez_main.c"), then the one whose
- * name the most files could have ("ana_vector_utils.c" is ana's when
- * "ana_main.c" is there), then the longer name; last, a file whose own
- * name and name no other file shares joins a name that others took, if
- * one of its splits gives it.  The grouping is printed, so a teacher
- * sees it before trusting the table.
+ * Flat files are grouped by grade_names.c's split of their names.  The
+ * grouping is printed, so a teacher sees it before trusting the table.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -31,10 +24,11 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "grade_names.h"
+#include "grade_staging.h"
 #include "zip_read.h"
 
 #define SAFE_MAX 80
-#define COPY_MAX (1u << 20) /* a flat file copied out */
 
 /* ---- small helpers ---- */
 
@@ -63,12 +57,6 @@ static int ends_with(const char *s, const char *end)
     return n > m && strcmp(s + n - m, end) == 0;
 }
 
-/* A C source or header's own name: "x.c", "x.h", not hidden. */
-static int is_source_name(const char *s)
-{
-    return s[0] != '.' && (ends_with(s, ".c") || ends_with(s, ".h"));
-}
-
 static int is_c_name(const char *s)
 {
     return s[0] != '.' && ends_with(s, ".c");
@@ -88,38 +76,6 @@ static int push(void *array, size_t *count, size_t size, const void *item)
     *a = grown;
     (*count)++;
     return 1;
-}
-
-void cli_safe_file_name(const char *name, char *out, size_t room)
-{
-    size_t used = 0;
-    const unsigned char *p = (const unsigned char *)name;
-    if (room > SAFE_MAX + 1)
-        room = SAFE_MAX + 1;
-    while (*p != '\0' && used + 1 < room) {
-        size_t n = p[0] >= 0x80 ? cli_utf8_sequence(p) : 0;
-        /* U+00C0 to U+024F: the accented Latin letters (but the
-           multiplication and division signs). */
-        if (n == 2 && p[0] >= 0xC3 && p[0] <= 0xC9 &&
-            !(p[0] == 0xC3 && (p[1] == 0x97 || p[1] == 0xB7))) {
-            if (used + 3 > room)
-                break;
-            memcpy(out + used, p, 2);
-            used += 2;
-            p += 2;
-            continue;
-        }
-        if ((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
-            (*p >= '0' && *p <= '9') || *p == '-' || *p == '_' ||
-            (*p == '.' && used > 0))
-            out[used++] = (char)*p;
-        else if (used == 0 || out[used - 1] != '_')
-            out[used++] = '_';
-        p += n > 0 ? n : 1;
-    }
-    out[used] = '\0';
-    if (used == 0 || strcmp(out, "_") == 0)
-        snprintf(out, room, "student");
 }
 
 const char *cli_layout_name(cli_layout layout)
@@ -434,7 +390,8 @@ static rayo_status add_folder(builder *b, const char *name, size_t n,
         path = NULL;
         for (i = 0; i < l.count && status == RAYO_OK; i++) {
             char *file;
-            if (l.inside[i].kind != 'f' || !is_source_name(l.inside[i].name))
+            if (l.inside[i].kind != 'f' ||
+                !cli_is_source_name(l.inside[i].name))
                 continue;
             file = join(shown_as, l.inside[i].name);
             if (file == NULL || !add_file(s, file))
@@ -482,153 +439,11 @@ static size_t classroom_prefix(const entry *list, size_t count)
 
 /* ---- files named by student ---- */
 
-typedef struct flat_file {
-    const char *entry;  /* the name in DIR */
-    size_t prefix;      /* the student's name: entry's first prefix bytes */
-    const char *own;    /* the file's own name */
-    int fixed;          /* Moodle's: the split is known */
-} flat_file;
-
-/* Whether entry splits at i into a name and a source's own name. */
-static int splits_at(const char *entry_name, size_t i)
-{
-    return i > 0 && (entry_name[i] == '_' || entry_name[i] == '-') &&
-           is_source_name(entry_name + i + 1);
-}
-
-/* How many files have own as the own name of one of their splits. */
-static size_t own_count(const flat_file *f, size_t count, const char *own)
-{
-    size_t k, i, total = 0;
-    for (k = 0; k < count; k++) {
-        const char *s = f[k].entry;
-        for (i = 0; s[i] != '\0'; i++)
-            if (splits_at(s, i) && strcmp(s + i + 1, own) == 0) {
-                total++;
-                break;
-            }
-    }
-    return total;
-}
-
-/* How many files split into the name s[0..n) and an own name. */
-static size_t name_count(const flat_file *f, size_t count, const char *s,
-                         size_t n)
-{
-    size_t k, total = 0;
-    for (k = 0; k < count; k++)
-        if (strlen(f[k].entry) > n && strncmp(f[k].entry, s, n) == 0 &&
-            splits_at(f[k].entry, n))
-            total++;
-    return total;
-}
-
-/* How many files other than f[skip] took the name s[0..n). */
-static size_t name_taken(const flat_file *f, size_t count, size_t skip,
-                         const char *s, size_t n)
-{
-    size_t k, total = 0;
-    for (k = 0; k < count; k++)
-        if (k != skip && f[k].prefix == n &&
-            strncmp(f[k].entry, s, n) == 0)
-            total++;
-    return total;
-}
-
-/* Each file's split, by the class's most shared own names. */
-static void split_files(flat_file *f, size_t count)
-{
-    size_t k, i;
-    for (k = 0; k < count; k++) {
-        const char *s = f[k].entry;
-        size_t best = 0, best_own = 0, best_name = 0;
-        if (f[k].fixed)
-            continue;
-        for (i = 0; s[i] != '\0'; i++) {
-            size_t own, name;
-            if (!splits_at(s, i))
-                continue;
-            own = own_count(f, count, s + i + 1);
-            name = name_count(f, count, s, i);
-            /* ties: the longer name */
-            if (own > best_own || (own == best_own && name >= best_name)) {
-                best = i;
-                best_own = own;
-                best_name = name;
-            }
-        }
-        f[k].prefix = best;
-        f[k].own = s + best + 1;
-    }
-    /* A file whose own name no other file shares, and whose name no
-       other file took, joins a name that others took. */
-    for (k = 0; k < count; k++) {
-        const char *s = f[k].entry;
-        size_t best = 0;
-        if (f[k].fixed || f[k].own == NULL ||
-            own_count(f, count, f[k].own) > 1 ||
-            name_taken(f, count, k, s, f[k].prefix) > 0)
-            continue;
-        for (i = 0; s[i] != '\0'; i++)
-            if (i != f[k].prefix && splits_at(s, i) &&
-                name_taken(f, count, k, s, i) > 0)
-                best = i;
-        if (best > 0) {
-            f[k].prefix = best;
-            f[k].own = s + best + 1;
-        }
-    }
-}
-
-/* Copies DIR/entry to folder/own (a new file, at most COPY_MAX bytes);
-   0 and errno on failure, EFBIG when it is too large. */
-static int copy_file(const char *from, const char *folder, const char *own)
-{
-    char buffer[8192], *to = join(folder, own);
-    size_t total = 0;
-    int in, out, ok = 1;
-    if (to == NULL)
-        return 0;
-    in = open(from, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    out = in < 0 ? -1
-                 : open(to, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW |
-                                O_CLOEXEC, 0644);
-    free(to);
-    if (in < 0 || out < 0) {
-        if (in >= 0)
-            close(in);
-        return 0;
-    }
-    for (;;) {
-        ssize_t n = read(in, buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0) {
-            ok = n == 0;
-            break;
-        }
-        total += (size_t)n;
-        if (total > COPY_MAX) {
-            errno = EFBIG;
-            ok = 0;
-            break;
-        }
-        if (write(out, buffer, (size_t)n) != n) {
-            ok = 0;
-            break;
-        }
-    }
-    close(in);
-    if (close(out) != 0)
-        ok = 0;
-    return ok;
-}
-
 /* The flat files, grouped by name, copied under their own names. */
-static rayo_status add_flat(builder *b, flat_file *f, size_t count)
+static rayo_status add_flat(builder *b, cli_flat_file *f, size_t count)
 {
     size_t k, j;
-    split_files(f, count);
+    cli_flat_split(f, count);
     for (k = 0; k < count; k++) {
         cli_student *s;
         char *name, *from;
@@ -664,7 +479,7 @@ static rayo_status add_flat(builder *b, flat_file *f, size_t count)
             from = join(b->dir, f[j].entry);
             if (from == NULL)
                 return nomem(b);
-            if (copy_file(from, s->folder, f[j].own))
+            if (cli_copy_source(from, s->folder, f[j].own))
                 status = add_file(s, f[j].entry) ? RAYO_OK : nomem(b);
             else
                 status = leave_out(b, f[j].entry, errno == EEXIST
@@ -692,12 +507,13 @@ static rayo_status add_flat(builder *b, flat_file *f, size_t count)
 /* ---- the class ---- */
 
 /* A file of DIR: a zip, a flat source, or left out. */
-static rayo_status add_entry_file(builder *b, const entry *e, flat_file **flat,
+static rayo_status add_entry_file(builder *b, const entry *e,
+                                  cli_flat_file **flat,
                                   size_t *flat_count)
 {
     const char *kind = NULL, *rest = NULL;
     size_t n = moodle_name(e->name, &kind, &rest);
-    flat_file f;
+    cli_flat_file f;
     memset(&f, 0, sizeof f);
     f.entry = e->name;
     if (n > 0 && strncmp(kind, "file_", 5) != 0)
@@ -722,15 +538,15 @@ static rayo_status add_entry_file(builder *b, const entry *e, flat_file **flat,
         free(path);
         return status;
     }
-    if (n > 0 && is_source_name(rest)) {
+    if (n > 0 && cli_is_source_name(rest)) {
         f.prefix = n;
         f.own = rest;
         f.fixed = 1;
-    } else if (n > 0 || !is_source_name(e->name)) {
+    } else if (n > 0 || !cli_is_source_name(e->name)) {
         return leave_out(b, e->name, "not a C source, header or zip file");
     } else {
         size_t i;
-        for (i = 0; e->name[i] != '\0' && !splits_at(e->name, i); i++)
+        for (i = 0; e->name[i] != '\0' && !cli_flat_splits_at(e->name, i); i++)
             ;
         if (e->name[i] == '\0')
             return leave_out(b, e->name, "no student's name before the "
@@ -756,7 +572,7 @@ rayo_status cli_roster_build(const char *dir, cli_roster *roster,
 {
     builder b;
     entry *list = NULL;
-    flat_file *flat = NULL;
+    cli_flat_file *flat = NULL;
     size_t count = 0, flat_count = 0, strip, i;
     rayo_status status;
     memset(roster, 0, sizeof *roster);
@@ -812,41 +628,6 @@ rayo_status cli_roster_build(const char *dir, cli_roster *roster,
     return RAYO_OK;
 }
 
-/* Removes the staging folder: a subfolder per student, files in it. */
-static void remove_staging(const char *staging)
-{
-    DIR *top = opendir(staging);
-    struct dirent *de;
-    if (top == NULL)
-        return;
-    while ((de = readdir(top)) != NULL) {
-        int fd;
-        DIR *sub;
-        struct dirent *file;
-        if (strcmp(de->d_name, ".") == 0 || strcmp(de->d_name, "..") == 0)
-            continue;
-        fd = openat(dirfd(top), de->d_name,
-                    O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-        if (fd < 0) {
-            unlinkat(dirfd(top), de->d_name, 0);
-            continue;
-        }
-        sub = fdopendir(fd);
-        if (sub == NULL) {
-            close(fd);
-            continue;
-        }
-        while ((file = readdir(sub)) != NULL)
-            if (strcmp(file->d_name, ".") != 0 &&
-                strcmp(file->d_name, "..") != 0)
-                unlinkat(fd, file->d_name, 0);
-        closedir(sub);
-        unlinkat(dirfd(top), de->d_name, AT_REMOVEDIR);
-    }
-    closedir(top);
-    rmdir(staging);
-}
-
 void cli_roster_free(cli_roster *roster)
 {
     size_t i;
@@ -863,7 +644,7 @@ void cli_roster_free(cli_roster *roster)
         free(roster->unplaced[i].name);
     free(roster->unplaced);
     if (roster->staging != NULL)
-        remove_staging(roster->staging);
+        cli_remove_staging(roster->staging);
     free(roster->staging);
     memset(roster, 0, sizeof *roster);
 }

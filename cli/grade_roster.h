@@ -69,9 +69,4 @@ void cli_roster_free(cli_roster *roster);
 /* How a layout is named in the grouping's lines ("a zip file", ...). */
 const char *cli_layout_name(cli_layout layout);
 
-/* name as a file name: ASCII letters, digits, '-', '_' and '.', and
-   accented Latin letters, kept; anything else '_'; never beginning with
-   '.', at most 80 bytes, "student" when nothing is left. */
-void cli_safe_file_name(const char *name, char *out, size_t room);
-
 #endif
