@@ -42,7 +42,9 @@ CFLAGS ?=
 ALL_CFLAGS = -std=c11 $(OPT) $(WARNINGS) -Iinclude $(PNG_CFLAGS) \
               $(JPEG_CFLAGS) $(CFLAGS) \
               -MMD -MP
-LDLIBS = $(PNG_LIBS) $(JPEG_LIBS) -lpthread -lm
+# zlib (which libpng-dev brings): the command reads students' zip files
+# (cli/zip_read.c).
+LDLIBS = $(PNG_LIBS) $(JPEG_LIBS) -lz -lpthread -lm
 
 # Builds speak softly: one line per file made ("  CC  src/x.c"); V=1
 # prints the commands themselves, make -s nothing.

@@ -18,6 +18,9 @@
 #include "cli.h"
 #include "grade_class.h"
 #include "grade_export.h"
+#include "grade_feedback.h"
+#include "grade_roster.h"
+#include "grade_tally.h"
 #include "interrupt.h"
 #include "output_guard.h"
 
@@ -29,6 +32,8 @@ typedef struct grade_request {
     const char *csv;             /* --csv FILE or "-" */
     const char *gradescope;      /* --gradescope FILE */
     cli_grade_points points;     /* --points */
+    int scored;                  /* --points was given: a score column */
+    const char *feedback;        /* --feedback DIR */
 } grade_request;
 
 /* The grading's cancel callback: after SIGINT/SIGTERM the grading stops,
@@ -70,6 +75,11 @@ static void print_help(void)
           "      --each             DIRECTORY holds one folder per student: "
           "grade each,\n"
           "                         print a table\n"
+          "                         (also Moodle's folders, zip files, GitHub "
+          "Classroom's\n"
+          "                         repositories, files named NAME_main.c)\n"
+          "      --feedback DIR     with --each, write each student's report "
+          "into DIR\n"
           "  -j, --jobs N           with --each, grade N submissions at once "
           "(default:\n"
           "                         the number of CPUs); the table is the "
@@ -82,6 +92,7 @@ static void print_help(void)
           "                         submission (not with --each)\n"
           "      --points LIST      points per criterion for --csv and "
           "--gradescope\n"
+          "                         (and a score column in --each's table)\n"
           "                         (default compile=10,functions=20,run=10,"
           "output=10,\n"
           "                         image=40,valgrind=10)\n"
@@ -149,7 +160,7 @@ enum {
     OPT_EXERCISE = 256, OPT_REFERENCE, OPT_DIFF, OPT_JSON, OPT_EACH,
     OPT_TIMEOUT, OPT_CPU, OPT_MEMORY, OPT_OUTPUT_LIMIT, OPT_PROCESSES,
     OPT_NO_VALGRIND, OPT_CC, OPT_CSV, OPT_GRADESCOPE, OPT_POINTS,
-    OPT_SANDBOX, OPT_DISK, OPT_CHECK, OPT_LANG
+    OPT_SANDBOX, OPT_DISK, OPT_CHECK, OPT_LANG, OPT_FEEDBACK
 };
 
 static int parse_option(int c, grade_request *req)
@@ -175,7 +186,10 @@ static int parse_option(int c, grade_request *req)
     case OPT_CC: o->cc = optarg; return CLI_EXIT_OK;
     case OPT_CSV: req->csv = optarg; return CLI_EXIT_OK;
     case OPT_GRADESCOPE: req->gradescope = optarg; return CLI_EXIT_OK;
-    case OPT_POINTS: return cli_grade_points_parse(optarg, &req->points);
+    case OPT_POINTS:
+        req->scored = 1;
+        return cli_grade_points_parse(optarg, &req->points);
+    case OPT_FEEDBACK: req->feedback = optarg; return CLI_EXIT_OK;
     case 'j': {
         unsigned long jobs;
         if (!cli_parse_uint("--jobs", optarg, 1, 256, &jobs))
@@ -243,6 +257,7 @@ static int parse_request(int argc, char **argv, grade_request *req)
         {"disk", required_argument, NULL, OPT_DISK},
         {"check", no_argument, NULL, OPT_CHECK},
         {"lang", required_argument, NULL, OPT_LANG},
+        {"feedback", required_argument, NULL, OPT_FEEDBACK},
         {"help", no_argument, NULL, 'h'},
         {NULL, 0, NULL, 0}};
     int c;
@@ -276,6 +291,10 @@ static int parse_request(int argc, char **argv, grade_request *req)
     if (req->each && req->options.diff != NULL)
         return cli_usage_error(_("--diff: applies to one submission, not to "
                                  "--each"));
+    if (!req->each && req->feedback != NULL)
+        return cli_usage_error(_("--feedback: writes one report per student "
+                                 "of --each; for one submission, save the "
+                                 "report itself"));
     if (req->each && req->gradescope != NULL)
         return cli_usage_error(_("--gradescope: Gradescope grades one "
                                  "submission per run, not --each; use --csv "
@@ -318,13 +337,13 @@ static int parse_request(int argc, char **argv, grade_request *req)
 #define STUDENT_COLUMNS 40 /* the widest the table's student column gets */
 
 /* Writes s escaped (names: a name, else a reason line). */
-static void print_escaped(const char *s, int names)
+static void print_escaped(FILE *out, const char *s, int names)
 {
     while (*s != '\0') {
         char text[8];
         size_t columns;
         s += cli_escape_unit(s, names, text, &columns);
-        fputs(text, stdout);
+        fputs(text, out);
     }
 }
 
@@ -379,30 +398,30 @@ static const char *isolation_line(const char *isolation, char *line,
     return line;
 }
 
-static void print_isolation(const char *isolation)
+static void print_isolation(FILE *out, const char *isolation)
 {
     char line[600];
     if (isolation_line(isolation, line, sizeof line) != NULL)
-        printf("%s\n", line);
+        fprintf(out, "%s\n", line);
 }
 
-static void print_text(const rayo_grade_report *r)
+static void print_text(FILE *out, const rayo_grade_report *r)
 {
     size_t c, i, failed = 0, skipped = 0, warnings = 0;
     char failed_names[128] = "";
-    print_isolation(r->isolation);
+    print_isolation(out, r->isolation);
     for (c = 0; c < RAYO_GRADE_CRITERIA; c++) {
         const rayo_grade_item *item = &r->items[c];
         const char *result = item->result == RAYO_GRADE_FAIL
                                  ? "FAIL"
                                  : rayo_grade_result_name(item->result);
-        printf("%-10s %-8s ", rayo_grade_criterion_name(c), result);
-        print_escaped(item->line_count > 0 ? item->lines[0] : "", 0);
-        putchar('\n');
+        fprintf(out, "%-10s %-8s ", rayo_grade_criterion_name(c), result);
+        print_escaped(out, item->line_count > 0 ? item->lines[0] : "", 0);
+        fputc('\n', out);
         for (i = 1; i < item->line_count; i++) {
-            printf("%-19s ", "");
-            print_escaped(item->lines[i], 0);
-            putchar('\n');
+            fprintf(out, "%-19s ", "");
+            print_escaped(out, item->lines[i], 0);
+            fputc('\n', out);
         }
         warnings += item->warnings;
         if (item->result == RAYO_GRADE_SKIPPED)
@@ -416,21 +435,24 @@ static void print_text(const rayo_grade_report *r)
     }
     /* The PASS and FAIL tokens stay as they are in every language. */
     if (failed > 0) {
-        printf("\nFAIL: ");
-        printf(_n("%zu of %d criterion failed (%s)",
-                  "%zu of %d criteria failed (%s)", RAYO_GRADE_CRITERIA),
-               failed, RAYO_GRADE_CRITERIA, failed_names);
+        fputs("\nFAIL: ", out);
+        fprintf(out,
+                _n("%zu of %d criterion failed (%s)",
+                   "%zu of %d criteria failed (%s)", RAYO_GRADE_CRITERIA),
+                failed, RAYO_GRADE_CRITERIA, failed_names);
     } else {
-        printf("\nPASS: ");
-        printf(_n("%zu of %d criterion passed", "%zu of %d criteria passed",
-                  RAYO_GRADE_CRITERIA),
-               RAYO_GRADE_CRITERIA - skipped, RAYO_GRADE_CRITERIA);
+        fputs("\nPASS: ", out);
+        fprintf(out,
+                _n("%zu of %d criterion passed", "%zu of %d criteria passed",
+                   RAYO_GRADE_CRITERIA),
+                RAYO_GRADE_CRITERIA - skipped, RAYO_GRADE_CRITERIA);
     }
     if (skipped > 0)
-        printf(_n(", %zu skipped", ", %zu skipped", skipped), skipped);
+        fprintf(out, _n(", %zu skipped", ", %zu skipped", skipped), skipped);
     if (warnings > 0)
-        printf(_n(", %zu warning", ", %zu warnings", warnings), warnings);
-    printf("\n");
+        fprintf(out, _n(", %zu warning", ", %zu warnings", warnings),
+                warnings);
+    fputs("\n", out);
 }
 
 /* ---- JSON ---- */
@@ -610,7 +632,7 @@ static int grade_single(int argc, char **argv, int first, grade_request *req)
     if (req->json)
         printf("\n");
     else if (!quiet)
-        print_text(&report);
+        print_text(stdout, &report);
     exit_status = rayo_grade_overall(&report) == RAYO_GRADE_PASS
                       ? CLI_EXIT_OK
                       : CLI_EXIT_FAILURE;
@@ -624,17 +646,20 @@ static int grade_single(int argc, char **argv, int first, grade_request *req)
 
 /* ---- a class ---- */
 
-static void print_table_header(size_t width)
+static void print_table_header(size_t width, int scored)
 {
     size_t c;
     print_column("student", width);
     for (c = 0; c < RAYO_GRADE_CRITERIA; c++)
         printf(" %-9s", rayo_grade_criterion_name(c));
+    if (scored)
+        printf(" %-9s", "score");
     printf(" result\n");
 }
 
 static void print_table_row(const char *student, size_t width,
-                            const rayo_grade_report *r)
+                            const rayo_grade_report *r,
+                            const cli_grade_points *points)
 {
     size_t c;
     print_column(student, width);
@@ -642,17 +667,23 @@ static void print_table_row(const char *student, size_t width,
         printf(" %-9s", r->items[c].result == RAYO_GRADE_FAIL
                             ? "FAIL"
                             : rayo_grade_result_name(r->items[c].result));
+    if (points != NULL) {
+        char score[64];
+        double max, got = cli_grade_score(r, points, &max);
+        snprintf(score, sizeof score, "%.10g/%.10g", got, max);
+        printf(" %-9s", score);
+    }
     printf(" %s\n", rayo_grade_overall(r) == RAYO_GRADE_PASS ? "PASS"
                                                              : "FAIL");
 }
 
 /* The student column: as wide as the widest name (escaped), at least
    "student", at most STUDENT_COLUMNS (wider names are cut). */
-static size_t student_width(char **folders, size_t count)
+static size_t student_width(const cli_roster *roster)
 {
     size_t width = strlen("student"), i;
-    for (i = 0; i < count; i++) {
-        size_t columns = escaped_columns(base_name(folders[i]));
+    for (i = 0; i < roster->count; i++) {
+        size_t columns = escaped_columns(roster->students[i].name);
         if (columns > width)
             width = columns;
     }
@@ -662,17 +693,53 @@ static size_t student_width(char **folders, size_t count)
 /* What the class's table, JSON and CSV have so far. */
 typedef struct class_printer {
     const grade_request *req;
+    const cli_roster *roster;
     size_t width, passed, printed;
     int cancelled, quiet;
+    int feedback_status;         /* the first failure writing a report */
     FILE *csv;                   /* the CSV rows, in memory */
+    cli_tally tally;
 } class_printer;
+
+/* The student's report into --feedback's folder: the text one grading
+   prints, or why it could not be graded. */
+static void write_feedback(class_printer *p, const cli_student *student,
+                           const rayo_grade_report *report,
+                           const char *error)
+{
+    char *text = NULL;
+    size_t size = 0;
+    int status;
+    FILE *stream = open_memstream(&text, &size);
+    if (stream == NULL) {
+        cli_sayf("--feedback: %s: out of memory", p->req->feedback);
+        status = CLI_EXIT_FAILURE;
+    } else {
+        if (report != NULL)
+            print_text(stream, report);
+        else
+            fprintf(stream, "rayo grade could not grade this submission: "
+                    "%s\n", error);
+        if (fclose(stream) != 0 || text == NULL) {
+            cli_sayf("--feedback: %s: out of memory", p->req->feedback);
+            status = CLI_EXIT_FAILURE;
+        } else {
+            status = cli_feedback_write(p->req->feedback, student, text,
+                                        size);
+        }
+    }
+    free(text);
+    if (status != CLI_EXIT_OK && p->feedback_status == CLI_EXIT_OK)
+        p->feedback_status = status;
+}
 
 /* One submission's row, in the folders' order (grade_class.h). */
 static int print_graded(const cli_graded *g, void *context)
 {
     class_printer *p = context;
     const grade_request *req = p->req;
-    const char *student = base_name(g->folder);
+    const cli_student *who = &p->roster->students[g->index];
+    const char *student = who->name;
     if (g->status != RAYO_OK && g->err.status == RAYO_ERR_CANCELLED) {
         p->cancelled = 1;
         return 1;
@@ -680,28 +747,36 @@ static int print_graded(const cli_graded *g, void *context)
     if (req->json && p->printed > 0)
         printf(",\n ");
     p->printed++;
-    if (g->status != RAYO_OK) {
+    if (g->status != RAYO_OK || who->problem != NULL) {
         /* One bad folder does not stop the class. */
+        const char *message = who->problem != NULL ? who->problem
+                                                   : g->err.message;
         if (req->json) {
             printf("{\"student\": ");
             json_string(student);
             printf(", \"result\": \"error\", \"error\": ");
-            json_string(g->err.message);
+            json_string(message);
             printf("}");
         } else if (!p->quiet) {
             print_column(student, p->width);
             printf(" error: ");
-            print_escaped(g->err.message, 0);
+            print_escaped(stdout, message, 0);
             putchar('\n');
         }
         if (p->csv != NULL)
-            cli_grade_csv_row(p->csv, student, NULL, g->err.message,
-                              &req->points);
+            cli_grade_csv_row(p->csv, student, NULL, message, &req->points);
+        cli_tally_add(&p->tally, NULL);
+        if (req->feedback != NULL)
+            write_feedback(p, who, NULL, message);
     } else {
         if (req->json)
             print_json(student, g->options, &g->report);
         else if (!p->quiet)
-            print_table_row(student, p->width, &g->report);
+            print_table_row(student, p->width, &g->report,
+                            req->scored ? &req->points : NULL);
+        cli_tally_add(&p->tally, &g->report);
+        if (req->feedback != NULL)
+            write_feedback(p, who, &g->report, NULL);
         if (rayo_grade_overall(&g->report) == RAYO_GRADE_PASS)
             p->passed++;
         if (p->csv != NULL)
@@ -714,8 +789,9 @@ static int print_graded(const cli_graded *g, void *context)
 
 static int grade_each(const char *dir, grade_request *req)
 {
-    char **folders = NULL;
-    size_t count = 0;
+    cli_roster roster;
+    char **folders;
+    size_t count, i;
     char *csv_text = NULL;
     size_t csv_size = 0;
     class_printer p;
@@ -723,17 +799,37 @@ static int grade_each(const char *dir, grade_request *req)
     char isolation[512];
     int status;
     rayo_error_clear(&err);
-    if (rayo_grade_submissions(dir, &folders, &count, &err) != RAYO_OK)
+    if (cli_roster_build(dir, &roster, &err) != RAYO_OK) {
+        cli_roster_free(&roster);
         return cli_report(&err);
+    }
+    cli_roster_say(dir, &roster);
+    count = roster.count;
+    folders = malloc(count * sizeof *folders);
+    if (folders == NULL) {
+        cli_roster_free(&roster);
+        cli_sayf("%s: out of memory", dir);
+        return CLI_EXIT_FAILURE;
+    }
+    for (i = 0; i < count; i++)
+        folders[i] = roster.students[i].folder;
+    if (req->feedback != NULL &&
+        (status = cli_feedback_prepare(req->feedback)) != CLI_EXIT_OK) {
+        free(folders);
+        cli_roster_free(&roster);
+        return status;
+    }
     memset(&p, 0, sizeof p);
     p.req = req;
-    p.width = student_width(folders, count);
+    p.roster = &roster;
+    p.width = student_width(&roster);
     p.quiet = is_stdout(req->csv);
     if (req->csv != NULL) {
         p.csv = start_export(&csv_text, &csv_size, req->csv);
         if (p.csv == NULL) {
-            rayo_grade_paths_free(folders, count);
-            return CLI_EXIT_NOMEM;
+            free(folders);
+            cli_roster_free(&roster);
+            return CLI_EXIT_FAILURE;
         }
         cli_grade_csv_header(p.csv);
     }
@@ -745,19 +841,26 @@ static int grade_each(const char *dir, grade_request *req)
     if (req->json)
         printf("[");
     else if (!p.quiet) {
-        print_isolation(isolation);
-        print_table_header(p.width);
+        print_isolation(stdout, isolation);
+        print_table_header(p.width, req->scored);
     }
     cli_grade_class(folders, count,
                     req->jobs > 0 ? req->jobs : cli_grade_default_jobs(),
                     &req->options, 1, print_graded, &p);
     if (req->json)
         printf("]\n");
-    else if (!p.quiet)
+    else if (!p.quiet) {
         printf(_n("\n%zu of %zu submission passed\n",
                   "\n%zu of %zu submissions passed\n", count),
                p.passed, count);
+        if (!p.cancelled && cli_interrupted() == 0) {
+            putchar('\n');
+            cli_tally_print(stdout, &p.tally);
+        }
+    }
     status = p.passed == count ? CLI_EXIT_OK : CLI_EXIT_FAILURE;
+    if (p.feedback_status != CLI_EXIT_OK)
+        status = p.feedback_status;
     if (p.csv != NULL) {
         if (p.cancelled || cli_interrupted() != 0) {
             fclose(p.csv);
@@ -769,7 +872,9 @@ static int grade_each(const char *dir, grade_request *req)
                 status = written;
         }
     }
-    rayo_grade_paths_free(folders, count);
+    cli_tally_free(&p.tally);
+    free(folders);
+    cli_roster_free(&roster);
     return status;
 }
 

@@ -36,11 +36,11 @@ ok $? "-j 3: the same table as -j 1, byte for byte"
 run_capture grade $NV --jobs 2 --each "$TMP/class"
 cmp -s "$TMP/table1" "$TMP/out"
 ok $? "--jobs 2: the same table as -j 1"
-is "$(grep -c '' "$TMP/table1")" 12 \
+is "$(sed '/submissions passed$/q' "$TMP/table1" | grep -c '')" 12 \
     "the table: how it was isolated, a header, 8 rows, a blank line, the tally"
 head -n 1 "$TMP/table1" | grep -Eq '^(sandbox: bubblewrap|warning: not isolated)'
 ok $? "the table's first line: the sandbox, or a warning that there is none"
-is "$(tail -n 1 "$TMP/table1")" "2 of 8 submissions passed" "the tally"
+is "$(sed -n 12p "$TMP/table1")" "2 of 8 submissions passed" "the tally"
 
 # The JSON, but for the run's time (which differs from run to run).
 untimed() { sed 's/ran to the end in [0-9.]* s/ran to the end in T s/g' "$1"; }
@@ -52,6 +52,53 @@ cmp -s "$TMP/json1" "$TMP/json4"
 ok $? "-j 4 --json: the same JSON as -j 1"
 is "$(jq -r 'map(.result) | join(" ")' "$TMP/out")" \
     "pass pass fail fail fail fail error error" "--json: results in folder order"
+
+# ---- the summary of the class ----
+# Computed here from the JSON's results and reasons: how many passed,
+# failed or could not be graded; per criterion how many failed it, and
+# its kinds of mistake (the first reason line, warnings and quotes passed
+# over, up to its first ':', ';', ' (' or ', at '), most frequent first.
+cat >"$TMP/summary.py" <<'PY'
+import json, sys
+reports = json.load(open(sys.argv[1]))
+count = lambda r: sum(1 for x in reports if x['result'] == r)
+print('summary: %d passed, %d failed, %d could not be graded'
+      % (count('pass'), count('fail'), count('error')))
+print('%-10s %6s  %s' % ('criterion', 'failed',
+                         'mistakes, as the report names them (students)'))
+names = ['compile', 'functions', 'run', 'output', 'image', 'valgrind']
+for c, name in enumerate(names):
+    kinds = {}
+    failed = [x for x in reports if x['result'] == 'fail'
+              and x['criteria'][c]['result'] == 'fail']
+    for x in failed:
+        lines = [l for l in x['criteria'][c]['reasons']
+                 if not l.startswith(' ') and not l.startswith('warning: ')]
+        kind = lines[0] if lines else ''
+        for cut in (':', ';', ' (', ', at '):
+            kind = kind.split(cut)[0]
+        kinds[kind] = kinds.get(kind, 0) + 1
+    order = sorted(kinds.items(), key=lambda k: (-k[1], k[0]))
+    row = '%-10s %6d' % (name, len(failed))
+    for i, (kind, n) in enumerate(order):
+        row += ('  ' if i == 0 else '\n' + ' ' * 19) + '%s (%d)' % (kind, n)
+    print(row)
+PY
+python3 "$TMP/summary.py" "$TMP/out" >"$TMP/summary.want"
+sed '1,/submissions passed$/d' "$TMP/table1" | sed 1d >"$TMP/summary.got"
+cmp -s "$TMP/summary.want" "$TMP/summary.got"
+ok $? "the table ends with the class's summary, its counts as the JSON's"
+[ "$tap_failed" -eq 0 ] || diff "$TMP/summary.want" "$TMP/summary.got" | sed 's/^/# /'
+is "$(grep -c '^output          2  ' "$TMP/summary.got"):$(grep -c '^summary: 2 passed, 4 failed, 2 could not be graded$' "$TMP/summary.got")" \
+    "1:1" "the summary: two failed the output, 2 passed, 4 failed, 2 could not be graded"
+
+# ---- --points: a score column ----
+run_capture grade $NV -j 2 --points image=50 --each "$TMP/class"
+is "$(sed -n 2p "$TMP/out" | awk '{ print $(NF - 1) }')" score "--points: the table has a score column"
+is "$(awk '$1 == "correct" || $1 == "degrees" || $1 == "norma_int" { print $1, $(NF - 1) }' "$TMP/out" | tr '\n' ' ')" \
+    "correct 100/100 degrees 50/100 norma_int 80/100 " \
+    "--points image=50 with --no-valgrind: 10+20+10+10+50 (valgrind 0); degrees loses the image's 50, norma_int the functions' 20"
+is "$(sed -n 2p "$TMP/table1" | awk '{ print $(NF - 1) }')" valgrind "without --points: no score column"
 
 # ---- --csv ----
 run_capture grade $NV -j 2 --each "$TMP/class" --csv "$TMP/class.csv"
