@@ -15,6 +15,7 @@
 #include "rayo/status.h"
 #include "rayo/lang.h"
 #include "rayo/limits.h"
+#include "rayo/cpu.h"
 #include "rayo/seed.h"
 
 #include "rayo/vec3.h"
@@ -22,6 +23,7 @@
 #include "rayo/sphere.h"
 #include "rayo/plane.h"
 #include "rayo/triangle.h"
+#include "rayo/mesh.h"
 #include "rayo/camera.h"
 #include "rayo/camera_spec.h"
 #include "rayo/scene.h"
@@ -30,6 +32,7 @@
 #include "rayo/render.h"
 
 #include "rayo/image.h"
+#include "rayo/row_sink.h"
 #include "rayo/output.h"
 #include "rayo/writer.h"
 #include "rayo/reader.h"

@@ -23,8 +23,8 @@ rank() {
 }
 home() { # the layer a public header belongs to
     case $1 in
-    status | limits | lang | vec3 | export) echo core ;;
-    image | image_convert) echo image ;;
+    status | limits | lang | vec3 | export | cpu) echo core ;;
+    image | image_convert | row_sink) echo image ;;
     output) echo io ;;
     reader | writer | mesh) echo formats ;;
     ray | sphere | plane | triangle) echo geometry ;;

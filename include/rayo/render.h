@@ -15,8 +15,10 @@
 #include <stdint.h>
 
 #include "rayo/camera.h"
+#include "rayo/cpu.h"
 #include "rayo/export.h"
 #include "rayo/image.h"
+#include "rayo/row_sink.h"
 #include "rayo/scene.h"
 #include "rayo/status.h"
 
@@ -107,15 +109,8 @@ RAYO_API void rayo_render_options_init(rayo_render_options *options);
 RAYO_API rayo_image_info rayo_render_image_info(
     const rayo_camera *camera, const rayo_render_options *options);
 
-/*
- * Receives count finished rows starting at first_row, stride bytes apart.
- * A status other than RAYO_OK stops the render and is returned by it.
- */
-typedef rayo_status (*rayo_row_sink)(void *context,
-                                     const unsigned char *rows,
-                                     size_t stride, uint32_t first_row,
-                                     uint32_t count, rayo_error *err);
-
+/* Rows go to a rayo_row_sink (row_sink.h); a status other than RAYO_OK
+ * from it stops the render and is returned by it. */
 RAYO_API rayo_status rayo_render(const rayo_camera *camera,
                                  const rayo_scene *scene,
                                  const rayo_render_options *options,
@@ -137,10 +132,6 @@ RAYO_API rayo_status rayo_render_image(const rayo_camera *camera,
                                        const rayo_scene *scene,
                                        const rayo_render_options *options,
                                        rayo_image *image, rayo_error *err);
-
-/* The number of CPUs this process may use (its affinity mask, else the
- * online CPUs), at least 1 and at most RAYO_MAX_THREADS. */
-RAYO_API unsigned rayo_cpu_count(void);
 
 #ifdef __cplusplus
 }

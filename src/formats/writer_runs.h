@@ -16,7 +16,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "rayo/render.h"
+#include "rayo/row_sink.h"
 #include "rayo/writer.h"
 
 #include "../image/row_runs.h"

@@ -99,26 +99,6 @@ typedef struct band_job {
     int stop;
 } band_job;
 
-/*
- * The CPUs this process may run on (taskset, cpusets), else the online
- * ones.  One system call: sysconf reads a file under /sys, which cost
- * the seed job a tenth of its time.
- */
-unsigned rayo_cpu_count(void)
-{
-    long n;
-#ifdef CPU_COUNT
-    cpu_set_t set;
-    if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0)
-        n = CPU_COUNT(&set);
-    else
-#endif
-        n = sysconf(_SC_NPROCESSORS_ONLN);
-    if (n < 1)
-        return 1;
-    return n > (long)RAYO_MAX_THREADS ? RAYO_MAX_THREADS : (unsigned)n;
-}
-
 void rayo_render_options_init(rayo_render_options *options)
 {
     options->shade = RAYO_SHADE_HIT;

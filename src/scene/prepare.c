@@ -15,7 +15,7 @@
 
 #include <stdlib.h>
 
-#include "rayo/render.h"
+#include "rayo/cpu.h"
 
 static rayo_box sphere_box(const rayo_sphere *s)
 {
