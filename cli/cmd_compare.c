@@ -240,9 +240,11 @@ static int compare_images(const compare_request *req,
     rayo_compare_report report;
     rayo_error err;
     int status;
+    rayo_compare_options options = req->options;
     rayo_error_clear(&err);
-    if (rayo_compare_images(reference, image, &req->options, &report,
-                            &err) != RAYO_OK)
+    options.lossy = clamped->format == RAYO_FORMAT_JPEG;
+    if (rayo_compare_images(reference, image, &options, &report, &err) !=
+        RAYO_OK)
         return cli_report(&err);
     report.reference_surplus = reference_surplus;
     report.image_surplus = image_surplus;

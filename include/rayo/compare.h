@@ -121,7 +121,17 @@ typedef struct rayo_compare_options {
     int course;       /* tone: a rayo_course_exercise whose mistakes the
                          diagnosis tries, or RAYO_COMPARE_COURSE_AUTO
                          (default) or RAYO_COMPARE_COURSE_NONE */
+    int lossy;        /* the image was saved lossily (JPEG): values are
+                         compared within RAYO_COMPARE_LOSSY_LEVELS at
+                         least, and against a bilevel reference the image
+                         is taken as black where darker than half;
+                         default 0 */
 } rayo_compare_options;
+
+/* The levels a lossy image's values are compared within, at least: a
+ * JPEG of quality 90 of the course's scene 3 is within them away from
+ * the outlines. */
+#define RAYO_COMPARE_LOSSY_LEVELS 32u
 
 RAYO_API void rayo_compare_options_init(rayo_compare_options *options);
 
@@ -220,6 +230,15 @@ typedef struct rayo_compare_report {
     uint64_t image_clamped_high, image_clamped_low;
     uint64_t image_first_high_line, image_first_low_line;
     long image_largest, image_smallest;
+    /* How the image's file departs from what the course hands in (set
+       by rayo_compare_note_clamped from the read report, printed as
+       notes): a BMP's bits a pixel (other than the course's 24), rows
+       stored top down, rows without their padding; and, set by the
+       caller, the levels a lossy JPEG was compared within (0: not). */
+    int image_bmp;            /* the image's file is a BMP */
+    unsigned image_bmp_bits;
+    int image_bmp_top_down, image_bmp_unpadded;
+    unsigned image_lossy_levels;
     rayo_compare_tone tone;   /* RAYO_COMPARE_TONE; zero for masks */
     uint32_t reference_width, reference_height;
     uint32_t image_width, image_height;
@@ -329,8 +348,9 @@ RAYO_API size_t rayo_compare_format_json(const rayo_compare_report *report,
                                          char *buffer, size_t size);
 
 /*
- * Records in report what a reader that clamped the image's samples
- * (rayo_read_options.clamp) counted.  With any sample out of range, an
+ * Records in report how the image's file was written when it departs
+ * from the course's (a BMP not in its layout), and what a reader that
+ * clamped the image's samples (rayo_read_options.clamp) counted.  With any sample out of range, an
  * image that was identical or consistent once clamped becomes
  * inconsistent with RAYO_DIAGNOSIS_OUT_OF_RANGE (the file is not a valid
  * image, whatever its picture); an inconsistent one keeps its own

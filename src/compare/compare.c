@@ -9,6 +9,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "rayo/image_convert.h"
+
 #include "compare_impl.h"
 #include "tone_impl.h"
 
@@ -32,6 +34,7 @@ void rayo_compare_options_init(rayo_compare_options *options)
     options->tolerance = 2;
     options->levels = 1;
     options->course = RAYO_COMPARE_COURSE_AUTO;
+    options->lossy = 0;
 }
 
 static void fill_counts(const cmp_counts *c, int has_edges,
@@ -89,6 +92,35 @@ static rayo_status run(const cmp_pair *pair, rayo_compare_report *report,
     return s;
 }
 
+/* A lossily saved image (options->lossy): values within
+ * RAYO_COMPARE_LOSSY_LEVELS at least, and against a bilevel reference the
+ * image's mask (black where darker than half), the levels in the report. */
+static rayo_status compare_lossy(const rayo_image *reference,
+                                 const rayo_image *image,
+                                 const rayo_compare_options *options,
+                                 rayo_compare_report *report,
+                                 rayo_error *err)
+{
+    rayo_compare_options plain = *options;
+    rayo_image mask;
+    rayo_status s;
+    plain.lossy = 0;
+    if (plain.levels < RAYO_COMPARE_LOSSY_LEVELS)
+        plain.levels = RAYO_COMPARE_LOSSY_LEVELS;
+    memset(&mask, 0, sizeof mask);
+    if (tone_is_bilevel(reference) && !tone_is_bilevel(image)) {
+        s = rayo_image_to_bit(image, &mask, err);
+        if (s != RAYO_OK)
+            return s;
+        image = &mask;
+    }
+    s = rayo_compare_images(reference, image, &plain, report, err);
+    rayo_image_free(&mask);
+    if (s == RAYO_OK)
+        report->image_lossy_levels = plain.levels;
+    return s;
+}
+
 rayo_status rayo_compare_images(const rayo_image *reference,
                                 const rayo_image *image,
                                 const rayo_compare_options *options,
@@ -101,6 +133,8 @@ rayo_status rayo_compare_images(const rayo_image *reference,
     rayo_compare_options_init(&defaults);
     if (options == NULL)
         options = &defaults;
+    if (options->lossy)
+        return compare_lossy(reference, image, options, report, err);
     report->tolerance = options->tolerance;
     if ((s = cmp_options_check(options, err)) != RAYO_OK)
         return s;
@@ -166,6 +200,12 @@ void rayo_compare_note_clamped(rayo_compare_report *report,
     report->image_first_low_line = read->first_low_line;
     report->image_largest = read->largest_found;
     report->image_smallest = read->smallest_found;
+    if (read->format == RAYO_FORMAT_BMP) {
+        report->image_bmp = 1;
+        report->image_bmp_bits = read->bmp_bits != 24 ? read->bmp_bits : 0;
+        report->image_bmp_top_down = read->bmp_top_down;
+        report->image_bmp_unpadded = read->bmp_unpadded;
+    }
     if (read->clamped_high + read->clamped_low == 0 ||
         report->verdict == RAYO_VERDICT_INCONSISTENT)
         return;

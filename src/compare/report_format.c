@@ -56,8 +56,22 @@ void cmp_put_crowded_json(cmp_sink *s, const rayo_compare_report *r)
             (unsigned long long)r->band);
 }
 
+/* How the image's file departs from what the course hands in. */
+static void put_file_json(cmp_sink *s, const rayo_compare_report *r)
+{
+    if (r->image_lossy_levels == 0 && r->image_bmp_bits == 0 &&
+        !r->image_bmp_top_down && !r->image_bmp_unpadded)
+        return;
+    cmp_put(s, ", \"image_file\": {\"lossy_levels\": %u, \"bmp_bits\": %u, "
+               "\"bmp_top_down\": %s, \"bmp_unpadded\": %s}",
+            r->image_lossy_levels, r->image_bmp_bits,
+            r->image_bmp_top_down ? "true" : "false",
+            r->image_bmp_unpadded ? "true" : "false");
+}
+
 void cmp_put_clamped_json(cmp_sink *s, const rayo_compare_report *r)
 {
+    put_file_json(s, r);
     if (r->image_clamped_high + r->image_clamped_low == 0)
         return;
     cmp_put(s, ", \"image_clamped\": {\"high\": %llu, \"low\": %llu, "
@@ -107,6 +121,30 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
         cmp_put_out_of_range(&s, r);
         cmp_put(&s, "\n");
     }
+    if (r->image_lossy_levels > 0)
+        cmp_put(&s, "note: the image is a JPEG, which is lossy: values were "
+                    "compared within %u levels (of 255) to allow for its "
+                    "artifacts, and bilevel pictures as black where darker "
+                    "than half; hand in PNG or the statement's format\n",
+                r->image_lossy_levels);
+    if (r->image_bmp && !r->image_bmp_top_down &&
+        r->diagnosis == RAYO_DIAGNOSIS_FLIPPED_VERTICALLY)
+        cmp_put(&s, "note: a BMP with a positive height, as the course's "
+                    "layout has it, stores its rows bottom up: the picture's "
+                    "last row first\n");
+    if (r->image_bmp_top_down)
+        cmp_put(&s, "note: the BMP's rows are stored top down (a negative "
+                    "height); the course's layout stores them bottom up, "
+                    "with a positive height\n");
+    if (r->image_bmp_unpadded)
+        cmp_put(&s, "note: the BMP's rows are not padded to a multiple of 4 "
+                    "bytes, as the format and the course's layout ask; read "
+                    "as written because the file's size says so, but other "
+                    "programs show it slanted\n");
+    if (r->image_bmp_bits > 0)
+        cmp_put(&s, "note: the BMP has %u bits a pixel; the course's layout "
+                    "has 24 (B, G, R)\n",
+                r->image_bmp_bits);
     *length = s.length;
 }
 

@@ -79,6 +79,29 @@ out=$(rayo convert -v "$TMP/rgb24_unpadded.bmp" "$TMP/x.ppm" 2>&1 | head -n 1)
 is "$out" "rayo: $TMP/rgb24_unpadded.bmp: bmp, 13x7, RGB, maxval 255; 0 bytes after the image" \
     "convert -v names the format"
 
+# --- compare names how a BMP departs from the course's layout ----------
+rayo render "$RAYO_SOURCE/examples/ej3.scene" -o "$TMP/full.ppm"
+python3 - "$TMP" <<'PY'
+import struct, sys
+d = sys.argv[1]
+t = open(d + "/full.ppm", "rb").read().split()
+w, h, v = int(t[1]), int(t[2]), list(map(int, t[4:]))
+rows = b"".join(bytes(c for x in range(w) for c in reversed(v[(y * w + x) * 3:(y * w + x) * 3 + 3])) for y in range(h))
+head = lambda height: b"BM" + struct.pack("<IHHI", 54 + len(rows), 0, 0, 54) + \
+    struct.pack("<IiiHHIIiiII", 40, w, height, 1, 24, 0, 0, 0, 0, 0, 0)
+open(d + "/topdown.bmp", "wb").write(head(-h) + rows)
+open(d + "/upside.bmp", "wb").write(head(h) + rows)
+PY
+run_capture compare course:ej3 "$TMP/topdown.bmp"
+is "$status:$(grep -c "^note: the BMP's rows are stored top down" "$TMP/out")" "0:1" \
+    "compare: a BMP stored top down is the right picture, and the note says how it departs"
+run_capture compare course:ej3 "$TMP/upside.bmp"
+is "$status:$(grep -c "^note: a BMP with a positive height, as the course's layout has it, stores its rows bottom up" "$TMP/out")" "1:1" \
+    "  rows written top first with a positive height: upside down, and why"
+run_capture compare "$TMP/rgb24_unpadded.want.pnm" "$TMP/rgb24_unpadded.bmp"
+is "$(grep -c "^note: the BMP's rows are not padded to a multiple of 4 bytes" "$TMP/out")" 1 \
+    "  rows without padding: the note"
+
 # --- broken files: one line each, the byte, exit status 2, no output ----
 bad() { # bad NAME MESSAGE
     status=0

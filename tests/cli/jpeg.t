@@ -57,4 +57,22 @@ is "$status:$(cat "$TMP/err")" "2:rayo: $TMP/marker.jpg: byte 10: libjpeg: Unsup
     "a broken marker: libjpeg's reason, and where"
 [ ! -e "$TMP/cut.ppm" ] && [ ! -e "$TMP/marker.ppm" ]
 ok $? "  nothing written"
+# compare knows a JPEG is lossy: the course's scene 3 saved as JPEG is
+# consistent with the course's image, saying so; upside down it is not;
+# EJ1's sphere as JPEG is compared as a mask.
+rayo render "$RAYO_SOURCE/examples/ej3.scene" -o "$TMP/full.ppm"
+rayo convert "$TMP/full.ppm" "$TMP/full.jpg"
+run_capture compare course:ej3 "$TMP/full.jpg"
+is "$status:$(grep '^verdict' "$TMP/out")" "0:verdict: consistent" "compare: the course's scene 3 as JPEG is consistent"
+grep -q "^note: the image is a JPEG, which is lossy: values were compared within 32 levels" "$TMP/out"
+ok $? "  and the report says why the tolerance"
+pamflip -tb "$TMP/full.ppm" >"$TMP/flip.ppm"
+rayo convert "$TMP/flip.ppm" "$TMP/flip.jpg"
+run_capture compare course:ej3 "$TMP/flip.jpg"
+is "$status:$(grep -c '^diagnosis: the image is upside down' "$TMP/out")" "1:1" "  upside down as JPEG: inconsistent, named"
+rayo -o "$TMP/sphere.jpg"
+run_capture compare course:ej1 "$TMP/sphere.jpg"
+is "$status:$(grep '^verdict' "$TMP/out")" "0:verdict: consistent" "EJ1's sphere as JPEG: consistent, as a mask"
+run_capture compare --json course:ej3 "$TMP/full.jpg"
+is "$(jq -c .image_file "$TMP/out")" '{"lossy_levels":32,"bmp_bits":0,"bmp_top_down":false,"bmp_unpadded":false}' "  --json has the tolerance"
 done_testing
