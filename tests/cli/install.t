@@ -108,7 +108,7 @@ man -l "$prefix/share/man/man1/rayo.1" >/dev/null 2>&1 || groff -man -Tutf8 "$pr
 ok $? "the man page formats"
 man -l "$prefix/share/man/es/man1/rayo.1" >/dev/null 2>&1 || groff -man -Tutf8 "$prefix/share/man/es/man1/rayo.1" >/dev/null 2>&1
 ok $? "the Spanish man page formats"
-msgunfmt "$prefix/share/locale/es/LC_MESSAGES/rayo.mo" | grep -q 'msgstr "no hay memoria suficiente"'
+msgunfmt "$prefix/share/locale/es/LC_MESSAGES/rayo.mo" | grep -q 'msgstr "render: no hay memoria suficiente"'
 ok $? "the installed catalog is po/es.po compiled"
 # The translations live in the library: a lone copy of the binary speaks
 # Spanish with no catalog beside it.

@@ -46,12 +46,13 @@ typedef struct lookup {
 static void *look_up_many(void *context)
 {
     lookup *l = context;
-    const char *want = l->lang == RAYO_LANG_ES ? "no hay memoria suficiente"
-                                               : "out of memory";
+    const char *want = l->lang == RAYO_LANG_ES
+                           ? "render: no hay memoria suficiente"
+                           : "render: out of memory";
     int i;
     l->same = 1;
     for (i = 0; i < 20000; i++)
-        if (strcmp(rayo_gettext(l->lang, "out of memory"), want) != 0)
+        if (strcmp(rayo_gettext(l->lang, "render: out of memory"), want) != 0)
             l->same = 0;
     return NULL;
 }
@@ -67,7 +68,7 @@ int main(void)
     rayo_lang lang = RAYO_LANG_EN;
     rayo_error err;
     char number[RAYO_LANG_NUMBER_SIZE];
-    const char *msgid = "out of memory";
+    const char *msgid = "render: out of memory";
     lookup a = {RAYO_LANG_ES, 0}, b = {RAYO_LANG_EN, 0};
     pthread_t ta, tb;
 
@@ -110,7 +111,8 @@ int main(void)
 
     /* translations */
     ok(rayo_gettext(RAYO_LANG_EN, msgid) == msgid, "English: the msgid");
-    is_string(rayo_gettext(RAYO_LANG_ES, msgid), "no hay memoria suficiente",
+    is_string(rayo_gettext(RAYO_LANG_ES, msgid),
+              "render: no hay memoria suficiente",
               "Spanish: the catalog's text");
     is_string(rayo_gettext(RAYO_LANG_ES, "no such message in the catalog"),
               "no such message in the catalog", "a message not there: itself");
