@@ -15,6 +15,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
+import { looks, LOOKS_TESTS } from './looks.mjs';
 
 const RAYO = process.env.RAYO;
 const WEB = process.env.RAYO_WEB;
@@ -130,7 +131,8 @@ function siteBytes(dir) {
 }
 
 async function main() {
-  console.log('1..40');
+  const planned = 40 + 2 * LOOKS_TESTS;
+  console.log(`1..${planned}`);
   const seed = setup();
   const size = siteBytes(WEB);
   ok(size <= 3 * 1024 * 1024, `build/web/ is ${size} bytes, at most 3 MiB`);
@@ -142,12 +144,15 @@ async function main() {
   });
   try {
     await run(browser, origin, seed);
+    const common = { browser, origin, tmp, rayo, course, ok, note };
+    await looks({ ...common, width: 1000, height: 900, locale: 'en-US', lang: 'en', label: 'desktop' });
+    await looks({ ...common, width: 375, height: 740, locale: 'es-AR', lang: 'es', label: 'phone' });
   } finally {
     await browser.close();
     server.kill();
     fs.rmSync(tmp, { recursive: true, force: true });
   }
-  if (count !== 40) ok(false, `planned 40 tests, ran ${count}`);
+  if (count !== planned) ok(false, `planned ${planned} tests, ran ${count}`);
   process.exitCode = failed ? 1 : 0;
 }
 
