@@ -20,7 +20,7 @@ const TEXT = {
     'validate.reference': 'Referencia:',
     'validate.note': 'El informe es el de rayo compare, palabra por palabra (en inglés, como lo imprime el comando).',
     'validate.diff': 'La diferencia: rojo, negro sólo en la referencia; azul, negro sólo en la imagen (en grises y color: ámbar, explicada; rojo, no).',
-    'ref.auto': 'Según tu imagen (blanco y negro: 1, gris: 2, color: 3)',
+    'ref.auto': 'Automática: según tu imagen',
     'ref.ej1': 'Cátedra: ejercicio 1 (esfera)',
     'ref.ej2': 'Cátedra: ejercicio 2 (grises)',
     'ref.ej3': 'Cátedra: ejercicio 3 (color)',
@@ -78,7 +78,7 @@ const TEXT = {
     'validate.reference': 'Reference:',
     'validate.note': 'The report is rayo compare\'s, word for word.',
     'validate.diff': 'The difference: red, black only in the reference; blue, black only in the image (gray and colour: amber, explained; red, not).',
-    'ref.auto': "By your image (black and white: 1, gray: 2, colour: 3)",
+    'ref.auto': 'Automatic: by your image',
     'ref.ej1': "Course's exercise 1 (sphere)",
     'ref.ej2': "Course's exercise 2 (gray)",
     'ref.ej3': "Course's exercise 3 (colour)",
@@ -451,8 +451,10 @@ function drawRay() {
       ctx.lineWidth = n === ray.sphere ? 2 : 1;
       ctx.stroke();
       ctx.lineWidth = 1;
-      ctx.fillStyle = '#333';
-      ctx.fillText(String(n + 1), cx - 4, cy + 4);
+      if (n === ray.sphere) {
+        ctx.fillStyle = '#036';
+        ctx.fillText(String(n + 1), cx - 4, cy + 4);
+      }
     });
     ctx.strokeStyle = '#06c';
     ctx.lineWidth = 2;
