@@ -417,7 +417,7 @@ async function run(browser, origin, seed) {
   // The README's picture: a mistake found.
   if (process.env.RAYO_WEB_SCREENSHOT) {
     await page.setViewportSize({ width: 760, height: 1000 });
-    await page.selectOption(T('reference'), 'ej1');
+    await page.selectOption(T('reference'), 'auto');
     await page.setInputFiles(T('image-input'), path.join(tmp, 'flipped.pbm'));
     await page.waitForFunction(() => /upside down/.test(document.getElementById('diagnosis').textContent));
     await page.selectOption('#zoom', '0.5');
