@@ -9,7 +9,8 @@
 // its render the command's PBM.  Timings are printed (the issue's
 // targets: seed render 50 ms, 640x480 compare 100 ms, load 1 s) and only
 // bounded generously.  RAYO_WEB_SCREENSHOT=FILE saves the README's
-// screenshot there.
+// screenshot there.  Then looks.mjs checks how the page looks and what
+// it says, at a desktop's width and a phone's.
 import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
