@@ -14,11 +14,13 @@ const TEXT = {
     'open.label': 'Imagen a ver y validar (PBM, PGM, PPM o PNG):',
     'open.drop': 'o arrastrala y soltala aquí.',
     'open.zoom': 'Zoom:',
+    'open.fit': 'Ajustar a la ventana',
     'open.save': 'Guardar como PNG',
     'validate.title': '2. Validar (validación)',
     'validate.reference': 'Referencia:',
     'validate.note': 'El informe es el de rayo compare, palabra por palabra (en inglés, como lo imprime el comando).',
     'validate.diff': 'La diferencia: rojo, negro sólo en la referencia; azul, negro sólo en la imagen (en grises y color: ámbar, explicada; rojo, no).',
+    'ref.auto': 'Automática: según tu imagen',
     'ref.ej1': 'Cátedra: ejercicio 1 (esfera)',
     'ref.ej2': 'Cátedra: ejercicio 2 (grises)',
     'ref.ej3': 'Cátedra: ejercicio 3 (color)',
@@ -38,6 +40,7 @@ const TEXT = {
     'render.button': 'Renderizar',
     'render.reset': 'Valores del enunciado',
     'geometry.title': '4. La geometría',
+    'geometry.none': 'Renderizá una escena para ver sus rayos.',
     'geometry.help': 'Señalá un píxel de la imagen renderizada (o usá las flechas con la imagen enfocada): el rayo que lo atraviesa, visto de costado (y, z) y desde arriba (x, z).',
     footer: 'Es rayo mismo: la biblioteca en C compilada a WebAssembly. Nada sale de esta página.',
     info: (i) => `${i.name}: ${i.width} × ${i.height} píxeles, ${i.format}${i.kind}, maxval ${i.maxval}`,
@@ -45,9 +48,21 @@ const TEXT = {
     rendered: (ms) => `Renderizado en ${ms} ms.`,
     compared: (ms) => ` Comparado en ${ms} ms.`,
     side: 'de costado (z →, y ↑)', top: 'desde arriba (z →, x ↑)',
-    pixel: 'píxel', hits: 'δ ≥ 0: el rayo toca la esfera', misses: 'δ < 0: el rayo no toca la esfera',
-    nearest: 'la intersección más cercana', none: 'ninguna esfera',
-    noRender: 'Renderizá una escena para ver sus rayos.',
+    pixel: 'píxel',
+    sphereIs: (k) => `Esfera ${k}`,
+    hits: (k, t) => `δ ≥ 0: el rayo toca la esfera ${k}, y es la intersección más cercana de la escena: t = ${t}.`,
+    misses: (k) => `δ < 0: el rayo no toca la esfera ${k}.`,
+    behind: (k) => `δ ≥ 0, pero la esfera ${k} queda detrás de la cámara (t < 0): el rayo no la toca.`,
+    noneHit: 'Ninguna esfera de la escena toca este rayo.',
+    byKind: {
+      ej1: 'Se comparó con la imagen de la cátedra del ejercicio 1, porque tu imagen está en blanco y negro.',
+      ej2: 'Se comparó con la imagen de la cátedra del ejercicio 2, porque tu imagen es gris.',
+      ej3: 'Se comparó con la imagen de la cátedra del ejercicio 3, porque tu imagen está en color.',
+    },
+    picked: (n) => `Se comparó con la imagen de la cátedra del ejercicio ${n}, la que elegiste.`,
+    pickedFile: (name) => `Se comparó con el archivo que elegiste (${name}).`,
+    right: '✓ Correcta: coincide con la referencia',
+    wrong: '✗ No es correcta: no coincide con la referencia',
     lang: 'English', langLabel: 'English',
     pngError: (name) => `rayo: ${name}: el navegador no pudo decodificar el PNG`,
   },
@@ -57,11 +72,13 @@ const TEXT = {
     'open.label': 'Image to view and validate (PBM, PGM, PPM or PNG):',
     'open.drop': 'or drag and drop it here.',
     'open.zoom': 'Zoom:',
+    'open.fit': 'Fit to the window',
     'open.save': 'Save as PNG',
     'validate.title': '2. Validate (validación)',
     'validate.reference': 'Reference:',
     'validate.note': 'The report is rayo compare\'s, word for word.',
     'validate.diff': 'The difference: red, black only in the reference; blue, black only in the image (gray and colour: amber, explained; red, not).',
+    'ref.auto': 'Automatic: by your image',
     'ref.ej1': "Course's exercise 1 (sphere)",
     'ref.ej2': "Course's exercise 2 (gray)",
     'ref.ej3': "Course's exercise 3 (colour)",
@@ -81,6 +98,7 @@ const TEXT = {
     'render.button': 'Render',
     'render.reset': "The assignment's values",
     'geometry.title': '4. The geometry',
+    'geometry.none': 'Render a scene to see its rays.',
     'geometry.help': 'Point at a pixel of the rendered image (or use the arrow keys with the image focused): the ray through it, seen from the side (y, z) and from above (x, z).',
     footer: 'It is rayo itself: the C library compiled to WebAssembly. Nothing leaves this page.',
     info: (i) => `${i.name}: ${i.width} × ${i.height} pixels, ${i.format}${i.kind}, maxval ${i.maxval}`,
@@ -88,9 +106,21 @@ const TEXT = {
     rendered: (ms) => `Rendered in ${ms} ms.`,
     compared: (ms) => ` Compared in ${ms} ms.`,
     side: 'side (z →, y ↑)', top: 'above (z →, x ↑)',
-    pixel: 'pixel', hits: 'δ ≥ 0: the ray meets the sphere', misses: 'δ < 0: the ray misses the sphere',
-    nearest: 'the nearest hit', none: 'no sphere',
-    noRender: 'Render a scene to see its rays.',
+    pixel: 'pixel',
+    sphereIs: (k) => `Sphere ${k}`,
+    hits: (k, t) => `δ ≥ 0: the ray meets sphere ${k}, and it is the nearest hit of the scene: t = ${t}.`,
+    misses: (k) => `δ < 0: the ray misses sphere ${k}.`,
+    behind: (k) => `δ ≥ 0, but sphere ${k} is behind the camera (t < 0): the ray does not meet it.`,
+    noneHit: 'No sphere of the scene meets this ray.',
+    byKind: {
+      ej1: "Compared with the course's image for exercise 1, because your image is black and white.",
+      ej2: "Compared with the course's image for exercise 2, because your image is gray.",
+      ej3: "Compared with the course's image for exercise 3, because your image is in colour.",
+    },
+    picked: (n) => `Compared with the course's image for exercise ${n}, the one you chose.`,
+    pickedFile: (name) => `Compared with the file you chose (${name}).`,
+    right: '✓ Correct: it matches the reference',
+    wrong: '✗ Not correct: it does not match the reference',
     lang: 'Español', langLabel: 'Español',
     pngError: (name) => `rayo: ${name}: the browser could not decode the PNG`,
   },
@@ -103,8 +133,10 @@ const t = (key) => TEXT[lang][key];
 
 const times = (window.rayoTimes = { load: null, render: null, compare: null });
 let rayo = null;
-const state = { image: null, name: '', rendered: null, pixel: null, infoKind: '' };
+const state = { image: null, name: '', rendered: null, pixel: null, infoKind: '',
+                compared: null };
 const references = {};
+const referenceNames = {};
 
 function bytesOf(base64) {
   const s = atob(base64), out = new Uint8Array(s.length);
@@ -123,6 +155,7 @@ function applyLang() {
   for (const [i, legend] of document.querySelectorAll('#spheres .sphere-label').entries())
     legend.textContent = `${t('render.sphere')} ${i + 1}`;
   showInfo();
+  showCompared();
   drawRay();
 }
 
@@ -160,7 +193,36 @@ function showInfo() {
     height: im.height, format: im.format, kind, maxval: im.maxval });
 }
 
-function zoom() { return Number($('zoom').value); }
+// Everything that belonged to the image shown: after a file that fails,
+// nothing of the previous one stays beside its error.
+function forget() {
+  if (state.image) state.image.free();
+  state.image = null;
+  state.name = '';
+  state.rendered = null;
+  state.pixel = null;
+  const canvas = $('canvas');
+  canvas.width = 1;
+  canvas.height = 1;
+  $('picture').hidden = true;
+  $('save').disabled = true;
+  $('timing').textContent = '';
+  showInfo();
+  clearCompare();
+  drawRay();
+}
+
+// The zoom: a factor, or "fit" (the default), the largest that shows the
+// whole picture in the section's width and most of the window's height;
+// whole factors only when it grows, so pixels stay even.
+function zoom() {
+  const value = $('zoom').value, canvas = $('canvas');
+  if (value !== 'fit') return Number(value);
+  const room = $('open').clientWidth - 2; // the canvas's border
+  const tall = Math.max(120, window.innerHeight * 0.8 - 2);
+  const scale = Math.min(room / canvas.width, tall / canvas.height);
+  return scale >= 1 ? Math.floor(scale) : scale;
+}
 
 function show(image, name) {
   if (state.image) state.image.free();
@@ -170,6 +232,7 @@ function show(image, name) {
   canvas.width = image.width;
   canvas.height = image.height;
   canvas.getContext('2d').putImageData(image.imageData(), 0, 0);
+  $('picture').hidden = false;
   applyZoom();
   $('save').disabled = false;
   showInfo();
@@ -181,8 +244,17 @@ function applyZoom() {
   canvas.style.height = `${canvas.height * zoom()}px`;
 }
 
-async function referenceImage() {
-  const which = $('reference').value;
+// The reference to compare with: the one picked, or for "auto" the
+// course's exercise of the image's kind (bilevel 1, gray 2, colour 3).
+function referenceChoice() {
+  const picked = $('reference').value;
+  if (picked !== 'auto') return { which: picked, auto: false };
+  const im = state.image;
+  const which = im.bilevel ? 'ej1' : im.channels === 1 ? 'ej2' : 'ej3';
+  return { which, auto: true };
+}
+
+async function referenceImage(which) {
   if (which === 'file') return references.file || null;
   if (!references[which]) {
     const bytes = bytesOf(window.RAYO_ASSETS[which]);
@@ -191,19 +263,42 @@ async function referenceImage() {
   return references[which];
 }
 
+function clearCompare() {
+  state.compared = null;
+  showCompared();
+  $('verdict').textContent = '';
+  $('diagnosis').textContent = '';
+  $('report').textContent = '';
+  $('diff-figure').hidden = true;
+}
+
+// The page's own words on the last compare: which reference and why, and
+// the mark (a symbol and a word, not colour alone).
+function showCompared() {
+  const c = state.compared, note = $('ref-note'), mark = $('mark');
+  if (!c) {
+    note.textContent = '';
+    mark.textContent = '';
+    mark.className = 'mark';
+    return;
+  }
+  note.textContent = c.which === 'file' ? t('pickedFile')(c.file)
+                   : c.auto ? t('byKind')[c.which] : t('picked')(c.which.slice(2));
+  const right = c.verdict === 'identical' || c.verdict === 'consistent';
+  mark.textContent = right ? t('right') : t('wrong');
+  mark.className = right ? 'mark right' : 'mark wrong';
+}
+
 async function compare() {
-  const clear = () => {
-    $('verdict').textContent = '';
-    $('diagnosis').textContent = '';
-    $('report').textContent = '';
-    $('diff-figure').hidden = true;
-  };
-  if (!state.image) return clear();
-  const reference = await referenceImage();
-  if (!reference) return clear();
+  if (!state.image) return clearCompare();
+  const choice = referenceChoice();
+  const reference = await referenceImage(choice.which);
+  if (!reference) return clearCompare();
   const start = performance.now();
   const result = rayo.compare(reference, state.image);
   times.compare = performance.now() - start;
+  state.compared = { ...choice, file: referenceNames.file || '', verdict: result.verdict };
+  showCompared();
   $('verdict').textContent = `verdict: ${result.verdict}`;
   $('diagnosis').textContent = result.diagnosis;
   $('report').textContent = result.text;
@@ -216,11 +311,14 @@ async function compare() {
   }
 }
 
-async function guarded(work) {
+// Runs work; a failure is shown on the error line, after onFail (if any)
+// has cleared what the failed step leaves stale.
+async function guarded(work, onFail) {
   try {
     await work();
     showError('');
   } catch (e) {
+    if (onFail) onFail();
     showError(e instanceof RayoWeb.RayoError ? e.message : `rayo: ${e.message}`);
     if (!(e instanceof RayoWeb.RayoError)) console.warn(e);
   }
@@ -234,7 +332,7 @@ async function openFile(file) {
     show(image, file.name);
     drawRay();
     await compare();
-  });
+  }, forget);
 }
 
 // The render section's values.
@@ -286,7 +384,7 @@ async function render() {
     state.rendered = { camera: cam, spheres: sp };
     const ext = image.format.toLowerCase();
     show(image, `${which === 'seed' ? 'esfera' : which}.${ext}`);
-    $('reference').value = which === 'seed' ? 'ej1' : which;
+    $('reference').value = 'auto';
     $('reference-input').hidden = true;
     await compare();
     $('timing').textContent = t('rendered')(times.render.toFixed(1)) +
@@ -294,7 +392,7 @@ async function render() {
     if (!state.pixel || state.pixel[0] >= cam[0] || state.pixel[1] >= cam[1])
       state.pixel = [Math.floor(cam[0] * 0.625), Math.floor(cam[1] * 0.2)];
     drawRay();
-  });
+  }, forget);
 }
 
 let pending = false;
@@ -311,9 +409,10 @@ function drawRay() {
   ctx.clearRect(0, 0, canvas.width, canvas.height);
   ctx.font = '13px system-ui, sans-serif';
   const r = state.rendered;
-  if (!r || !state.pixel) {
-    ctx.fillStyle = '#555';
-    ctx.fillText(t('noRender'), 12, 24);
+  const shown = Boolean(r && state.pixel);
+  canvas.hidden = !shown;
+  $('no-render').hidden = shown;
+  if (!shown) {
     $('ray').textContent = '';
     return;
   }
@@ -342,14 +441,21 @@ function drawRay() {
     ctx.strokeRect(k * pw + 0.5, 0.5, pw - 1, ph - 1);
     ctx.fillStyle = '#333';
     ctx.fillText(p.title, k * pw + 8, 16);
-    for (const s of r.spheres) {
+    r.spheres.forEach((s, n) => {
+      const cx = X(s[2] - oz), cy = Y(s[p.a] - o[p.a]);
       ctx.beginPath();
-      ctx.arc(X(s[2] - oz), Y(s[p.a] - o[p.a]), s[3] * scale, 0, 2 * Math.PI);
-      ctx.fillStyle = '#ddd';
+      ctx.arc(cx, cy, s[3] * scale, 0, 2 * Math.PI);
+      ctx.fillStyle = n === ray.sphere ? '#cde' : '#eee';
       ctx.fill();
-      ctx.strokeStyle = '#666';
+      ctx.strokeStyle = n === ray.sphere ? '#06c' : '#888';
+      ctx.lineWidth = n === ray.sphere ? 2 : 1;
       ctx.stroke();
-    }
+      ctx.lineWidth = 1;
+      if (n === ray.sphere) {
+        ctx.fillStyle = '#036';
+        ctx.fillText(String(n + 1), cx - 4, cy + 4);
+      }
+    });
     ctx.strokeStyle = '#06c';
     ctx.lineWidth = 2;
     ctx.beginPath();
@@ -371,15 +477,16 @@ function drawRay() {
       ctx.fill();
     }
   });
-  const n = (v) => v.toFixed(4);
+  const n = (v) => v.toFixed(4), k = ray.sphere + 1, s = r.spheres[ray.sphere];
   const lines = [
     `${t('pixel')} (i, j) = (${i}, ${j})`,
     `x = i − ⌊w/2⌋ = ${x},  y = ⌊h/2⌋ − j = ${y},  z = w / (2 tan(fov/2)) = ${f.toFixed(2)}`,
     `d = (x, y, z) / |(x, y, z)| = (${ray.d.map(n).join(', ')})`,
+    `${t('sphereIs')(k)}: C = (${s.slice(0, 3).join(', ')}), R = ${s[3]}`,
     `L = C − O;  β = L · d = ${n(ray.beta)};  δ = β² − L · L + R² = ${n(ray.delta)}`,
-    ray.delta >= 0 ? t('hits') : t('misses'),
-    ray.hit ? `${t('nearest')}: t = ${n(ray.t)}` : `${t('nearest')}: ${t('none')}`,
+    ray.hit ? t('hits')(k, n(ray.t)) : ray.delta >= 0 ? t('behind')(k) : t('misses')(k),
   ];
+  if (!ray.hit && r.spheres.length > 1) lines.push(t('noneHit'));
   $('ray').textContent = lines.join('\n');
 }
 
@@ -413,6 +520,7 @@ function wire() {
     });
   }
   $('zoom').addEventListener('change', applyZoom);
+  window.addEventListener('resize', () => { if ($('zoom').value === 'fit') applyZoom(); });
   $('save').addEventListener('click', () => {
     $('canvas').toBlob((blob) => {
       const a = document.createElement('a');
@@ -436,8 +544,9 @@ function wire() {
       const image = await decode(bytes, f.name, false);
       if (references.file) references.file.free();
       references.file = image;
+      referenceNames.file = f.name;
       await compare();
-    });
+    }, clearCompare);
   });
   $('scene').addEventListener('change', () => { resetScene(); renderSoon(); });
   $('render').addEventListener('click', render);
@@ -474,7 +583,7 @@ async function start() {
     state.image = null;
     state.rendered = null;
     for (const key of Object.keys(references)) delete references[key];
-    showInfo();
+    forget();
   };
   resetScene();
   times.load = performance.now();

@@ -212,18 +212,20 @@ class Rayo {
     this.x.web_free(sp);
     return image ? new RayoImage(this, image) : this.fail();
   }
-  // The ray through pixel (px, py): d, beta, delta, hit, t, focal.
+  // The ray through pixel (px, py): d, hit, t (the nearest hit), focal,
+  // and beta and delta of the sphere they explain (index sphere, from 0:
+  // the one hit nearest, else the first).
   ray(camera, spheres, px, py) {
     const cam = this.putDoubles(camera), sp = this.putDoubles(spheres.flat());
-    const out = this.alloc(64);
+    const out = this.alloc(72);
     const status = this.x.web_ray(cam, sp, spheres.length, px, py, out);
-    const v = Array.from(new Float64Array(this.x.memory.buffer, out, 8));
+    const v = Array.from(new Float64Array(this.x.memory.buffer, out, 9));
     this.x.web_free(cam);
     this.x.web_free(sp);
     this.x.web_free(out);
     if (status !== 0) return null;
     return { d: v.slice(0, 3), beta: v[3], delta: v[4], hit: v[5] === 1,
-             t: v[6], focal: v[7] };
+             t: v[6], focal: v[7], sphere: v[8] };
   }
 }
 

@@ -9,12 +9,14 @@
 // its render the command's PBM.  Timings are printed (the issue's
 // targets: seed render 50 ms, 640x480 compare 100 ms, load 1 s) and only
 // bounded generously.  RAYO_WEB_SCREENSHOT=FILE saves the README's
-// screenshot there.
+// screenshot there.  Then looks.mjs checks how the page looks and what
+// it says, at a desktop's width and a phone's.
 import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
+import { looks, LOOKS_TESTS } from './looks.mjs';
 
 const RAYO = process.env.RAYO;
 const WEB = process.env.RAYO_WEB;
@@ -130,7 +132,8 @@ function siteBytes(dir) {
 }
 
 async function main() {
-  console.log('1..40');
+  const planned = 40 + 2 * LOOKS_TESTS;
+  console.log(`1..${planned}`);
   const seed = setup();
   const size = siteBytes(WEB);
   ok(size <= 3 * 1024 * 1024, `build/web/ is ${size} bytes, at most 3 MiB`);
@@ -142,12 +145,15 @@ async function main() {
   });
   try {
     await run(browser, origin, seed);
+    const common = { browser, origin, tmp, rayo, course, ok, note };
+    await looks({ ...common, width: 1000, height: 900, locale: 'en-US', lang: 'en', label: 'desktop' });
+    await looks({ ...common, width: 375, height: 740, locale: 'es-AR', lang: 'es', label: 'phone' });
   } finally {
     await browser.close();
     server.kill();
     fs.rmSync(tmp, { recursive: true, force: true });
   }
-  if (count !== 40) ok(false, `planned 40 tests, ran ${count}`);
+  if (count !== planned) ok(false, `planned ${planned} tests, ran ${count}`);
   process.exitCode = failed ? 1 : 0;
 }
 
@@ -412,7 +418,7 @@ async function run(browser, origin, seed) {
   // The README's picture: a mistake found.
   if (process.env.RAYO_WEB_SCREENSHOT) {
     await page.setViewportSize({ width: 760, height: 1000 });
-    await page.selectOption(T('reference'), 'ej1');
+    await page.selectOption(T('reference'), 'auto');
     await page.setInputFiles(T('image-input'), path.join(tmp, 'flipped.pbm'));
     await page.waitForFunction(() => /upside down/.test(document.getElementById('diagnosis').textContent));
     await page.selectOption('#zoom', '0.5');

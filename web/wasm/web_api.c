@@ -547,11 +547,14 @@ web_image *web_render(int scene_id, const double *cam, const double *spheres,
 }
 
 /*
- * The assignment's arithmetic for the ray through pixel (px, py) and the
- * scene's first sphere, into out: d (x, y, z, unit), beta = L.d, delta =
- * beta^2 - L.L + R^2 (L = C - O, sphere.h), whether the ray hits any
- * sphere of the scene, t of the nearest hit (or -1), the camera's focal
- * distance in pixels.  Returns 0, or -1 when the camera is invalid.
+ * The assignment's arithmetic for the ray through pixel (px, py), for the
+ * sphere it explains: the one with the nearest hit, or the first sphere
+ * when the ray hits none.  Into out: d (x, y, z, unit), beta = L.d and
+ * delta = beta^2 - L.L + R^2 of that sphere (L = C - O, sphere.h),
+ * whether the ray hits any sphere of the scene, t of the nearest hit (or
+ * -1), the camera's focal distance in pixels, and the index of the sphere
+ * explained.  The page so never shows one sphere's delta beside another's
+ * hit.  Returns 0, or -1 when the camera is invalid.
  */
 WEB_EXPORT("web_ray")
 int web_ray(const double *cam, const double *spheres, size_t count,
@@ -562,19 +565,12 @@ int web_ray(const double *cam, const double *spheres, size_t count,
     rayo_ray ray;
     rayo_vec3 l;
     double nearest = INFINITY;
-    size_t i;
+    size_t i, which = 0;
     if (build_camera(cam, &camera, &err) != RAYO_OK || count == 0) {
         keep_error(&err);
         return -1;
     }
     ray = rayo_camera_ray(&camera, px, py);
-    l = rayo_vec3_sub(rayo_vec3_make(spheres[0], spheres[1], spheres[2]),
-                      ray.origin);
-    out[0] = ray.direction.x;
-    out[1] = ray.direction.y;
-    out[2] = ray.direction.z;
-    out[3] = rayo_vec3_dot(l, ray.direction);
-    out[4] = out[3] * out[3] - rayo_vec3_dot(l, l) + spheres[3] * spheres[3];
     for (i = 0; i < count; i++) {
         rayo_sphere sphere;
         double t;
@@ -582,11 +578,24 @@ int web_ray(const double *cam, const double *spheres, size_t count,
                                        spheres[4 * i + 2]);
         sphere.radius = spheres[4 * i + 3];
         t = rayo_sphere_intersect(&sphere, &ray, 0.0);
-        if (t < nearest)
+        if (t < nearest) {
             nearest = t;
+            which = i;
+        }
     }
+    l = rayo_vec3_sub(rayo_vec3_make(spheres[4 * which],
+                                     spheres[4 * which + 1],
+                                     spheres[4 * which + 2]),
+                      ray.origin);
+    out[0] = ray.direction.x;
+    out[1] = ray.direction.y;
+    out[2] = ray.direction.z;
+    out[3] = rayo_vec3_dot(l, ray.direction);
+    out[4] = out[3] * out[3] - rayo_vec3_dot(l, l) +
+             spheres[4 * which + 3] * spheres[4 * which + 3];
     out[5] = nearest < INFINITY;
     out[6] = nearest < INFINITY ? nearest : -1;
     out[7] = camera.focal;
+    out[8] = (double)which;
     return 0;
 }
