@@ -285,14 +285,17 @@ static rayo_status explain_errors(rayo_grade_item *item, const char *errors,
 }
 
 /* The device an "#include" named, from the compiler's "fatal error:
-   /dev/NAME: ..." line: its start and length, or NULL. */
+   /dev/NAME: ..." line (gcc) or "fatal error: '/dev/NAME' file not
+   found" (clang): its start and length, or NULL. */
 static const char *device_named(const char *errors, size_t *length)
 {
     const char *p = strstr(errors, "fatal error: /dev/");
-    if (p == NULL)
+    const char *quoted = strstr(errors, "fatal error: '/dev/");
+    if (p == NULL && quoted == NULL)
         return NULL;
-    p += strlen("fatal error: ");
-    *length = strcspn(p, ": \n");
+    p = p != NULL ? p + strlen("fatal error: ")
+                  : quoted + strlen("fatal error: '");
+    *length = strcspn(p, ":' \n");
     if (*length > 40)
         *length = 40;
     return p;

@@ -408,6 +408,35 @@ static char **minimal_env(const char *dir)
     return env;
 }
 
+/* The caller's environment for a tool run outside the sandbox, but for
+   TMPDIR: the grade's own folder, so what the compiler leaves there (a
+   crashing clang's reproducer files) goes with it. */
+static char **tool_env(const char *dir)
+{
+    size_t n = 0, i, k = 0;
+    char **env;
+    while (environ[n] != NULL)
+        n++;
+    env = calloc(n + 2, sizeof *env);
+    if (env == NULL)
+        return NULL;
+    for (i = 0; i < n; i++) {
+        if (strncmp(environ[i], "TMPDIR=", 7) == 0)
+            continue;
+        env[k] = strdup(environ[i]);
+        if (env[k++] == NULL) {
+            grade_words_free(env);
+            return NULL;
+        }
+    }
+    env[k] = grade_concat("TMPDIR=", dir);
+    if (env[k] == NULL) {
+        grade_words_free(env);
+        return NULL;
+    }
+    return env;
+}
+
 void grade_captured_free(grade_captured *got)
 {
     free(got->out);
@@ -536,12 +565,10 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
         dir = "/";
     } else {
         program = run->search ? resolve(run->argv[0]) : strdup(run->argv[0]);
-        if (student)
-            env = minimal_env(work);
+        env = student ? minimal_env(work) : tool_env(ctx->dir);
         full = (char **)run->argv;
     }
-    if (program == NULL || full == NULL || (student && env == NULL) ||
-        (ctx->sandboxed && env == NULL)) {
+    if (program == NULL || full == NULL || env == NULL) {
         status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
         goto done;
     }
