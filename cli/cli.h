@@ -166,6 +166,12 @@ int cli_course_reference(const char *exercise, char *path, size_t room);
 int cli_image_operand(const char *operand, char *path, size_t room,
                       const char **resolved);
 
+/* The course's exercise whose image (as cli_course_reference finds it)
+   shows the same picture as image (rayo_image_same_picture), whatever
+   the file's format; RAYO_COURSE_EXERCISES when none does or it cannot
+   be read. */
+rayo_course_exercise cli_course_picture(const rayo_image *image);
+
 /* 1 when standard output is a terminal (an image is then shown as
    `rayo view` shows it, not written). */
 int cli_stdout_is_terminal(void);

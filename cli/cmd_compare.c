@@ -8,7 +8,11 @@
  * input or bad options (and 1 for an output failure of --diff).  A --diff
  * that names an input (the same name, or the same file through a link)
  * is refused before anything is read.  course:ej1, course:ej2 and
- * course:ej3 name the course's reference images (course_data.c).  The
+ * course:ej3 name the course's reference images (course_data.c).  When
+ * the two pictures are of different kinds (black and white, gray,
+ * colour) the report says so, naming the course's exercise; when the
+ * image is the course's and the reference is not, one line warns that
+ * the operands look swapped.  The
  * verdict logic is all in the library; this file only reads, calls and
  * prints.
  */
@@ -24,6 +28,7 @@
 
 typedef struct compare_request {
     const char *reference, *image, *diff;
+    const char *operands[2]; /* REFERENCE and IMAGE as given */
     char course_paths[2][4096]; /* course:NAME operands, resolved */
     rayo_compare_options options;
     int json;
@@ -171,8 +176,8 @@ static int parse_request(int argc, char **argv, compare_request *req)
     if (argc - optind != 2)
         return cli_wrong_operands("compare", argc - optind,
                                   N_("REFERENCE and IMAGE"));
-    req->reference = argv[optind];
-    req->image = argv[optind + 1];
+    req->reference = req->operands[0] = argv[optind];
+    req->image = req->operands[1] = argv[optind + 1];
     if (strcmp(req->reference, "-") == 0 && strcmp(req->image, "-") == 0)
         return cli_usage_error(_("compare: only one of REFERENCE and IMAGE "
                                  "can be '-' (standard input)"));
@@ -231,6 +236,37 @@ static int write_diff(const char *path, const rayo_image *reference,
     return cli_report(&err);
 }
 
+/* Which of the course's images operand i is: named course:ejN, or
+ * showing the same picture as one. */
+static rayo_course_exercise course_image(const compare_request *req, int i,
+                                         const rayo_image *image)
+{
+    if (req->course_paths[i][0] != '\0')
+        return rayo_course_find(req->operands[i] + strlen("course:"));
+    return cli_course_picture(image);
+}
+
+/* The kinds of both pictures into the report, and one line when the
+ * operands look swapped: the image is the course's and the reference is
+ * not (the comparison is still made as asked). */
+static void note_kinds(const compare_request *req, const rayo_image *reference,
+                       const rayo_image *image, rayo_compare_report *report)
+{
+    rayo_course_exercise ref_course = course_image(req, 0, reference);
+    rayo_course_exercise image_course =
+        ref_course < RAYO_COURSE_EXERCISES ? RAYO_COURSE_EXERCISES
+                                           : course_image(req, 1, image);
+    rayo_compare_note_kinds(report, reference, image, ref_course);
+    if (image_course < RAYO_COURSE_EXERCISES)
+        cli_sayf(_("compare: warning: the arguments look swapped: IMAGE, "
+                   "the second, is the course's image of exercise %d, and "
+                   "REFERENCE, the first, is not one of the course's; the "
+                   "reference comes first: rayo compare course:ej%d %s; "
+                   "compared as asked"),
+                 (int)image_course + 1, (int)image_course + 1,
+                 cli_quote(req->operands[0]));
+}
+
 static int compare_images(const compare_request *req,
                           const rayo_image *reference,
                           const rayo_image *image, uint64_t reference_surplus,
@@ -249,6 +285,7 @@ static int compare_images(const compare_request *req,
     report.reference_surplus = reference_surplus;
     report.image_surplus = image_surplus;
     rayo_compare_note_clamped(&report, clamped);
+    note_kinds(req, reference, image, &report);
     if (req->diff != NULL &&
         (status = write_diff(req->diff, reference, image, &req->options)) !=
             CLI_EXIT_OK)

@@ -14,7 +14,9 @@
  * Image operands (compare, view, convert) name them course:ej1,
  * course:ej2, course:ej3.  A file whose name really is "course:ej1" in
  * the current directory wins (./course:ej1 always means the file), so no
- * name that worked before changes meaning.
+ * name that worked before changes meaning.  cli_course_picture tells
+ * whether an image read from elsewhere is one of them (compare's note on
+ * kinds and its warning on swapped operands).
  */
 #define _GNU_SOURCE /* memfd_create */
 
@@ -147,4 +149,26 @@ int cli_image_operand(const char *operand, char *path, size_t room,
                                operand, name);
     *resolved = path;
     return CLI_EXIT_OK;
+}
+
+rayo_course_exercise cli_course_picture(const rayo_image *image)
+{
+    rayo_course_exercise e =
+        rayo_picture_kind_exercise(rayo_picture_kind_of(image));
+    char path[4096];
+    rayo_image course;
+    rayo_error err;
+    int same;
+    /* The course's images are 640x480: nothing else is read for others. */
+    if (e >= RAYO_COURSE_EXERCISES || image->info.width != 640 ||
+        image->info.height != 480 ||
+        !cli_course_reference(rayo_course_name(e), path, sizeof path))
+        return RAYO_COURSE_EXERCISES;
+    memset(&course, 0, sizeof course);
+    rayo_error_clear(&err);
+    if (rayo_image_read_file(path, &course, NULL, &err) != RAYO_OK)
+        return RAYO_COURSE_EXERCISES;
+    same = rayo_image_same_picture(image, &course);
+    rayo_image_free(&course);
+    return same ? e : RAYO_COURSE_EXERCISES;
 }

@@ -103,6 +103,17 @@ typedef enum rayo_compare_diagnosis {
    "Consistent"). */
 #define RAYO_COMPARE_BAND_SHARE 0.75
 
+/* What a picture holds, whatever its file's format: only black and
+   white pixels (bilevel), gray values, or colour (an RGB pixel whose
+   channels differ).  The course's EJ1 is bilevel, EJ2 gray, EJ3
+   colour. */
+typedef enum rayo_picture_kind {
+    RAYO_PICTURE_UNKNOWN,
+    RAYO_PICTURE_BILEVEL,
+    RAYO_PICTURE_GRAY,
+    RAYO_PICTURE_COLOUR
+} rayo_picture_kind;
+
 /* How a comparison was made. */
 typedef enum rayo_compare_kind {
     RAYO_COMPARE_MASK, /* both bilevel: black/white masks */
@@ -285,6 +296,16 @@ typedef struct rayo_compare_report {
                                  masks, the course's focal factor (about
                                  1.0048, or its inverse) when scaling by
                                  it halves the mismatches, else 1 */
+
+    /* What each picture is (rayo_compare_note_kinds; both
+       RAYO_PICTURE_UNKNOWN, 0, when not set, and then nothing is said):
+       when the kinds differ the text report notes it, naming the
+       course's exercise the reference is and the one the image's kind
+       belongs to. */
+    rayo_picture_kind reference_picture, image_picture;
+    int reference_is_course;  /* the reference is the course's image of
+                                 reference_course */
+    rayo_course_exercise reference_course;
 } rayo_compare_report;
 
 /*
@@ -358,6 +379,40 @@ RAYO_API size_t rayo_compare_format_json(const rayo_compare_report *report,
  */
 RAYO_API void rayo_compare_note_clamped(rayo_compare_report *report,
                                         const rayo_read_report *read);
+
+/* The kind of image's picture (RAYO_PICTURE_UNKNOWN for an invalid
+   image), and the course's exercise pictures of that kind belong to. */
+RAYO_API rayo_picture_kind rayo_picture_kind_of(const rayo_image *image);
+RAYO_API rayo_course_exercise rayo_picture_kind_exercise(
+    rayo_picture_kind kind);
+
+/* "bilevel", "gray", "colour"; "unknown". */
+RAYO_API const char *rayo_picture_kind_name(rayo_picture_kind kind);
+
+/*
+ * 1 when a and b show the same picture: the same size and, every sample
+ * taken as 8 bits (other maxvals scaled, rounded; a bilevel pixel black
+ * 0 or white 255, a gray one as three equal channels), the same values.
+ * Whatever their files' formats: a PBM and the PNG of the same sphere
+ * are the same picture.
+ */
+RAYO_API int rayo_image_same_picture(const rayo_image *a,
+                                     const rayo_image *b);
+
+/*
+ * Records in report the kinds of the two pictures and, when
+ * reference_course is an exercise (not RAYO_COURSE_EXERCISES), that the
+ * reference is the course's image of it: the caller knows (it was named
+ * course:ejN, or rayo_image_same_picture with the course's image).  The
+ * text report then notes a difference of kind ("your image is gray; this
+ * reference is exercise 1's black and white sphere (course:ej1):
+ * exercise 2? ...").  Nothing is noted for a lossy image (a JPEG is
+ * never exactly bilevel, nor its gray exactly gray).
+ */
+RAYO_API void rayo_compare_note_kinds(rayo_compare_report *report,
+                                      const rayo_image *reference,
+                                      const rayo_image *image,
+                                      rayo_course_exercise reference_course);
 
 /* The diagnosis alone as one sentence (no newline), as the text report
    gives it after "diagnosis: "; "none" when there is none. */

@@ -71,6 +71,7 @@ static void put_file_json(cmp_sink *s, const rayo_compare_report *r)
 
 void cmp_put_clamped_json(cmp_sink *s, const rayo_compare_report *r)
 {
+    cmp_put_kinds_json(s, r);
     put_file_json(s, r);
     if (r->image_clamped_high + r->image_clamped_low == 0)
         return;
@@ -112,6 +113,7 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
     s.buffer = buffer;
     s.size = size;
     s.length = *length;
+    cmp_put_kinds(&s, r);
     put_surplus(&s, "reference", r->reference_surplus, r->reference_width);
     put_surplus(&s, "image", r->image_surplus, r->image_width);
     if (r->image_clamped_high + r->image_clamped_low > 0 &&

@@ -28,6 +28,11 @@ struct rayo_compare_report;
 void cmp_put_out_of_range(cmp_sink *s, const struct rayo_compare_report *r);
 void cmp_put_clamped_json(cmp_sink *s, const struct rayo_compare_report *r);
 
+/* The note, and the JSON member "kinds", when the image's kind of
+   picture is not the reference's (kinds.c; nothing otherwise). */
+void cmp_put_kinds(cmp_sink *s, const struct rayo_compare_report *r);
+void cmp_put_kinds_json(cmp_sink *s, const struct rayo_compare_report *r);
+
 /* 100 differences / band (0 for an empty band), and the JSON members
    of a crowded report, "band" and "crowded" (nothing otherwise:
    report_format.c). */
