@@ -8,6 +8,7 @@
  * Part of tone_scene.c's reading, split off for its size; the
  * constants of the model are read there.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -108,6 +109,17 @@ static rayo_status find_regions(unsigned char *mark, uint32_t width,
     return RAYO_OK;
 }
 
+/* The radius in the statement's units of a sphere at ball's centre
+   drawn ratio times as large: the picture's size is the tangent of the
+   angle the sphere spans, asin(r / D) at distance D. */
+static double statement_radius(const rayo_course_ball *ball, double ratio)
+{
+    double d = sqrt(ball->center[0] * ball->center[0] +
+                    ball->center[1] * ball->center[1] +
+                    ball->center[2] * ball->center[2]);
+    return d * sin(atan(ratio * tan(asin(ball->radius / d))));
+}
+
 /* Each sphere's pixels that show the background (where the scene's do
    not), and the objects where the scene shows only background; a
    sphere missing with an object of its size elsewhere is moved. */
@@ -175,7 +187,8 @@ rayo_status tone_scene_objects(scene_work *w, rayo_error *err)
             tone_scene_ball_at(w, (int)i, f);
             f->value[0] = seen_r[i];
             f->expected[0] = scene_r[i];
-            f->value[1] = w->data->balls[i].radius * seen_r[i] / scene_r[i];
+            f->value[1] = statement_radius(&w->data->balls[i],
+                                           seen_r[i] / scene_r[i]);
             /* its shading is not the scene's: left out of the rest */
             w->gone[i] = 1;
             /* the ring it adds is itself, not another object */

@@ -1,7 +1,8 @@
 /*
  * tone_scene_size.c - the size each sphere of the course's scene is
  * drawn at, read from a student's image: from the sphere's centre, along
- * rays where the scene's outline meets the background, how far the
+ * rays where the scene's outline meets the background and its picture
+ * stands out from the image's background all along, how far the
  * image's object reaches against how far the scene's does.  A sphere
  * whose radius in the statement was typed otherwise then is named by
  * its size, not as an object added around it or as partly drawn.
@@ -63,6 +64,15 @@ static void measure(const scene_work *w, int b, double *scene, double *seen)
         /* the scene's outline there must meet the background */
         if (!pixel_at(m, cx + (rm + 3) * dx, cy + (rm + 3) * dy, &p) ||
             m->ball[p] >= 0)
+            continue;
+        /* and the scene's sphere must stand out from the image's
+           background all along the ray (not an unlit side at IA over
+           a background at IA) */
+        for (t = 0; t < rm - 1; t += 1)
+            if (pixel_at(m, cx + t * dx, cy + t * dy, &p) &&
+                is_bg(w, w->ref->v + p * w->n))
+                break;
+        if (t < rm - 1)
             continue;
         cap = 3 * rm + 10;
         for (t = 1; t < cap; t += 1) {

@@ -268,6 +268,10 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
         if (f->kind == RAYO_FINDING_AMBIENT || f->kind == RAYO_FINDING_LIGHT)
             put_triple(s, "expected", f->expected,
                        f->kind == RAYO_FINDING_LIGHT ? 1 : n);
+        if (f->kind == RAYO_FINDING_SIZE) {
+            cmp_put(s, "}");
+            continue; /* no pixels counted */
+        }
         cmp_put(s, ", \"pixels\": %llu", (unsigned long long)f->pixels);
         if (f->kind == RAYO_FINDING_BELOW_AMBIENT)
             cmp_put(s, ", \"on_ball\": %llu, \"shadowed\": %llu",
