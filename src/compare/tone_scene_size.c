@@ -24,6 +24,12 @@
    size of its own (the scene drawn a pixel apart is not). */
 #define SIZE_SHARE 0.1
 #define SIZE_PIXELS 3.0
+/* The ratio of the image's reach to the scene's, ray by ray: its
+   quartiles at most this far apart for a size to be read. */
+#define SIZE_SPREAD 0.1
+/* More spheres than this share of those measured (and than 2) another
+   size: the camera, not their radii. */
+#define SIZE_MOST 0.25
 
 static int pixel_at(const rayo_course_map *m, double x, double y, size_t *p)
 {
@@ -40,13 +46,14 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* One sphere: the median radius (px) the scene gives it and the image
-   shows, over the rays where the scene's outline meets background; 0
-   when too few such rays. */
+/* One sphere: the median radius (px) the scene gives it, over the rays
+   where the scene's outline meets the background, and that times the
+   median ratio of the image's reach to the scene's on each; 0 when too
+   few such rays or when the ratios do not agree. */
 static void measure(const scene_work *w, int b, double *scene, double *seen)
 {
     const rayo_course_map *m = w->map;
-    double cx, cy, ms[RAYS], is[RAYS];
+    double cx, cy, ms[RAYS], is[RAYS], qs[RAYS];
     size_t p, n = 0, k;
     *scene = *seen = 0;
     rayo_course_ball_pixel(m, &w->data->balls[b], &cx, &cy);
@@ -94,10 +101,16 @@ static void measure(const scene_work *w, int b, double *scene, double *seen)
     }
     if (n < RAYS_MIN)
         return;
+    for (k = 0; k < n; k++)
+        qs[k] = is[k] / ms[k];
+    qsort(qs, n, sizeof qs[0], cmp_double);
     qsort(ms, n, sizeof ms[0], cmp_double);
-    qsort(is, n, sizeof is[0], cmp_double);
+    /* a disc drawn another size reaches the same share farther on
+       every ray; one moved or stretched, more on some than on others */
+    if (qs[3 * n / 4] - qs[n / 4] > SIZE_SPREAD)
+        return;
     *scene = ms[n / 2];
-    *seen = is[n / 2];
+    *seen = ms[n / 2] * qs[n / 2];
 }
 
 void tone_scene_sizes(const scene_work *w, double *scene, double *seen,
@@ -116,8 +129,8 @@ void tone_scene_sizes(const scene_work *w, double *scene, double *seen,
             odd++;
         }
     }
-    /* most spheres another size: the camera (the focal distance), not
+    /* many spheres another size: the camera (the focal distance), not
        their radii */
-    if (measured >= 3 && 2 * odd > measured)
+    if (odd > 2 && (double)odd > SIZE_MOST * (double)measured)
         memset(off, 0, balls * sizeof *off);
 }
