@@ -25,11 +25,16 @@
 #define SIZE_SHARE 0.1
 #define SIZE_PIXELS 3.0
 /* The ratio of the image's reach to the scene's, ray by ray: its
-   quartiles at most this far apart for a size to be read. */
+   median at most half this from its nearer quartile for a size to be
+   read. */
 #define SIZE_SPREAD 0.1
 /* More spheres than this share of those measured (and than 2) another
    size: the camera, not their radii. */
 #define SIZE_MOST 0.25
+/* A disc moved (on opposite rays, the median of half the difference
+   of their reaches) by more than this share of its change in size is
+   not read as a size (a picture shifted, or of another field). */
+#define SIZE_MOVED 0.35
 
 static int pixel_at(const rayo_course_map *m, double x, double y, size_t *p)
 {
@@ -53,8 +58,9 @@ static int cmp_double(const void *a, const void *b)
 static void measure(const scene_work *w, int b, double *scene, double *seen)
 {
     const rayo_course_map *m = w->map;
-    double cx, cy, ms[RAYS], is[RAYS], qs[RAYS];
-    size_t p, n = 0, k;
+    double cx, cy, ms[RAYS], is[RAYS], qs[RAYS], ss[RAYS / 2];
+    double rm_at[RAYS], is_at[RAYS];
+    size_t p, n = 0, k, pairs = 0;
     *scene = *seen = 0;
     rayo_course_ball_pixel(m, &w->data->balls[b], &cx, &cy);
     if (!pixel_at(m, cx, cy, &p) || m->ball[p] != b ||
@@ -64,6 +70,7 @@ static void measure(const scene_work *w, int b, double *scene, double *seen)
         double a = 6.283185307179586 * (double)k / RAYS;
         double dx = cos(a), dy = sin(a), t, rm, cap;
         int inside = 1;
+        rm_at[k] = -1;
         for (t = 1; inside; t += 1)
             inside = pixel_at(m, cx + t * dx, cy + t * dy, &p) &&
                      m->ball[p] == b;
@@ -95,22 +102,39 @@ static void measure(const scene_work *w, int b, double *scene, double *seen)
         }
         if (t >= cap)
             continue; /* the frame or something beyond: no outline */
-        ms[n] = rm;
-        is[n] = t - 0.5;
+        rm_at[k] = ms[n] = rm;
+        is_at[k] = is[n] = t - 0.5;
+        qs[n] = is[n] / rm;
         n++;
     }
     if (n < RAYS_MIN)
         return;
-    for (k = 0; k < n; k++)
-        qs[k] = is[k] / ms[k];
+    /* opposite rays: a disc moved by s reaches s.u farther on one and
+       s.u nearer on the other */
+    for (k = 0; k < RAYS / 2; k++)
+        if (rm_at[k] > 0 && rm_at[k + RAYS / 2] > 0)
+            ss[pairs++] = fabs((is_at[k] - rm_at[k]) -
+                               (is_at[k + RAYS / 2] - rm_at[k + RAYS / 2])) /
+                          2;
     qsort(qs, n, sizeof qs[0], cmp_double);
     qsort(ms, n, sizeof ms[0], cmp_double);
+    qsort(ss, pairs, sizeof ss[0], cmp_double);
     /* a disc drawn another size reaches the same share farther on
-       every ray; one moved or stretched, more on some than on others */
-    if (qs[3 * n / 4] - qs[n / 4] > SIZE_SPREAD)
+       every ray; one moved or stretched, more on some than on others.
+       A smaller one may show what the scene's hid, farther on some
+       rays only: the closer side of the median tells */
+    if (2 * fmin(qs[n / 2] - qs[n / 4], qs[3 * n / 4] - qs[n / 2]) >
+        SIZE_SPREAD)
         return;
     *scene = ms[n / 2];
     *seen = ms[n / 2] * qs[n / 2];
+    /* and the disc must have grown or shrunk more than it moved; seen
+       on one side only (its neighbours hide the other), the ratios
+       must agree twice as closely */
+    if (pairs < RAYS_MIN / 2
+            ? 2 * (qs[3 * n / 4] - qs[n / 4]) > SIZE_SPREAD
+            : ss[pairs / 2] > SIZE_MOVED * fabs(*seen - *scene))
+        *scene = *seen = 0;
 }
 
 void tone_scene_sizes(const scene_work *w, double *scene, double *seen,
