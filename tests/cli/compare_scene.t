@@ -8,7 +8,10 @@
 # sphere's place in the picture, the ambient's byte) or counted here in
 # the images.  Also EJ1's pi = sqrt(9.81), said as the course's focal
 # distance, not rounding; and where nothing fits, where the differences
-# lie instead of a first pixel.
+# lie instead of a first pixel.  A sphere's radius changed is named by
+# its size, the light's direction changed by where it seems to come
+# from (worked out here from the statement's geometry and the program's
+# own vector).
 . "$(dirname "$0")/lib.sh"
 
 STUDENTS="$RAYO_SOURCE/tests/grade"
@@ -134,6 +137,14 @@ within "$(json '.diagnosis.findings[0].radius')" 0.6 0.02
 ok $? "  radius $(json '.diagnosis.findings[0].radius'), about 0.6"
 json .diagnosis.text | grep -q "^the sphere at about (232, 304) px, centre (-0.55, -0.4, 2) and radius 0.85 in the statement, is drawn with a radius of about 0.[56][0-9]* ([0-9]* px instead of [0-9]*)"
 ok $? "  said in the statement's terms"
+
+# A picture of another field of view moves every sphere (outwards) and
+# enlarges it a little: not a size, whichever way the spheres' rays read.
+rayo render "$RAYO_SOURCE/examples/ej3.scene" --fov 88 -o "$TMP/fov88.ppm" &&
+    mv "$TMP/fov88.ppm" "$TMP/fov88.out"
+scene fov88 "$C3"
+json '[.diagnosis.findings[]?.kind] | index("size")' | grep -qx null
+ok $? "EJ3 at fov 88: no sphere named by its size ($(json .diagnosis.kind))"
 
 scene ej2_light_moved "$C2"
 is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
