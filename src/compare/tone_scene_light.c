@@ -21,7 +21,7 @@
 #define FIT_RMS 3.0
 #define FIT_BETTER 4.0
 #define FIT_OFF 8.0
-#define FIT_COS 0.985
+#define FIT_COS 0.998
 #define FIT_UNIT 0.1
 
 /* The normal at the point pixel (i, j) shows of sphere b. */
