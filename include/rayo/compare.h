@@ -175,8 +175,15 @@ typedef enum rayo_compare_finding_kind {
                                 ambient term; ball: where most (total)
                                 are, shadowed: how many in a cast
                                 shadow */
-    RAYO_FINDING_WHERE       /* nothing fits: pixels of total differ on
+    RAYO_FINDING_WHERE,      /* nothing fits: pixels of total differ on
                                 ball (-1: the background, box) */
+    RAYO_FINDING_SIZE,       /* ball drawn another size: value[0] its
+                                radius seen (px), expected[0] the
+                                scene's (px), value[1] the radius in
+                                the statement's units it fits */
+    RAYO_FINDING_LIGHT_DIRECTION /* EJ2: value the direction the
+                                shading fits (unit), expected the
+                                statement's; pixels of total fitted */
 } rayo_compare_finding_kind;
 
 #define RAYO_COMPARE_FINDINGS 6

@@ -1,8 +1,9 @@
 /*
  * tone_scene.c - what an image differs from one of the course's scenes
  * in, when no single mistake explains it: the background, a sphere
- * added, missing, moved or partly drawn, the ambient term, the light's
- * intensity, values below the ambient term.
+ * added, missing, moved, partly drawn or drawn another size, the
+ * ambient term, the light's intensity or direction, values below the
+ * ambient term.
  *
  * The scene's map (course_map.c: the sphere each pixel shows, each
  * light's L.N and shadow) is read region by region, away from every
@@ -405,7 +406,7 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     if ((s = tone_scene_objects(&w, err)) != RAYO_OK)
         return s;
     find_ambient(&w);
-    if (course == RAYO_COURSE_EJ2)
+    if (course == RAYO_COURSE_EJ2 && !tone_scene_light_direction(&w))
         find_light(&w);
     find_below(&w);
     *named = r->tone.findings > 0;

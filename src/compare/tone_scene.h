@@ -49,8 +49,20 @@ rayo_compare_finding *tone_scene_add(rayo_compare_report *r,
 /* f is about sphere b: its index and where its centre appears. */
 void tone_scene_ball_at(const scene_work *w, int b, rayo_compare_finding *f);
 
+/* tone_scene_size.c: each sphere's radius (px) in the scene and as the
+   image shows it (0, 0: not measured), and off[b] where they differ
+   enough to be named. */
+void tone_scene_sizes(const scene_work *w, double *scene, double *seen,
+                      int *off);
+
+/* tone_scene_light.c (EJ2): the light's direction the shading fits,
+   named when it explains the lit pixels much better than the
+   statement's; 1 when named. */
+int tone_scene_light_direction(scene_work *w);
+
 /* tone_scene_objects.c: each sphere missing, moved or partly drawn,
-   and the objects where the scene shows only background. */
+   drawn another size, and the objects where the scene shows only
+   background. */
 rayo_status tone_scene_objects(scene_work *w, rayo_error *err);
 
 #endif

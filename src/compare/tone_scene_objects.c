@@ -3,9 +3,12 @@
  * course's scene: each sphere whose pixels show the background (missing,
  * or partly drawn), the regions of the background that are not its
  * value (an object added), and a missing sphere found elsewhere
- * (moved).  Part of tone_scene.c's reading, split off for its size; the
+ * (moved), or a sphere drawn another size (tone_scene_size.c), which
+ * explains the ring added around it or the background inside it.
+ * Part of tone_scene.c's reading, split off for its size; the
  * constants of the model are read there.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -106,6 +109,17 @@ static rayo_status find_regions(unsigned char *mark, uint32_t width,
     return RAYO_OK;
 }
 
+/* The radius in the statement's units of a sphere at ball's centre
+   drawn ratio times as large: the picture's size is the tangent of the
+   angle the sphere spans, asin(r / D) at distance D. */
+static double statement_radius(const rayo_course_ball *ball, double ratio)
+{
+    double d = sqrt(ball->center[0] * ball->center[0] +
+                    ball->center[1] * ball->center[1] +
+                    ball->center[2] * ball->center[2]);
+    return d * sin(atan(ratio * tan(asin(ball->radius / d))));
+}
+
 /* Each sphere's pixels that show the background (where the scene's do
    not), and the objects where the scene shows only background; a
    sphere missing with an object of its size elsewhere is moved. */
@@ -117,7 +131,8 @@ rayo_status tone_scene_objects(scene_work *w, rayo_error *err)
     uint64_t area[SCENE_BALLS], eligible[SCENE_BALLS], shows_bg[SCENE_BALLS], background = 0;
     int black[3] = {0, 0, 0};
     region regions[ADDED_MAX + 1];
-    int used[ADDED_MAX + 1];
+    int used[ADDED_MAX + 1], off[SCENE_BALLS];
+    double scene_r[SCENE_BALLS], seen_r[SCENE_BALLS];
     unsigned char *mark;
     rayo_status s;
     memset(area, 0, sizeof area);
@@ -154,6 +169,7 @@ rayo_status tone_scene_objects(scene_work *w, rayo_error *err)
         return s;
     if (found > ADDED_MAX)
         found = 0; /* a background of noise, not objects */
+    tone_scene_sizes(w, scene_r, seen_r, off);
     for (i = 0; i < balls; i++) {
         /* its whole disc, hidden parts too: the size it has moved */
         const rayo_course_ball *ball = &w->data->balls[i];
@@ -164,6 +180,26 @@ rayo_status tone_scene_objects(scene_work *w, rayo_error *err)
         rayo_compare_finding *f;
         double share;
         size_t k, best = found;
+        if (off[i]) {
+            f = tone_scene_add(w->r, RAYO_FINDING_SIZE);
+            if (f == NULL)
+                break;
+            tone_scene_ball_at(w, (int)i, f);
+            f->value[0] = seen_r[i];
+            f->expected[0] = scene_r[i];
+            f->value[1] = statement_radius(&w->data->balls[i],
+                                           seen_r[i] / scene_r[i]);
+            /* its shading is not the scene's: left out of the rest */
+            w->gone[i] = 1;
+            /* the ring it adds is itself, not another object */
+            for (k = 0; k < found; k++)
+                if (regions[k].box[0] <= f->x + 1.2 * seen_r[i] &&
+                    regions[k].box[2] >= f->x - 1.2 * seen_r[i] &&
+                    regions[k].box[1] <= f->y + 1.2 * seen_r[i] &&
+                    regions[k].box[3] >= f->y - 1.2 * seen_r[i])
+                    used[k] = 1;
+            continue;
+        }
         if (eligible[i] < FEW)
             continue;
         share = (double)shows_bg[i] / (double)eligible[i];

@@ -17,7 +17,8 @@
 
 static const char *const kind_names[] = {
     "background", "added", "missing", "moved", "partly",
-    "ambient", "light", "below-ambient", "where"};
+    "ambient", "light", "below-ambient", "where", "size",
+    "light-direction"};
 
 static int gray_course(const rayo_compare_report *r)
 {
@@ -80,6 +81,14 @@ static void put_ball_finding(cmp_sink *s, const rayo_compare_finding *f,
                    "instead: check its centre",
             f->x, f->y, b->center[0], b->center[1], b->center[2], b->radius,
             f->value[0], f->value[1]);
+        break;
+    case RAYO_FINDING_SIZE:
+        cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, %g) "
+                   "and radius %g in the statement, is drawn with a radius "
+                   "of about %.2g (%.0f px instead of %.0f): check its "
+                   "radius",
+            f->x, f->y, b->center[0], b->center[1], b->center[2], b->radius,
+            f->value[1], f->value[0], f->expected[0]);
         break;
     default: /* PARTLY */
         cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, %g) "
@@ -173,6 +182,7 @@ static void put_one(cmp_sink *s, const rayo_compare_report *r,
     case RAYO_FINDING_MISSING:
     case RAYO_FINDING_MOVED:
     case RAYO_FINDING_PARTLY:
+    case RAYO_FINDING_SIZE:
         if (b != NULL)
             put_ball_finding(s, f, b);
         break;
@@ -183,6 +193,14 @@ static void put_one(cmp_sink *s, const rayo_compare_report *r,
         cmp_put(s, "the light's intensity looks like %.0f, not the "
                    "statement's II = %.0f: I = IA + II (L.N)",
             f->value[0], f->expected[0]);
+        break;
+    case RAYO_FINDING_LIGHT_DIRECTION:
+        cmp_put(s, "the light seems to come from (%.2f, %.2f, %.2f), not the "
+                   "statement's (%.3g, %.3g, %.3g): I = IA + II (L.N) fits "
+                   "%llu of the %llu lit pixels of the spheres with that L",
+            f->value[0], f->value[1], f->value[2], f->expected[0],
+            f->expected[1], f->expected[2], (unsigned long long)f->pixels,
+            (unsigned long long)f->total);
         break;
     case RAYO_FINDING_BELOW_AMBIENT:
         put_below(s, r, f);
@@ -235,6 +253,14 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
             (f->kind == RAYO_FINDING_WHERE && f->ball < 0))
             cmp_put(s, ", \"box\": [%d, %d, %d, %d]", (int)f->box[0],
                 (int)f->box[1], (int)f->box[2], (int)f->box[3]);
+        if (f->kind == RAYO_FINDING_SIZE)
+            cmp_put(s, ", \"radius_px\": %.1f, \"expected_px\": %.1f, "
+                       "\"radius\": %.3g",
+                f->value[0], f->expected[0], f->value[1]);
+        if (f->kind == RAYO_FINDING_LIGHT_DIRECTION) {
+            put_triple(s, "value", f->value, 3);
+            put_triple(s, "expected", f->expected, 3);
+        }
         if (f->kind == RAYO_FINDING_BACKGROUND ||
             f->kind == RAYO_FINDING_AMBIENT || f->kind == RAYO_FINDING_LIGHT)
             put_triple(s, "value", f->value,
@@ -242,6 +268,10 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
         if (f->kind == RAYO_FINDING_AMBIENT || f->kind == RAYO_FINDING_LIGHT)
             put_triple(s, "expected", f->expected,
                        f->kind == RAYO_FINDING_LIGHT ? 1 : n);
+        if (f->kind == RAYO_FINDING_SIZE) {
+            cmp_put(s, "}");
+            continue; /* no pixels counted */
+        }
         cmp_put(s, ", \"pixels\": %llu", (unsigned long long)f->pixels);
         if (f->kind == RAYO_FINDING_BELOW_AMBIENT)
             cmp_put(s, ", \"on_ball\": %llu, \"shadowed\": %llu",

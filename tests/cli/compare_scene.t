@@ -8,7 +8,10 @@
 # sphere's place in the picture, the ambient's byte) or counted here in
 # the images.  Also EJ1's pi = sqrt(9.81), said as the course's focal
 # distance, not rounding; and where nothing fits, where the differences
-# lie instead of a first pixel.
+# lie instead of a first pixel.  A sphere's radius changed is named by
+# its size, the light's direction changed by where it seems to come
+# from (worked out here from the statement's geometry and the program's
+# own vector).
 . "$(dirname "$0")/lib.sh"
 
 STUDENTS="$RAYO_SOURCE/tests/grade"
@@ -37,7 +40,8 @@ row() { awk -v y="$1" -v z="$2" 'BEGIN { printf "%.1f", 240 - 320 * y / z }'; }
 
 for p in ej2_correct ej2_ambient_20 ej2_seventh_sphere ej2_background_ambient \
          ej2_shadow_zero ej2_missing_sphere ej2_last_sphere ej3_background_ambient \
-         ej3_sphere_moved ej3_ambient_doubled correct pi_course; do
+         ej3_sphere_moved ej3_ambient_doubled correct pi_course \
+         ej2_big_sphere ej2_small_sphere ej2_light_moved; do
     student "$p"
     ok $? "$p compiles and runs"
 done
@@ -102,6 +106,58 @@ ok $? "  $got pixels below IA: at most the $zeros counted here, and 90% of them"
 is "$(json '.diagnosis.findings[0].shadowed')" "$got" "  all in a shadow another sphere casts"
 json .diagnosis.text | grep -q "^$got pixels of the spheres are darker than IA = 5, which the model never gives"
 ok $? "  said against the model: I is never below IA"
+
+# A sphere of radius R at distance D spans asin(R / D) from the camera:
+# its picture's size goes as the tangent of that.
+span() { awk -v r="$1" -v x="$2" -v y="$3" -v z="$4" 'BEGIN { d = sqrt(x*x + y*y + z*z); a = atan2(r / d, sqrt(1 - (r / d)^2)); printf "%.4f", sin(a) / cos(a) }'; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.4f", a / b }'; }
+
+scene ej2_big_sphere "$C2"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/size" "a radius 0.6 for 0.4: the sphere's size, nothing added"
+is "$(json '.diagnosis.findings[0].ball')" 4 "  the fifth of the statement's array"
+want=$(ratio "$(span 0.6 3 -1.5 4)" "$(span 0.4 3 -1.5 4)")
+got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
+within "$got" "$want" 0.05
+ok $? "  drawn $got times the scene's size, about $want (0.6 for 0.4 at its distance)"
+within "$(json '.diagnosis.findings[0].radius')" 0.6 0.02
+ok $? "  radius $(json '.diagnosis.findings[0].radius') in the statement's units, about 0.6"
+json .diagnosis.text | grep -q "^the sphere at about (560, 360) px, centre (3, -1.5, 4) and radius 0.4 in the statement, is drawn with a radius of about 0.6[0-9]* ([0-9]* px instead of [0-9]*): check its radius$"
+ok $? "  said in the statement's terms"
+
+scene ej2_small_sphere "$C2"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/size" "a radius 0.6 for 0.85: the sphere's size, not partly drawn"
+is "$(json '.diagnosis.findings[0].ball')" 1 "  the second of the statement's array"
+want=$(ratio "$(span 0.6 -0.55 -0.4 2)" "$(span 0.85 -0.55 -0.4 2)")
+got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
+within "$got" "$want" 0.05
+ok $? "  drawn $got times the scene's size, about $want"
+within "$(json '.diagnosis.findings[0].radius')" 0.6 0.02
+ok $? "  radius $(json '.diagnosis.findings[0].radius'), about 0.6"
+json .diagnosis.text | grep -q "^the sphere at about (232, 304) px, centre (-0.55, -0.4, 2) and radius 0.85 in the statement, is drawn with a radius of about 0.[56][0-9]* ([0-9]* px instead of [0-9]*)"
+ok $? "  said in the statement's terms"
+
+# A picture of another field of view moves every sphere (outwards) and
+# enlarges it a little: not a size, whichever way the spheres' rays read.
+rayo render "$RAYO_SOURCE/examples/ej3.scene" --fov 88 -o "$TMP/fov88.ppm" &&
+    mv "$TMP/fov88.ppm" "$TMP/fov88.out"
+scene fov88 "$C3"
+json '[.diagnosis.findings[]?.kind] | index("size")' | grep -qx null
+ok $? "EJ3 at fov 88: no sphere named by its size ($(json .diagnosis.kind))"
+
+scene ej2_light_moved "$C2"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/light-direction" "the light's x negated: the light's direction"
+for c in 0 1 2; do
+    want=$(sed -n 's/^const float luz\[3\] = {\(.*\)};$/\1/p' "$STUDENTS/ej2_light_moved/main.c" | cut -d, -f$((c + 1)))
+    within "$(json ".diagnosis.findings[0].value[$c]")" "$want" 0.02
+    ok $? "  L[$c] $(json ".diagnosis.findings[0].value[$c]"), the program's $want"
+done
+within "$(json '.diagnosis.findings[0].expected[0]')" 0.2873 0.001
+ok $? "  against the statement's (0.287, 0.958, 0)"
+json .diagnosis.text | grep -q "^the light seems to come from (-0.29, 0.96, 0.00), not the statement's (0.287, 0.958, 0): I = IA + II (L.N) fits"
+ok $? "  said as where the light comes from"
 
 # --- EJ3 -------------------------------------------------------------------
 scene ej3_background_ambient "$C3"

@@ -1,0 +1,156 @@
+/*
+ * tone_scene_light.c - where EJ2's light seems to come from, read from
+ * the shading of a student's image: on the pixels of the spheres that
+ * the light reaches (above IA, below the clamp at 255), I = IA + II
+ * (L.N) is linear in L, so L is the least-squares fit of (I - IA) / II
+ * against each pixel's normal (worked out here from the scene's sphere
+ * and the pixel's ray).  It is named only when it explains those pixels
+ * much better than the statement's light, and is a direction (about a
+ * unit vector: a changed II is tone_scene.c's finding, not this one).
+ * Not for EJ3, whose point lights this does not fit.
+ */
+#include <math.h>
+
+#include "tone_scene.h"
+
+/* Fewest lit pixels a fit stands on. */
+#define FIT_MIN 500
+/* The fit's error (levels, RMS) at most this, the statement's at least
+   FIT_BETTER times it and FIT_OFF levels, the two directions this far
+   apart (cosine), and the fitted L this near unit length. */
+#define FIT_RMS 3.0
+#define FIT_BETTER 4.0
+#define FIT_OFF 8.0
+#define FIT_COS 0.998
+#define FIT_UNIT 0.1
+
+/* The normal at the point pixel (i, j) shows of sphere b. */
+static int normal_at(const scene_work *w, int b, uint32_t i, uint32_t j,
+                     double *n)
+{
+    const rayo_course_ball *ball = &w->data->balls[b];
+    double d[3], len, dc = 0, cc = 0, disc, t;
+    unsigned k;
+    d[0] = (double)i - w->map->width / 2.0;
+    d[1] = w->map->height / 2.0 - (double)j;
+    d[2] = w->map->focal;
+    len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (k = 0; k < 3; k++) {
+        d[k] /= len;
+        dc += d[k] * ball->center[k];
+        cc += ball->center[k] * ball->center[k];
+    }
+    disc = dc * dc - (cc - ball->radius * ball->radius);
+    if (disc < 0)
+        return 0;
+    t = dc - sqrt(disc);
+    for (k = 0; k < 3; k++)
+        n[k] = (t * d[k] - ball->center[k]) / ball->radius;
+    return 1;
+}
+
+/* The 3x3 system a x = y (Cramer); 0 when singular. */
+static int solve3(double a[3][3], const double *y, double *x)
+{
+    double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                 a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                 a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    unsigned c, r;
+    if (fabs(det) < 1e-9)
+        return 0;
+    for (c = 0; c < 3; c++) {
+        double m[3][3], d;
+        for (r = 0; r < 3; r++) {
+            m[r][0] = a[r][0];
+            m[r][1] = a[r][1];
+            m[r][2] = a[r][2];
+            m[r][c] = y[r];
+        }
+        d = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+            m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        x[c] = d / det;
+    }
+    return 1;
+}
+
+/* The pixels the fit reads: on a sphere still drawn, lit in the image
+   (a level or two above IA) and not clamped. */
+static int fit_pixel(const scene_work *w, size_t p, double ia, double *n)
+{
+    const rayo_course_map *m = w->map;
+    int b = m->ball[p];
+    double v = w->image->v[p];
+    if (!m->core[p] || b < 0 || w->gone[b] || v >= 255 ||
+        v <= ia + w->levels + 1)
+        return 0;
+    return normal_at(w, b, (uint32_t)(p % m->width), (uint32_t)(p / m->width),
+                     n);
+}
+
+int tone_scene_light_direction(scene_work *w)
+{
+    const rayo_course_map *m = w->map;
+    const double *ls = w->data->lamps[0].vector;
+    size_t pixels = (size_t)m->width * m->height, p, i;
+    double a[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, y[3] = {0, 0, 0};
+    double l[3], n[3], ia = w->data->ambient[0];
+    double ii = w->data->lamps[0].color[0], fit = 0, stated = 0, len, dot;
+    uint64_t total = 0, close = 0;
+    unsigned r, c;
+    if (m->exercise != RAYO_COURSE_EJ2 || w->data->lamp_count != 1 ||
+        w->data->lamps[0].point)
+        return 0;
+    for (i = 0; i < w->r->tone.findings; i++)
+        if (w->r->tone.finding[i].kind == RAYO_FINDING_AMBIENT)
+            ia = w->r->tone.finding[i].value[0];
+    for (p = 0; p < pixels; p++) {
+        double v;
+        if (!fit_pixel(w, p, ia, n))
+            continue;
+        v = (w->image->v[p] + 0.5 - ia) / ii; /* (int) cut the level */
+        for (r = 0; r < 3; r++) {
+            for (c = 0; c < 3; c++)
+                a[r][c] += n[r] * n[c];
+            y[r] += n[r] * v;
+        }
+        total++;
+    }
+    if (total < FIT_MIN || !solve3(a, y, l))
+        return 0;
+    for (p = 0; p < pixels; p++) {
+        double v, e, s;
+        float lit;
+        if (!fit_pixel(w, p, ia, n))
+            continue;
+        v = w->image->v[p] + 0.5 - ia;
+        e = v - ii * (l[0] * n[0] + l[1] * n[1] + l[2] * n[2]);
+        lit = m->light[p];
+        s = v - (lit > 0 ? ii * lit : 0);
+        fit += e * e;
+        stated += s * s;
+        close += fabs(e) <= w->levels + 1;
+    }
+    fit = sqrt(fit / (double)total);
+    stated = sqrt(stated / (double)total);
+    len = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    dot = (l[0] * ls[0] + l[1] * ls[1] + l[2] * ls[2]) / len;
+    if (fit > FIT_RMS || stated < FIT_BETTER * fit || stated < FIT_OFF ||
+        fabs(len - 1) > FIT_UNIT || dot > FIT_COS)
+        return 0;
+    {
+        rayo_compare_finding *f = tone_scene_add(w->r,
+                                              RAYO_FINDING_LIGHT_DIRECTION);
+        if (f == NULL)
+            return 0;
+        for (c = 0; c < 3; c++) {
+            f->value[c] = l[c] / len;
+            if (fabs(f->value[c]) < 0.005)
+                f->value[c] = 0; /* no -0.00 */
+            f->expected[c] = ls[c];
+        }
+        f->pixels = close;
+        f->total = total;
+    }
+    return 1;
+}
