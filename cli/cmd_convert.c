@@ -249,24 +249,19 @@ static void report_read(const convert_request *req, const rayo_image *image,
     char text[64];
     const char *kind =
         encoding_name(report->format, report->plain, text, sizeof text);
-    if (bytes > 0)
-        cli_sayf(_n("%s: %s, %lux%lu, %s, maxval %u; %llu byte after the "
-                    "image (ignored)",
-                    "%s: %s, %lux%lu, %s, maxval %u; %llu bytes after the "
-                    "image (ignored)",
-                    (unsigned long)bytes),
-                 name, kind, (unsigned long)info->width,
-                 (unsigned long)info->height, layout_name(info), info->maxval,
-                 bytes);
-    else
-        cli_sayf(_n("%s: %s, %lux%lu, %s, maxval %u; %llu byte after the "
-                    "image",
-                    "%s: %s, %lux%lu, %s, maxval %u; %llu bytes after the "
-                    "image",
-                    (unsigned long)bytes),
-                 name, kind, (unsigned long)info->width,
-                 (unsigned long)info->height, layout_name(info), info->maxval,
-                 bytes);
+    cli_sayf(bytes > 0 ? _n("%s: %s, %lux%lu, %s, maxval %u; %llu byte after "
+                            "the image (ignored)",
+                            "%s: %s, %lux%lu, %s, maxval %u; %llu bytes "
+                            "after the image (ignored)",
+                            (unsigned long)bytes)
+                       : _n("%s: %s, %lux%lu, %s, maxval %u; %llu byte after "
+                            "the image",
+                            "%s: %s, %lux%lu, %s, maxval %u; %llu bytes "
+                            "after the image",
+                            (unsigned long)bytes),
+             name, kind, (unsigned long)info->width,
+             (unsigned long)info->height, layout_name(info), info->maxval,
+             bytes);
 }
 
 static void report_written(const convert_request *req, const rayo_image *fit,

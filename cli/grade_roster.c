@@ -32,15 +32,6 @@
 
 /* ---- small helpers ---- */
 
-static char *join(const char *dir, const char *name)
-{
-    size_t room = strlen(dir) + strlen(name) + 2;
-    char *path = malloc(room);
-    if (path != NULL)
-        snprintf(path, room, "%s/%s", dir, name);
-    return path;
-}
-
 static char *copy_of(const char *s, size_t n)
 {
     char *c = malloc(n + 1);
@@ -127,7 +118,7 @@ static rayo_status list_entries(const char *dir, entry **list,
         char *path;
         if (de->d_name[0] == '.')
             continue;
-        path = join(dir, de->d_name);
+        path = cli_path_join(dir, de->d_name);
         e.name = strdup(de->d_name);
         if (path == NULL || e.name == NULL) {
             free(path);
@@ -260,7 +251,8 @@ static rayo_status staged_folder(builder *b, cli_student *s)
     cli_roster *r = b->roster;
     if (r->staging == NULL) {
         const char *tmp = getenv("TMPDIR");
-        char *pattern = join(tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp",
+        char *pattern = cli_path_join(
+            tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp",
                              "rayo-class.XXXXXX");
         if (pattern == NULL)
             return nomem(b);
@@ -273,7 +265,7 @@ static rayo_status staged_folder(builder *b, cli_student *s)
         }
         r->staging = pattern;
     }
-    s->folder = join(r->staging, s->safe);
+    s->folder = cli_path_join(r->staging, s->safe);
     if (s->folder == NULL)
         return nomem(b);
     if (mkdir(s->folder, 0700) != 0)
@@ -346,7 +338,8 @@ static rayo_status look_into(builder *b, const char *path, folder_look *l)
 static rayo_status add_folder(builder *b, const char *name, size_t n,
                               cli_layout layout, const char *entry_name)
 {
-    char *path = join(b->dir, entry_name), *shown_as = strdup(entry_name);
+    char *path = cli_path_join(b->dir, entry_name);
+    char *shown_as = strdup(entry_name);
     folder_look l;
     size_t i, depth;
     cli_student *s = add_student(b, name, n, layout);
@@ -365,8 +358,8 @@ static rayo_status add_folder(builder *b, const char *name, size_t n,
         }
         if (depth == 2 || l.sources > 0 || l.zips > 0 || l.folders != 1)
             break;
-        deeper = join(path, l.folder);
-        deeper_shown = join(shown_as, l.folder);
+        deeper = cli_path_join(path, l.folder);
+        deeper_shown = cli_path_join(shown_as, l.folder);
         entries_free(l.inside, l.count);
         free(path);
         free(shown_as);
@@ -379,7 +372,8 @@ static rayo_status add_folder(builder *b, const char *name, size_t n,
         }
     }
     if (l.sources == 0 && l.zips == 1) {
-        char *zip_path = join(path, l.zip), *from = join(shown_as, l.zip);
+        char *zip_path = cli_path_join(path, l.zip);
+        char *from = cli_path_join(shown_as, l.zip);
         status = zip_path != NULL && from != NULL
                      ? add_zip(b, s, zip_path, from) : nomem(b);
         free(zip_path);
@@ -393,7 +387,7 @@ static rayo_status add_folder(builder *b, const char *name, size_t n,
             if (l.inside[i].kind != 'f' ||
                 !cli_is_source_name(l.inside[i].name))
                 continue;
-            file = join(shown_as, l.inside[i].name);
+            file = cli_path_join(shown_as, l.inside[i].name);
             if (file == NULL || !add_file(s, file))
                 status = nomem(b);
             free(file);
@@ -476,7 +470,7 @@ static rayo_status add_flat(builder *b, cli_flat_file *f, size_t count)
             if (f[j].own == NULL || f[j].prefix != f[k].prefix ||
                 strncmp(f[j].entry, f[k].entry, f[k].prefix) != 0)
                 continue;
-            from = join(b->dir, f[j].entry);
+            from = cli_path_join(b->dir, f[j].entry);
             if (from == NULL)
                 return nomem(b);
             if (cli_copy_source(from, s->folder, f[j].own))
@@ -519,7 +513,7 @@ static rayo_status add_entry_file(builder *b, const entry *e,
     if (n > 0 && strncmp(kind, "file_", 5) != 0)
         return leave_out(b, e->name, "Moodle's online text, not a file");
     if (ends_with(e->name, ".zip")) {
-        char *path = join(b->dir, e->name);
+        char *path = cli_path_join(b->dir, e->name);
         cli_student *s;
         rayo_status status;
         if (n == 0)

@@ -15,7 +15,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-static char *join(const char *dir, const char *name)
+char *cli_path_join(const char *dir, const char *name)
 {
     size_t room = strlen(dir) + strlen(name) + 2;
     char *path = malloc(room);
@@ -26,7 +26,7 @@ static char *join(const char *dir, const char *name)
 
 int cli_copy_source(const char *from, const char *folder, const char *own)
 {
-    char buffer[8192], *to = join(folder, own);
+    char buffer[8192], *to = cli_path_join(folder, own);
     size_t total = 0;
     int in, out, ok = 1;
     if (to == NULL)

@@ -17,6 +17,9 @@
    EEXIST: own is there already). */
 int cli_copy_source(const char *from, const char *folder, const char *own);
 
+/* "dir/name", allocated; NULL when out of memory. */
+char *cli_path_join(const char *dir, const char *name);
+
 /* Removes staging: each subfolder's files, the subfolders, itself. */
 void cli_remove_staging(const char *staging);
 
