@@ -252,8 +252,7 @@ static rayo_status staged_folder(builder *b, cli_student *s)
     if (r->staging == NULL) {
         const char *tmp = getenv("TMPDIR");
         char *pattern = cli_path_join(
-            tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp",
-                             "rayo-class.XXXXXX");
+            tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp", "rayo-class.XXXXXX");
         if (pattern == NULL)
             return nomem(b);
         if (mkdtemp(pattern) == NULL) {
