@@ -295,7 +295,8 @@ async function compare() {
   const reference = await referenceImage(choice.which);
   if (!reference) return clearCompare();
   const start = performance.now();
-  const result = rayo.compare(reference, state.image);
+  const course = choice.which.startsWith('ej') ? Number(choice.which.slice(2)) - 1 : -1;
+  const result = rayo.compare(reference, state.image, course);
   times.compare = performance.now() - start;
   state.compared = { ...choice, file: referenceNames.file || '', verdict: result.verdict };
   showCompared();

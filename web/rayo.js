@@ -178,11 +178,12 @@ class Rayo {
     return image ? new RayoImage(this, image) : this.fail();
   }
   // `rayo compare reference image`: its text, verdict, diagnosis and the
-  // difference picture (PNG bytes).
-  compare(reference, image) {
+  // difference picture (PNG bytes).  course: the exercise (0, 1, 2) whose
+  // image the reference is, or -1 for a file.
+  compare(reference, image, course = -1) {
     reference.live();
     image.live();
-    const text = this.x.web_compare(reference.ptr, image.ptr);
+    const text = this.x.web_compare(reference.ptr, image.ptr, course);
     if (!text) this.fail();
     const diff = this.x.web_compare_diff();
     const size = this.x.web_compare_diff_size();

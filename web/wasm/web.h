@@ -40,7 +40,8 @@ web_image *web_from_png(const unsigned char *png, size_t png_size,
                         const unsigned char *rgba, uint32_t w, uint32_t h);
 unsigned web_info(const web_image *im, int field);
 const unsigned char *web_rgba(web_image *im);
-const char *web_compare(const web_image *reference, const web_image *image);
+const char *web_compare(const web_image *reference, const web_image *image,
+                        int reference_course);
 const char *web_compare_verdict(void);
 const char *web_compare_diagnosis(void);
 const unsigned char *web_compare_diff(void);

@@ -337,8 +337,12 @@ static char *format(size_t (*fn)(const rayo_compare_report *, char *,
  * web_compare_verdict, web_compare_diagnosis and web_compare_diff then
  * say more.  The image should come from web_read with clamp 1.
  */
+/* reference_course: the course's exercise (0, 1, 2) whose image the
+   reference is, or -1 for a file of the student's; as the command, the
+   report then notes pictures of different kinds. */
 WEB_EXPORT("web_compare")
-const char *web_compare(const web_image *reference, const web_image *image)
+const char *web_compare(const web_image *reference, const web_image *image,
+                        int reference_course)
 {
     rayo_compare_options options;
     rayo_output *out = NULL;
@@ -363,6 +367,11 @@ const char *web_compare(const web_image *reference, const web_image *image)
     compare_report.reference_surplus = surplus_pixels(reference);
     compare_report.image_surplus = surplus_pixels(image);
     rayo_compare_note_clamped(&compare_report, &image->read);
+    rayo_compare_note_kinds(&compare_report, &reference->image, &image->image,
+                            reference_course >= 0 &&
+                                    reference_course < RAYO_COURSE_EXERCISES
+                                ? (rayo_course_exercise)reference_course
+                                : RAYO_COURSE_EXERCISES);
     if (web_output_open(&out, "diff.png", &compare_diff, &err) == RAYO_OK) {
         if (rayo_compare_write_diff(&reference->image, &image->image,
                                     &options, out, &err) == RAYO_OK)
