@@ -24,6 +24,18 @@ says() {
     [ "$found" -eq 0 ] || sed 's/^/#   /' "$TMP/out" "$TMP/err" 2>/dev/null
 }
 lacks() { ! grep -Eq -- "$1" "$TMP/out"; ok $? "$2"; }
+# says_native PATTERN NAME: says, but skipped when the grader itself runs
+# under valgrind (make check-valgrind): valgrind only pretends to lower
+# the descriptor limit of the grader's children before their exec, so
+# there the program reaches valgrind's log, and what it shows depends on
+# that (the criterion still fails, checked apart).
+says_native() {
+    if [ "${RAYO_VALGRIND:-0}" = 1 ]; then
+        ok 0 "$2 # SKIP the grader runs under valgrind, which cannot lower its children's descriptor limit"
+    else
+        says "$1" "$2"
+    fi
+}
 # grade_in DIR ARGS...: grades with TMPDIR=$TMP/tmp (its temporary
 # folder there, so the tests can see it is removed).
 grade_in() {
@@ -203,7 +215,7 @@ if command -v valgrind >/dev/null 2>&1; then
         # (Which sign is seen depends on the host: a grader itself run
         # under valgrind, as check-valgrind does, cannot lower the real
         # descriptor limit, and then the forged NUL is what shows.)
-        says "^ +the program wrote into the grader's channel: " \
+        says_native "^ +the program wrote into the grader's channel: " \
             "valgrind dodge ($mode): its writes into valgrind's descriptors are a finding"
     done
     # The forged summary and NUL on descriptor 3 (once valgrind's log),
@@ -211,7 +223,7 @@ if command -v valgrind >/dev/null 2>&1; then
     # is a finding of its own.
     for mode in auto off; do
         grade_in --sandbox=$mode "$H/valgrind_forge"
-        says '^valgrind +FAIL +Invalid read of size 4, at main \(main\.c:[0-9]+\)$' \
+        says_native '^valgrind +FAIL +Invalid read of size 4, at main \(main\.c:[0-9]+\)$' \
             "valgrind forge ($mode): the real invalid read is reported"
         is "$(leaks_lost)" "4000 1" "valgrind forge ($mode): the real leak is reported"
         says "^ +the program wrote into the grader's channel: " \
@@ -228,9 +240,9 @@ if command -v valgrind >/dev/null 2>&1; then
     # Writing into valgrind's own descriptors by their /proc names stops
     # valgrind before its summary: a failure, not a skip.
     grade_in "$H/valgrind_crash"
-    says '^valgrind +FAIL +valgrind stopped on an internal error while it ran the program' \
+    says_native '^valgrind +FAIL +valgrind stopped on an internal error while it ran the program' \
         "valgrind crash: the criterion fails"
-    says '^ +valgrind: .*Assertion' "valgrind crash: valgrind's own line is quoted"
+    says_native '^ +valgrind: .*Assertion' "valgrind crash: valgrind's own line is quoted"
 fi
 
 # An image far larger than the exercise's, as a PNG of 13 MB: refused by
