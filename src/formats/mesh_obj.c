@@ -90,9 +90,13 @@ static rayo_status corner_vertex(const obj_reader *r, const char *word,
         return at_line(r, err, found,
                        "a vertex index (N, N/T, N//M or N/T/M)");
     }
-    if (index < 0 && (unsigned long long)-index <= r->vertex_count) {
-        *vertex = r->vertex_count - (size_t)-index;
-        return RAYO_OK;
+    if (index < 0) {
+        /* The magnitude without negating (LLONG_MIN has none). */
+        unsigned long long back = 0ull - (unsigned long long)index;
+        if (back <= r->vertex_count) {
+            *vertex = r->vertex_count - (size_t)back;
+            return RAYO_OK;
+        }
     }
     if (index > 0 && (unsigned long long)index <= r->vertex_count) {
         *vertex = (size_t)index - 1;
