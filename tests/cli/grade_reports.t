@@ -41,7 +41,7 @@ report() {
     file=$1 name=$2
     shift 2
     status=0
-    "$RAYO" grade --cc cc --timeout 2 "$@" </dev/null >"$file.raw" 2>&1 || status=$?
+    "$RAYO" grade --cc cc --timeout 10 "$@" </dev/null >"$file.raw" 2>&1 || status=$?
     {
         echo "== $name"
         sed -e '1{/^sandbox: /d;}' -e 's/ in [0-9][0-9.]* s\b/ in N s/g' "$file.raw"
