@@ -68,7 +68,7 @@ static const rayo_course_lamp ej3_lamps[] = {
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
-static const rayo_course_data course_data[RAYO_COURSE_EXERCISES] = {
+const rayo_course_data course_scene_data[RAYO_COURSE_EXERCISES] = {
     {ej1_balls, COUNT(ej1_balls), NULL, 0, {0, 0, 0}, RAYO_SHADE_HIT},
     {ej2_balls, COUNT(ej2_balls), ej2_lamps, COUNT(ej2_lamps), {5, 5, 5},
      RAYO_SHADE_COURSE_GRAY},
@@ -80,7 +80,7 @@ const rayo_course_data *rayo_course_data_of(rayo_course_exercise exercise)
 {
     if ((unsigned)exercise >= RAYO_COURSE_EXERCISES)
         return NULL;
-    return &course_data[exercise];
+    return &course_scene_data[exercise];
 }
 
 static rayo_vec3 vec_of(const double v[3])

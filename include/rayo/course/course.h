@@ -1,27 +1,25 @@
 /*
- * course.h - the course's three exercises as rayo knows them: their
- * scenes built in, and their images rendered exactly or with one of the
- * mistakes students typically make.
+ * course/course.h - the course's exercises as rayo knows them: a
+ * registry (rayo_course_info) that compare, grade, the command and the
+ * page ask for each exercise's name, image kind, size and format, scene
+ * and light model, and the mistakes students typically make, each with
+ * its one sentence; and the exercises' images rendered exactly or with
+ * one of those mistakes.
  *
- * EJ1 is the seed's sphere (bilevel), EJ2 the gray scene 2 and EJ3 the
- * colour scene 3 of escenas-del-curso.md, all 640x480 with a field of
- * view of 90 degrees.  rayo_course_render with RAYO_MISTAKE_NONE gives
- * exactly the bytes `rayo render examples/ejN.scene` gives.  With a
- * mistake it renders what a student's program with that one mistake
- * writes: a model of the student's code (a loop over the spheres array,
- * in order), written here, not the renderer's exact shading.  compare
- * and grade use those images to name a mistake: an image that agrees
- * with the render of a mistake has most likely made it.
- *
- * Not a general renderer: the scenes are the course's and nothing else.
+ * rayo_course_render with RAYO_MISTAKE_NONE gives exactly the bytes
+ * `rayo render examples/ejN.scene` gives; with a mistake, what a model
+ * of a student's program with that one mistake writes.  The scenes'
+ * numbers are in course/course_scene.h.  Not a general renderer.
  */
-#ifndef RAYO_COURSE_H
-#define RAYO_COURSE_H
+#ifndef RAYO_COURSE_COURSE_H
+#define RAYO_COURSE_COURSE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "rayo/export.h"
 #include "rayo/image.h"
+#include "rayo/render.h"
 #include "rayo/status.h"
 
 #ifdef __cplusplus
@@ -60,6 +58,45 @@ typedef enum rayo_course_mistake {
     RAYO_MISTAKE_COUNT
 } rayo_course_mistake;
 
+/* The kind of picture an exercise's program writes. */
+typedef enum rayo_course_kind {
+    RAYO_COURSE_BILEVEL, /* black and white: plain PBM */
+    RAYO_COURSE_GRAY,    /* levels 0 to 255: plain PGM */
+    RAYO_COURSE_COLOUR   /* RGB, 0 to 255 a channel: plain PPM */
+} rayo_course_kind;
+
+struct rayo_course_data; /* an exercise's scene: course/course_scene.h */
+
+/* One exercise of the registry; constant data. */
+typedef struct rayo_course_info {
+    rayo_course_exercise exercise;
+    const char *name;    /* "ej1": course:ej1, --exercise ej1 */
+    int number;          /* 1: "exercise 1" in a report */
+    const char *title;   /* "Ejercicio obligatorio 1: the sphere, ..." */
+    const char *picture; /* what its image shows: "black and white sphere" */
+    rayo_course_kind kind;
+    uint32_t width, height;
+    char magic;          /* its plain Netpbm format: '1', '2' or '3' */
+    rayo_shade_mode shade; /* its light model */
+    const struct rayo_course_data *scene; /* one source: course_scenes.c */
+    /* 1 when the student model (its mistakes) and the scene's map exist:
+       the tone comparison then tries the mistakes and reads the scene */
+    int student_model;
+    /* 1 when the course also accepts the rows of the statement's
+       y in [-alto/2, alto/2) read literally (the picture a row higher) */
+    int literal_rows;
+    const char *reference; /* the course's file: "referencia-catedra-ej1.png" */
+} rayo_course_info;
+
+/* The registry's entry of exercise; NULL for RAYO_COURSE_EXERCISES or
+   beyond.  Iterate with e from 0 to RAYO_COURSE_EXERCISES - 1. */
+RAYO_API const rayo_course_info *
+rayo_course_info_of(rayo_course_exercise exercise);
+
+/* The first exercise whose program writes a picture of kind;
+   RAYO_COURSE_EXERCISES when none does. */
+RAYO_API rayo_course_exercise rayo_course_of_kind(rayo_course_kind kind);
+
 /* Variations that are not mistakes of shading. */
 typedef struct rayo_course_options {
     rayo_course_mistake mistake;
@@ -97,8 +134,8 @@ RAYO_API const char *rayo_course_mistake_text(rayo_course_exercise exercise,
                                               rayo_course_mistake mistake);
 
 /*
- * Renders the exercise's 640x480 image into a new image: RAYO_SAMPLE_BIT
- * for EJ1, gray U8 for EJ2, RGB U8 for EJ3 (maxval 255).  options may be
+ * Renders the exercise's image into a new image of its size and kind:
+ * RAYO_SAMPLE_BIT, gray U8 or RGB U8 (maxval 255).  options may be
  * NULL (rayo_course_options_init's).  RAYO_ERR_INVALID for a mistake
  * that does not apply to the exercise.
  */
