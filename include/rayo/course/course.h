@@ -85,7 +85,7 @@ typedef struct rayo_course_info {
     /* 1 when the course also accepts the rows of the statement's
        y in [-alto/2, alto/2) read literally (the picture a row higher) */
     int literal_rows;
-    const char *reference; /* the course's file: "referencia-catedra-ej1.png" */
+    const char *reference; /* its file: "referencia-catedra-ej1.png" */
 } rayo_course_info;
 
 /* The registry's entry of exercise; NULL for RAYO_COURSE_EXERCISES or
