@@ -1,7 +1,7 @@
 /*
- * t_course.c - the course's built-in exercises (course.h): names and
- * texts, the exact images against the renderer reached another way (the
- * example scene files), the two camera variations, and each modelled
+ * t_course.c - the course's built-in exercises (course.h): the registry,
+ * names and texts, the exact images against the renderer reached another
+ * way (examples/ejN.scene: one scene, byte for byte), the two camera variations, and each modelled
  * mistake against an independent computation of what it does.
  *
  * The reference here shares no code with src/course: it holds the
@@ -312,7 +312,7 @@ static void count_diff(const rayo_image *a, const rayo_image *b, long *any,
         }
 }
 
-static int render_file(const char *name, const char *text, rayo_image *img)
+static int render_file(const char *name, rayo_image *img)
 {
     const char *root = getenv("RAYO_SOURCE");
     char path[4096];
@@ -322,13 +322,8 @@ static int render_file(const char *name, const char *text, rayo_image *img)
     rayo_error err;
     rayo_status status;
     int good;
-    if (text != NULL) {
-        status = rayo_scene_file_parse(&file, name, text, strlen(text), &err);
-    } else {
-        snprintf(path, sizeof path, "%s/examples/%s", root ? root : ".",
-                 name);
-        status = rayo_scene_file_load(&file, path, &err);
-    }
+    snprintf(path, sizeof path, "%s/examples/%s", root ? root : ".", name);
+    status = rayo_scene_file_load(&file, path, &err);
     if (status != RAYO_OK) {
         printf("# %s\n", err.message);
         return 0;
@@ -344,6 +339,52 @@ static int render_file(const char *name, const char *text, rayo_image *img)
         printf("# %s\n", err.message);
     rayo_scene_file_free(&file);
     return good;
+}
+
+/* The registry: each exercise as the statements define it. */
+static void test_registry(void)
+{
+    static const rayo_course_kind kinds[] = {
+        RAYO_COURSE_BILEVEL, RAYO_COURSE_GRAY, RAYO_COURSE_COLOUR};
+    static const rayo_shade_mode shades[] = {
+        RAYO_SHADE_HIT, RAYO_SHADE_COURSE_GRAY, RAYO_SHADE_COURSE_COLOR};
+    static const int modelled[] = {0, 1, 1}, literal[] = {1, 1, 0};
+    int e;
+    is_int(RAYO_COURSE_EXERCISES, 3, "three exercises");
+    for (e = 0; e < RAYO_COURSE_EXERCISES; e++) {
+        rayo_course_exercise x = (rayo_course_exercise)e;
+        const rayo_course_info *info = rayo_course_info_of(x);
+        char name[8], title[32], reference[40];
+        if (info == NULL) {
+            ok(0, "exercise %d is in the registry", e);
+            continue;
+        }
+        snprintf(name, sizeof name, "ej%d", e + 1);
+        snprintf(title, sizeof title, "Ejercicio obligatorio %d: ", e + 1);
+        snprintf(reference, sizeof reference, "referencia-catedra-ej%d.png",
+                 e + 1);
+        ok(info->exercise == x && strcmp(info->name, name) == 0 &&
+               info->number == e + 1 &&
+               strncmp(info->title, title, strlen(title)) == 0 &&
+               strcmp(info->reference, reference) == 0,
+           "%s: its name, number, title and reference file", name);
+        ok(info->kind == kinds[e] && info->width == W && info->height == H &&
+               info->magic == '1' + e && info->shade == shades[e],
+           "%s: its kind, 640x480, P%c, its light model", name, '1' + e);
+        ok(info->scene == rayo_course_data_of(x) && info->scene != NULL &&
+               info->scene->shade == info->shade,
+           "%s: its scene is the one rayo_course_data_of gives", name);
+        ok(info->student_model == modelled[e] &&
+               info->literal_rows == literal[e],
+           "%s: student model %d, literal rows %d", name, modelled[e],
+           literal[e]);
+        is_int(rayo_course_of_kind(kinds[e]), e, "the %s picture is %s's",
+               e == 0 ? "bilevel" : e == 1 ? "gray" : "colour", name);
+    }
+    ok(rayo_course_info_of(RAYO_COURSE_EXERCISES) == NULL,
+       "no entry past the last exercise");
+    is_int(rayo_course_of_kind((rayo_course_kind)7), RAYO_COURSE_EXERCISES,
+           "no exercise of an unknown kind");
 }
 
 static void test_names(void)
@@ -435,28 +476,26 @@ static void test_names(void)
            RAYO_ERR_INVALID, "focal scale NaN refused");
 }
 
-/* NONE is the renderer's image, as the example scene files give it. */
+/* NONE is the renderer's image, as the example scene files give it:
+   examples/NAME.scene and the registry's scene are one scene. */
 static void test_exact(void)
 {
-    static const char ej1_text[] =
-        "shade hit\ncamera size 640 480 fov 90 origin 0 0 0\n"
-        "sphere 0.5 0.75 1.9 0.8\n";
-    const char *files[] = {NULL, "ej2.scene", "ej3.scene"};
     rayo_image mine, theirs;
     int e;
     for (e = 0; e < RAYO_COURSE_EXERCISES; e++) {
         rayo_course_exercise x = (rayo_course_exercise)e;
+        char file[64];
+        snprintf(file, sizeof file, "%s.scene", rayo_course_name(x));
         if (!render(x, RAYO_MISTAKE_NONE, 0, 1.0, &mine)) {
             ok(0, "%s renders", rayo_course_name(x));
             continue;
         }
-        if (render_file(files[e] ? files[e] : "ej1", files[e] ? NULL
-                        : ej1_text, &theirs)) {
-            ok(same_bytes(&mine, &theirs), "%s: byte for byte the scene "
-               "file's render", rayo_course_name(x));
+        if (render_file(file, &theirs)) {
+            ok(same_bytes(&mine, &theirs), "%s: byte for byte the render of "
+               "examples/%s", rayo_course_name(x), file);
             rayo_image_free(&theirs);
         } else {
-            ok(0, "%s's scene file renders", rayo_course_name(x));
+            ok(0, "examples/%s renders", file);
         }
         ok(mine.info.width == W && mine.info.height == H &&
                mine.info.sample ==
@@ -771,6 +810,7 @@ static void test_by_hand(void)
 
 int main(void)
 {
+    test_registry();
     test_names();
     test_exact();
     test_camera();
