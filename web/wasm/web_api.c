@@ -24,7 +24,8 @@
 
 #include "rayo/camera_spec.h"
 #include "rayo/compare.h"
-#include "rayo/course.h"
+#include "rayo/course/course.h"
+#include "rayo/course/course_scene.h"
 #include "rayo/limits.h"
 #include "rayo/reader.h"
 #include "rayo/render.h"
@@ -32,7 +33,6 @@
 #include "rayo/seed.h"
 #include "rayo/sphere.h"
 
-#include "../../src/course/course_impl.h"
 #include "../../src/formats/reader_impl.h"
 #include "web.h"
 
@@ -337,7 +337,7 @@ static char *format(size_t (*fn)(const rayo_compare_report *, char *,
  * web_compare_verdict, web_compare_diagnosis and web_compare_diff then
  * say more.  The image should come from web_read with clamp 1.
  */
-/* reference_course: the course's exercise (0, 1, 2) whose image the
+/* reference_course: the course's exercise (web_course_name) whose image the
    reference is, or -1 for a file of the student's; as the command, the
    report then notes pictures of different kinds. */
 WEB_EXPORT("web_compare")
@@ -407,7 +407,41 @@ WEB_EXPORT("web_compare_diff_size") size_t web_compare_diff_size(void)
     return compare_diff.size;
 }
 
-/* The course's exercise scene_id (0-2), NULL for the seed (-1). */
+/*
+ * The course's registry for the page, which asks it and never spells an
+ * exercise: how many there are, each one's name ("" past the last) and
+ * number, and the exercise whose pictures are of an image's kind
+ * (bilevel, else gray for one channel and colour for more), -1 none.
+ */
+WEB_EXPORT("web_course_count") int web_course_count(void)
+{
+    return RAYO_COURSE_EXERCISES;
+}
+
+WEB_EXPORT("web_course_name") const char *web_course_name(int i)
+{
+    const rayo_course_info *info =
+        i < 0 ? NULL : rayo_course_info_of((rayo_course_exercise)i);
+    return info != NULL ? info->name : "";
+}
+
+WEB_EXPORT("web_course_number") int web_course_number(int i)
+{
+    const rayo_course_info *info =
+        i < 0 ? NULL : rayo_course_info_of((rayo_course_exercise)i);
+    return info != NULL ? info->number : 0;
+}
+
+WEB_EXPORT("web_course_of_kind") int web_course_of_kind(int bilevel,
+                                                        int channels)
+{
+    rayo_course_exercise e = rayo_course_of_kind(
+        bilevel ? RAYO_COURSE_BILEVEL
+                : channels == 1 ? RAYO_COURSE_GRAY : RAYO_COURSE_COLOUR);
+    return e < RAYO_COURSE_EXERCISES ? (int)e : -1;
+}
+
+/* The course's exercise scene_id, NULL for the seed (-1). */
 static const rayo_course_data *course_data(int scene_id)
 {
     return scene_id < 0 ? NULL
