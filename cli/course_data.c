@@ -1,23 +1,15 @@
 /*
  * course_data.c - where the course's own reference images are on this
- * machine, for `rayo grade --reference course`.
+ * machine, for `rayo grade --reference course` and the image operands
+ * course:NAME (compare, view, convert), one for each exercise of the
+ * course's registry (rayo/course/course.h), whose entry names the file.
  *
- * They are data files, not code (data/course/ in the source tree,
- * PREFIX/share/rayo/course/ once installed), looked for in this order:
- * $RAYO_DATA_DIR/course, then beside the running command
- * (DIR/../data/course for build/rayo in a work tree, DIR/../share/rayo/
- * course for PREFIX/bin/rayo), and last the copy built into the library
- * (rayo_course_reference_png), so a copied command needs no data files.
- * Finding files is the command's job; the library only ever gets a path
- * (the built-in copy is handed on as a file only this process sees).
- *
- * Image operands (compare, view, convert) name them course:NAME, for
- * each exercise of the course's registry (rayo/course/course.h), whose
- * entry names the file.  A file whose name really is "course:ej1" in
- * the current directory wins (./course:ej1 always means the file), so no
- * name that worked before changes meaning.  cli_course_picture tells
- * whether an image read from elsewhere is one of them (compare's note on
- * kinds and its warning on swapped operands).
+ * Looked for in $RAYO_DATA_DIR/course, then beside the running command
+ * (../data/course, ../share/rayo/course), and last the copy built into
+ * the library, handed on as a file only this process sees.  A file
+ * really named "course:ej1" in the current directory wins, so no name
+ * that worked before changes meaning.  cli_course_picture tells whether
+ * an image read from elsewhere is one of them (compare's kinds note).
  */
 #define _GNU_SOURCE /* memfd_create */
 

@@ -3,15 +3,13 @@
  * inconsistent image, the one mistake that explains it.
  *
  * As for masks (diagnose.c), each candidate is undone on the image and
- * the images compared again; a candidate is named when nothing
- * unexplained is left, or at most a twentieth of it.  The candidates
- * here: channels in another order; flips; inversion; a whole-pixel
- * shift; a scale about the centre; a constant offset, everywhere or on
- * the objects only; values wrapped past 255; and the course's mistakes
- * (tone_mistakes.c).  The fewest unexplained pixels win, then the first
- * tried (try_all).  Consistent needs nothing unexplained and the
- * differences at most RAYO_COMPARE_BAND_SHARE of the pixels where they
- * could be explained (tone_band).
+ * the images compared again, and named when at most a twentieth of the
+ * unexplained pixels is left.  The candidates here: channels in another
+ * order, flips, inversion, a whole-pixel shift, a scale about the
+ * centre, a constant offset (everywhere or on the objects), values
+ * wrapped past 255; the course's mistakes are tone_mistakes.c's.  The
+ * fewest unexplained pixels win (try_all).  Consistent needs nothing
+ * unexplained and few differences where they could be (tone_band).
  */
 #include <math.h>
 #include <stdlib.h>

@@ -3,14 +3,13 @@
  * tone diagnosis: when the reference is the right render of one of the
  * course's scenes (detected, or named by the options), the image is
  * compared with the student model's render of that scene with each
- * mistake that applies (rayo/course/course.h), and the one that
- * explains it is named.  Also a consistent image's hidden mistake: one
- * the reference cannot see, whose render agrees with the image far
- * better than the right render does.
+ * mistake that applies, and the one that explains it is named.  Also a
+ * consistent image's hidden mistake, one the reference cannot see.
  *
  * Which exercise a picture can be, and whether a model covers it, the
- * course's registry says.  The renders come from tone_cache.c when an
- * earlier comparison made them.  The other candidates: tone_diagnose.c.
+ * course's registry says (rayo/course/course.h).  Renders come from
+ * tone_cache.c when an earlier comparison made them.  Not the other
+ * candidates (flips, shifts, offsets): tone_diagnose.c.
  */
 #include <stdlib.h>
 #include <string.h>
