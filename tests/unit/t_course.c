@@ -387,6 +387,70 @@ static void test_registry(void)
            "no exercise of an unknown kind");
 }
 
+/* A 64x48 render of scene with exercise's shading into img. */
+static int render_small(rayo_course_exercise e, rayo_scene *scene,
+                        rayo_image *img)
+{
+    rayo_camera_spec spec;
+    rayo_camera camera;
+    rayo_render_options options;
+    rayo_error err;
+    rayo_camera_spec_init(&spec);
+    spec.width = 64;
+    spec.height = 48;
+    rayo_render_options_init(&options);
+    options.shade = rayo_course_info_of(e)->shade;
+    options.threads = 1;
+    return rayo_camera_spec_build(&spec, &camera, &err) == RAYO_OK &&
+           rayo_render_image(&camera, scene, &options, img, &err) == RAYO_OK;
+}
+
+/* The page's scene with spheres moved: the scene's own values give the
+   scene's bytes, a smaller sphere other bytes, and what is not moved
+   stays. */
+static void test_moved(void)
+{
+    const rayo_course_data *d = rayo_course_data_of(RAYO_COURSE_EJ2);
+    double at[4 * 8];
+    rayo_scene *scene = NULL;
+    rayo_image plain, same, moved;
+    rayo_error err;
+    size_t i;
+    int good;
+    ok(d->ball_count <= 8, "scene 2 has at most 8 spheres");
+    for (i = 0; i < d->ball_count; i++) {
+        memcpy(at + 4 * i, d->balls[i].center, sizeof d->balls[i].center);
+        at[4 * i + 3] = d->balls[i].radius;
+    }
+    good = rayo_course_scene_build(RAYO_COURSE_EJ2, &scene, &err) ==
+               RAYO_OK &&
+           render_small(RAYO_COURSE_EJ2, scene, &plain);
+    rayo_scene_free(scene);
+    good = good &&
+           rayo_course_scene_build_moved(RAYO_COURSE_EJ2, at, d->ball_count,
+                                         &scene, &err) == RAYO_OK &&
+           render_small(RAYO_COURSE_EJ2, scene, &same);
+    rayo_scene_free(scene);
+    at[4 * 1 + 3] = 0.2; /* the big sphere, 0.85, much smaller */
+    good = good &&
+           rayo_course_scene_build_moved(RAYO_COURSE_EJ2, at, 2, &scene,
+                                         &err) == RAYO_OK &&
+           render_small(RAYO_COURSE_EJ2, scene, &moved);
+    rayo_scene_free(scene);
+    ok(good, "scene 2 builds and renders with and without moved spheres");
+    if (!good)
+        return;
+    ok(same_bytes(&plain, &same), "its own values: the scene's bytes");
+    ok(!same_bytes(&plain, &moved), "a smaller sphere: other bytes");
+    is_int(rayo_course_scene_build_moved(RAYO_COURSE_EXERCISES, NULL, 0,
+                                         &scene, &err),
+           RAYO_ERR_INVALID, "no scene past the last exercise");
+    ok(scene == NULL, "and no scene made");
+    rayo_image_free(&plain);
+    rayo_image_free(&same);
+    rayo_image_free(&moved);
+}
+
 static void test_names(void)
 {
     static const char *const names[RAYO_MISTAKE_COUNT] = {
@@ -811,6 +875,7 @@ static void test_by_hand(void)
 int main(void)
 {
     test_registry();
+    test_moved();
     test_names();
     test_exact();
     test_camera();

@@ -464,51 +464,21 @@ static rayo_status build_scene(int scene_id, const double *spheres,
     *shade = RAYO_SHADE_HIT;
     if (scene_id >= 0 && data == NULL)
         return rayo_error_set(err, RAYO_ERR_INVALID, "no scene %d", scene_id);
+    if (data != NULL) {
+        /* the course's scene (one source: course_scenes.c), the balls'
+           centres and radii taken from spheres */
+        *shade = data->shade;
+        return rayo_course_scene_build_moved(
+            (rayo_course_exercise)scene_id, spheres, count, scene, err);
+    }
     if ((s = rayo_scene_create(scene, err)) != RAYO_OK)
         return s;
-    if (data == NULL) {
-        for (i = 0; s == RAYO_OK && i < count; i++)
-            s = rayo_scene_add_sphere(
-                *scene,
-                rayo_vec3_make(spheres[4 * i], spheres[4 * i + 1],
-                               spheres[4 * i + 2]),
-                spheres[4 * i + 3], err);
-        return s;
-    }
-    /* As rayo_course_scene_build fills it (course_scenes.c), the balls'
-       centres and radii taken from spheres. */
-    *shade = data->shade;
-    rayo_scene_set_ambient(*scene, rayo_vec3_make(data->ambient[0],
-                                                  data->ambient[1],
-                                                  data->ambient[2]));
-    for (i = 0; s == RAYO_OK && i < data->ball_count; i++) {
-        const rayo_course_ball *b = &data->balls[i];
-        const double *e = i < count ? spheres + 4 * i : NULL;
-        rayo_material m;
-        unsigned id;
-        memset(&m, 0, sizeof m);
-        m.color = rayo_vec3_make(b->color[0], b->color[1], b->color[2]);
-        m.ka = b->ka;
-        m.kd = b->kd;
-        s = rayo_scene_add_material(*scene, &m, &id, err);
-        if (s == RAYO_OK)
-            s = rayo_scene_add_sphere_material(
-                *scene,
-                e ? rayo_vec3_make(e[0], e[1], e[2])
-                  : rayo_vec3_make(b->center[0], b->center[1], b->center[2]),
-                e ? e[3] : b->radius, id, err);
-    }
-    for (i = 0; s == RAYO_OK && i < data->lamp_count; i++) {
-        const rayo_course_lamp *l = &data->lamps[i];
-        rayo_light light;
-        light.kind = l->point ? RAYO_LIGHT_POINT : RAYO_LIGHT_DIRECTIONAL;
-        light.vector =
-            rayo_vec3_make(l->vector[0], l->vector[1], l->vector[2]);
-        light.color = rayo_vec3_make(l->color[0], l->color[1], l->color[2]);
-        s = rayo_scene_add_light(*scene, &light, err);
-    }
-    if (s == RAYO_OK)
-        s = rayo_scene_prepare(*scene, err);
+    for (i = 0; s == RAYO_OK && i < count; i++)
+        s = rayo_scene_add_sphere(*scene,
+                                  rayo_vec3_make(spheres[4 * i],
+                                                 spheres[4 * i + 1],
+                                                 spheres[4 * i + 2]),
+                                  spheres[4 * i + 3], err);
     return s;
 }
 

@@ -62,6 +62,13 @@ RAYO_API rayo_status rayo_course_scene_build(rayo_course_exercise exercise,
                                              rayo_scene **scene,
                                              rayo_error *err);
 
+/* The same with the first count spheres moved: spheres holds count x
+   (cx, cy, cz, r), replacing their centres and radii in order (the
+   page's sliders); their materials and the lights stay the scene's. */
+RAYO_API rayo_status rayo_course_scene_build_moved(
+    rayo_course_exercise exercise, const double *spheres, size_t count,
+    rayo_scene **scene, rayo_error *err);
+
 /*
  * The student model's image of an exercise with a student model
  * (rayo_course_info's student_model), rows first..end-1 only, for a
