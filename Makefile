@@ -326,6 +326,8 @@ install: all
 	ln -sf $(SO_NAME) $(DESTDIR)$(PREFIX)/lib/librayo.so
 	install -m 644 include/rayo.h $(DESTDIR)$(PREFIX)/include/rayo.h
 	install -m 644 include/rayo/*.h $(DESTDIR)$(PREFIX)/include/rayo/
+	install -d $(DESTDIR)$(PREFIX)/include/rayo/course
+	install -m 644 include/rayo/course/*.h $(DESTDIR)$(PREFIX)/include/rayo/course/
 	install -m 644 man/rayo.1 $(DESTDIR)$(PREFIX)/share/man/man1/rayo.1
 	for l in $(PO_LANGS); do \
 	    install -d $(DESTDIR)$(PREFIX)/share/locale/$$l/LC_MESSAGES && \

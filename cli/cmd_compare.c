@@ -152,11 +152,13 @@ static int parse_request(int argc, char **argv, compare_request *req)
             if (strcmp(optarg, "none") == 0) {
                 req->options.course = RAYO_COMPARE_COURSE_NONE;
             } else if (rayo_course_find(optarg) == RAYO_COURSE_EXERCISES) {
-                {
-                static const char *const names[] = {"ej1", "ej2", "ej3",
-                                                    "none"};
-                return cli_unknown_exercise("--exercise", optarg, names, 4);
-            }
+                const char *names[RAYO_COURSE_EXERCISES + 1];
+                unsigned i;
+                for (i = 0; i < RAYO_COURSE_EXERCISES; i++)
+                    names[i] = rayo_course_name((rayo_course_exercise)i);
+                names[i] = "none";
+                return cli_unknown_exercise("--exercise", optarg, names,
+                                            RAYO_COURSE_EXERCISES + 1);
             } else {
                 req->options.course = (int)rayo_course_find(optarg);
             }

@@ -1,22 +1,15 @@
 /*
  * course_data.c - where the course's own reference images are on this
- * machine, for `rayo grade --reference course`.
+ * machine, for `rayo grade --reference course` and the image operands
+ * course:NAME (compare, view, convert), one for each exercise of the
+ * course's registry (rayo/course/course.h), whose entry names the file.
  *
- * They are data files, not code (data/course/ in the source tree,
- * PREFIX/share/rayo/course/ once installed), looked for in this order:
- * $RAYO_DATA_DIR/course, then beside the running command
- * (DIR/../data/course for build/rayo in a work tree, DIR/../share/rayo/
- * course for PREFIX/bin/rayo), and last the copy built into the library
- * (rayo_course_reference_png), so a copied command needs no data files.
- * Finding files is the command's job; the library only ever gets a path
- * (the built-in copy is handed on as a file only this process sees).
- *
- * Image operands (compare, view, convert) name them course:ej1,
- * course:ej2, course:ej3.  A file whose name really is "course:ej1" in
- * the current directory wins (./course:ej1 always means the file), so no
- * name that worked before changes meaning.  cli_course_picture tells
- * whether an image read from elsewhere is one of them (compare's note on
- * kinds and its warning on swapped operands).
+ * Looked for in $RAYO_DATA_DIR/course, then beside the running command
+ * (../data/course, ../share/rayo/course), and last the copy built into
+ * the library, handed on as a file only this process sees.  A file
+ * really named "course:ej1" in the current directory wins, so no name
+ * that worked before changes meaning.  cli_course_picture tells whether
+ * an image read from elsewhere is one of them (compare's kinds note).
  */
 #define _GNU_SOURCE /* memfd_create */
 
@@ -53,7 +46,7 @@ static int join(char *out, size_t room, const char *dir, const char *file)
 static int built_in(const char *exercise, const char *file, char *path,
                     size_t room)
 {
-    static int fds[RAYO_COURSE_EXERCISES] = {-1, -1, -1};
+    static int fds[RAYO_COURSE_EXERCISES]; /* the descriptor + 1 */
     rayo_course_exercise e = rayo_course_find(exercise);
     const unsigned char *data;
     size_t size, done = 0;
@@ -63,7 +56,7 @@ static int built_in(const char *exercise, const char *file, char *path,
     data = rayo_course_reference_png(e, &size);
     if (data == NULL)
         return 0;
-    if (fds[e] < 0) {
+    if (fds[e] == 0) {
         int fd = memfd_create(file, MFD_CLOEXEC);
         if (fd < 0)
             return 0;
@@ -77,9 +70,9 @@ static int built_in(const char *exercise, const char *file, char *path,
             }
             done += (size_t)w;
         }
-        fds[e] = fd;
+        fds[e] = fd + 1;
     }
-    n = snprintf(path, room, "/proc/self/fd/%d", fds[e]);
+    n = snprintf(path, room, "/proc/self/fd/%d", fds[e] - 1);
     return n > 0 && (size_t)n < room && readable(path);
 }
 
@@ -87,12 +80,16 @@ int cli_course_reference(const char *exercise, char *path, size_t room)
 {
     static const char *const beside[] = {"../data/course",
                                          "../share/rayo/course"};
-    char file[64], exe[4096], dir[4096 + 32];
-    const char *env = getenv("RAYO_DATA_DIR");
+    const rayo_course_info *info =
+        rayo_course_info_of(rayo_course_find(exercise));
+    char exe[4096], dir[4096 + 32];
+    const char *env = getenv("RAYO_DATA_DIR"), *file;
     ssize_t n;
     size_t i;
     char *slash;
-    snprintf(file, sizeof file, "referencia-catedra-%s.png", exercise);
+    if (info == NULL)
+        return 0;
+    file = info->reference;
     if (env != NULL && env[0] != '\0') {
         snprintf(dir, sizeof dir, "%s/course", env);
         if (join(path, room, dir, file) && readable(path))
@@ -125,11 +122,17 @@ int cli_image_operand(const char *operand, char *path, size_t room,
     if (strncmp(operand, prefix, sizeof prefix - 1) != 0 ||
         lstat(operand, &st) == 0)
         return CLI_EXIT_OK;
-    if (strcmp(name, "ej1") != 0 && strcmp(name, "ej2") != 0 &&
-        strcmp(name, "ej3") != 0) {
-        static const char *const images[] = {"course:ej1", "course:ej2",
-                                             "course:ej3"};
-        const char *nearest = cli_nearest(operand, images, 3);
+    if (rayo_course_find(name) == RAYO_COURSE_EXERCISES) {
+        char images[RAYO_COURSE_EXERCISES][40];
+        const char *list[RAYO_COURSE_EXERCISES];
+        const char *nearest;
+        unsigned i;
+        for (i = 0; i < RAYO_COURSE_EXERCISES; i++) {
+            snprintf(images[i], sizeof images[i], "%s%s", prefix,
+                     rayo_course_name((rayo_course_exercise)i));
+            list[i] = images[i];
+        }
+        nearest = cli_nearest(operand, list, RAYO_COURSE_EXERCISES);
         if (nearest != NULL)
             return cli_usage_error(_("%s: no such course image; did you "
                                      "mean %s? The course's images are "
@@ -155,14 +158,15 @@ rayo_course_exercise cli_course_picture(const rayo_image *image)
 {
     rayo_course_exercise e =
         rayo_picture_kind_exercise(rayo_picture_kind_of(image));
+    const rayo_course_info *info = rayo_course_info_of(e);
     char path[4096];
     rayo_image course;
     rayo_error err;
     int same;
-    /* The course's images are 640x480: nothing else is read for others. */
-    if (e >= RAYO_COURSE_EXERCISES || image->info.width != 640 ||
-        image->info.height != 480 ||
-        !cli_course_reference(rayo_course_name(e), path, sizeof path))
+    /* Only a picture of the exercise's size is read against its image. */
+    if (info == NULL || image->info.width != info->width ||
+        image->info.height != info->height ||
+        !cli_course_reference(info->name, path, sizeof path))
         return RAYO_COURSE_EXERCISES;
     memset(&course, 0, sizeof course);
     rayo_error_clear(&err);

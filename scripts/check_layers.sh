@@ -34,7 +34,7 @@ home() { # the layer a public header belongs to
     render) echo render ;;
     scene_file) echo scenefile ;;
     preview) echo preview ;;
-    course) echo course ;;
+    course | course_scene) echo course ;;
     compare) echo compare ;;
     grade | pbm_check) echo grade ;;
     *) echo unknown ;;

@@ -125,7 +125,10 @@ const TEXT = {
     pngError: (name) => `rayo: ${name}: the browser could not decode the PNG`,
   },
 };
-const SCENES = { seed: -1, ej1: 0, ej2: 1, ej3: 2 };
+// The course's exercises as the module's registry lists them (readCourses):
+// each name's index (its scene, its reference) and number.
+let COURSES = {};
+const sceneOf = (which) => (which in COURSES ? COURSES[which].index : -1);
 const $ = (id) => document.getElementById(id);
 let lang = (localStorage.getItem('rayo-lang') ||
             (navigator.language || 'es')).slice(0, 2) === 'en' ? 'en' : 'es';
@@ -244,13 +247,21 @@ function applyZoom() {
   canvas.style.height = `${canvas.height * zoom()}px`;
 }
 
+function readCourses() {
+  COURSES = {};
+  const n = rayo.x.web_course_count();
+  for (let i = 0; i < n; i++)
+    COURSES[rayo.string(rayo.x.web_course_name(i))] = { index: i, number: rayo.x.web_course_number(i) };
+}
+
 // The reference to compare with: the one picked, or for "auto" the
-// course's exercise of the image's kind (bilevel 1, gray 2, colour 3).
+// course's exercise of the image's kind, as the registry says.
 function referenceChoice() {
   const picked = $('reference').value;
   if (picked !== 'auto') return { which: picked, auto: false };
   const im = state.image;
-  const which = im.bilevel ? 'ej1' : im.channels === 1 ? 'ej2' : 'ej3';
+  const index = rayo.x.web_course_of_kind(im.bilevel ? 1 : 0, im.channels);
+  const which = Object.keys(COURSES).find((k) => COURSES[k].index === index);
   return { which, auto: true };
 }
 
@@ -283,7 +294,7 @@ function showCompared() {
     return;
   }
   note.textContent = c.which === 'file' ? t('pickedFile')(c.file)
-                   : c.auto ? t('byKind')[c.which] : t('picked')(c.which.slice(2));
+                   : c.auto ? t('byKind')[c.which] : t('picked')(COURSES[c.which].number);
   const right = c.verdict === 'identical' || c.verdict === 'consistent';
   mark.textContent = right ? t('right') : t('wrong');
   mark.className = right ? 'mark right' : 'mark wrong';
@@ -295,7 +306,7 @@ async function compare() {
   const reference = await referenceImage(choice.which);
   if (!reference) return clearCompare();
   const start = performance.now();
-  const course = choice.which.startsWith('ej') ? Number(choice.which.slice(2)) - 1 : -1;
+  const course = sceneOf(choice.which);
   const result = rayo.compare(reference, state.image, course);
   times.compare = performance.now() - start;
   state.compared = { ...choice, file: referenceNames.file || '', verdict: result.verdict };
@@ -370,7 +381,7 @@ function setSpheres(list) {
 }
 
 function resetScene() {
-  const id = SCENES[$('scene').value];
+  const id = sceneOf($('scene').value);
   for (const [k, v] of Object.entries({ width: 640, height: 480, fov: 90, ox: 0, oy: 0, oz: 0 }))
     $(k).value = String(v);
   setSpheres(rayo.spheres(id));
@@ -380,7 +391,7 @@ async function render() {
   await guarded(async () => {
     const which = $('scene').value, cam = camera(), sp = spheres();
     const start = performance.now();
-    const image = rayo.render(SCENES[which], cam, sp);
+    const image = rayo.render(sceneOf(which), cam, sp);
     times.render = performance.now() - start;
     state.rendered = { camera: cam, spheres: sp };
     const ext = image.format.toLowerCase();
@@ -575,6 +586,7 @@ async function start() {
   applyLang();
   try {
     rayo = await RayoWeb.loadRayo(bytesOf(window.RAYO_ASSETS.wasm));
+    readCourses();
   } catch (e) {
     showError(`rayo: ${e.message}`);
     return;

@@ -1,123 +1,14 @@
 /*
- * course.h - the course's three exercises as rayo knows them: their
- * scenes built in, and their images rendered exactly or with one of the
- * mistakes students typically make.
- *
- * EJ1 is the seed's sphere (bilevel), EJ2 the gray scene 2 and EJ3 the
- * colour scene 3 of escenas-del-curso.md, all 640x480 with a field of
- * view of 90 degrees.  rayo_course_render with RAYO_MISTAKE_NONE gives
- * exactly the bytes `rayo render examples/ejN.scene` gives.  With a
- * mistake it renders what a student's program with that one mistake
- * writes: a model of the student's code (a loop over the spheres array,
- * in order), written here, not the renderer's exact shading.  compare
- * and grade use those images to name a mistake: an image that agrees
- * with the render of a mistake has most likely made it.
- *
- * Not a general renderer: the scenes are the course's and nothing else.
+ * course.h - the course's room in one include: the registry of its
+ * exercises, their mistakes and images (course/course.h) and their
+ * scenes' numbers and maps (course/course_scene.h).  Kept so that
+ * existing users of "rayo/course.h" compile unchanged; nothing is
+ * declared here.
  */
 #ifndef RAYO_COURSE_H
 #define RAYO_COURSE_H
 
-#include <stddef.h>
-
-#include "rayo/export.h"
-#include "rayo/image.h"
-#include "rayo/status.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
-
-typedef enum rayo_course_exercise {
-    RAYO_COURSE_EJ1, /* the sphere: plain PBM, black where a ray hits */
-    RAYO_COURSE_EJ2, /* gray: ambient + diffuse, shadows, plain PGM */
-    RAYO_COURSE_EJ3, /* colour: several lights, plain PPM */
-    RAYO_COURSE_EXERCISES
-} rayo_course_exercise;
-
-/* The mistakes modelled, each a change to a correct program. */
-typedef enum rayo_course_mistake {
-    RAYO_MISTAKE_NONE,
-    RAYO_MISTAKE_NO_SHADOWS,        /* delta always 1: no shadow ray */
-    RAYO_MISTAKE_SELF_SHADOW,       /* the shadow ray also tests the
-                                       sphere it starts on */
-    RAYO_MISTAKE_NO_AMBIENT,        /* the ambient term left out */
-    RAYO_MISTAKE_AMBIENT_NOT_ABSORBED, /* EJ3: Ia ka added after the
-                                       product with the sphere's colour */
-    RAYO_MISTAKE_LIGHT_REVERSED,    /* L negated (towards the scene) */
-    RAYO_MISTAKE_NO_LN_TEST,        /* diffuse added where L.N < 0 too */
-    RAYO_MISTAKE_WRAPPED,           /* values past 255 wrap around 256
-                                       (unsigned char), not clamped */
-    RAYO_MISTAKE_FIRST_SPHERE,      /* the first sphere of the array the
-                                       ray hits, not the nearest */
-    RAYO_MISTAKE_FAR_ROOT,          /* t = beta + sqrt(delta) */
-    RAYO_MISTAKE_POINT_AS_DIRECTIONAL, /* EJ3: a point light's position
-                                       used as a direction */
-    RAYO_MISTAKE_KA_KD_SWAPPED,     /* EJ3 */
-    RAYO_MISTAKE_UNNORMALISED_NORMAL, /* N = P - C, not divided by r */
-    RAYO_MISTAKE_UNNORMALISED_LIGHT,  /* EJ3: position - P not
-                                       normalised */
-    RAYO_MISTAKE_COUNT
-} rayo_course_mistake;
-
-/* Variations that are not mistakes of shading. */
-typedef struct rayo_course_options {
-    rayo_course_mistake mistake;
-    /* Rows run from y = h/2 - 1 down to -h/2 (the statement's
-       y in [-alto/2, alto/2) read literally) instead of from h/2 down
-       to -h/2 + 1: the picture one row higher. */
-    int literal_rows;
-    /* The focal distance times this (1: the formula's; the course's own
-       references for EJ1 and EJ2 were made with about 1.0047). */
-    double focal_scale;
-} rayo_course_options;
-
-/* No mistake, the convention's rows, focal_scale 1. */
-RAYO_API void rayo_course_options_init(rayo_course_options *options);
-
-/* "ej1", "ej2", "ej3"; RAYO_COURSE_EXERCISES when name is none. */
-RAYO_API rayo_course_exercise rayo_course_find(const char *name);
-RAYO_API const char *rayo_course_name(rayo_course_exercise exercise);
-
-/* 1 when the mistake can happen in (and is modelled for) exercise. */
-RAYO_API int rayo_course_mistake_applies(rayo_course_exercise exercise,
-                                         rayo_course_mistake mistake);
-
-/* A short machine name: "no-shadows", "self-shadow", ... */
-RAYO_API const char *rayo_course_mistake_name(rayo_course_mistake mistake);
-
-/*
- * One sentence for a student (English, no newline, no quotes): what the
- * image shows and what to look at in the code, naming the formula or
- * the line of the statement, e.g. "there are no shadows: a light counts
- * only when no other sphere lies on the ray from P towards it (delta_i
- * in C = Ia ka + sum delta_i Ii kd (Li.N))".
- */
-RAYO_API const char *rayo_course_mistake_text(rayo_course_exercise exercise,
-                                              rayo_course_mistake mistake);
-
-/*
- * Renders the exercise's 640x480 image into a new image: RAYO_SAMPLE_BIT
- * for EJ1, gray U8 for EJ2, RGB U8 for EJ3 (maxval 255).  options may be
- * NULL (rayo_course_options_init's).  RAYO_ERR_INVALID for a mistake
- * that does not apply to the exercise.
- */
-RAYO_API rayo_status rayo_course_render(rayo_course_exercise exercise,
-                                        const rayo_course_options *options,
-                                        rayo_image *image, rayo_error *err);
-
-/*
- * The course's own reference image for exercise, built into the library:
- * the bytes of the PNG file the course published
- * (referencia-catedra-ejN.png), for rayo_image_read_memory.  *size (when
- * size is not NULL) receives their number.  NULL and 0 for an exercise
- * out of range.  The bytes are static: never freed, never changed.
- */
-RAYO_API const unsigned char *
-rayo_course_reference_png(rayo_course_exercise exercise, size_t *size);
-
-#ifdef __cplusplus
-}
-#endif
+#include "rayo/course/course.h"
+#include "rayo/course/course_scene.h"
 
 #endif

@@ -31,11 +31,11 @@ rayo_course_exercise rayo_picture_kind_exercise(rayo_picture_kind kind)
 {
     switch (kind) {
     case RAYO_PICTURE_BILEVEL:
-        return RAYO_COURSE_EJ1;
+        return rayo_course_of_kind(RAYO_COURSE_BILEVEL);
     case RAYO_PICTURE_GRAY:
-        return RAYO_COURSE_EJ2;
+        return rayo_course_of_kind(RAYO_COURSE_GRAY);
     case RAYO_PICTURE_COLOUR:
-        return RAYO_COURSE_EJ3;
+        return rayo_course_of_kind(RAYO_COURSE_COLOUR);
     case RAYO_PICTURE_UNKNOWN:
         break;
     }
@@ -86,7 +86,8 @@ void rayo_compare_note_kinds(rayo_compare_report *report,
     report->image_picture = RAYO_PICTURE_UNKNOWN;
     report->reference_is_course = reference_course < RAYO_COURSE_EXERCISES;
     report->reference_course =
-        report->reference_is_course ? reference_course : RAYO_COURSE_EJ1;
+        report->reference_is_course ? reference_course
+                                    : (rayo_course_exercise)0;
     if (report->image_lossy_levels > 0)
         return;
     report->reference_picture = rayo_picture_kind_of(reference);
@@ -106,19 +107,6 @@ static const char *kind_words(rayo_picture_kind kind)
     }
 }
 
-/* What the course's image of an exercise shows. */
-static const char *course_words(rayo_course_exercise exercise)
-{
-    switch (exercise) {
-    case RAYO_COURSE_EJ1:
-        return "exercise 1's black and white sphere";
-    case RAYO_COURSE_EJ2:
-        return "exercise 2's gray scene";
-    default:
-        return "exercise 3's colour scene";
-    }
-}
-
 static int kinds_differ(const rayo_compare_report *r)
 {
     return r->reference_picture != RAYO_PICTURE_UNKNOWN &&
@@ -128,17 +116,18 @@ static int kinds_differ(const rayo_compare_report *r)
 
 void cmp_put_kinds(cmp_sink *s, const rayo_compare_report *r)
 {
-    rayo_course_exercise guess;
+    const rayo_course_info *shown, *guess;
     if (!kinds_differ(r))
         return;
-    guess = rayo_picture_kind_exercise(r->image_picture);
-    if (r->reference_is_course && guess < RAYO_COURSE_EXERCISES)
-        cmp_put(s, "note: your image is %s; this reference is %s "
-                   "(course:ej%d): is your image exercise %d's? Compare it "
-                   "with course:ej%d\n",
-                kind_words(r->image_picture), course_words(r->reference_course),
-                (int)r->reference_course + 1, (int)guess + 1,
-                (int)guess + 1);
+    shown = rayo_course_info_of(r->reference_course);
+    guess = rayo_course_info_of(
+        rayo_picture_kind_exercise(r->image_picture));
+    if (r->reference_is_course && shown != NULL && guess != NULL)
+        cmp_put(s, "note: your image is %s; this reference is exercise "
+                   "%d's %s (course:%s): is your image exercise %d's? "
+                   "Compare it with course:%s\n",
+                kind_words(r->image_picture), shown->number, shown->picture,
+                shown->name, guess->number, guess->name);
     else
         cmp_put(s, "note: your image is %s and the reference is %s: are they "
                    "pictures of the same exercise? A black and white picture "

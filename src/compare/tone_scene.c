@@ -14,7 +14,8 @@
  * (II).  Where none of that fits, it says where the differences lie
  * (which sphere, which part of the background).  Not a fit of a scene
  * to a picture: the course's scene, read against the image, and only
- * for EJ2 (gray) and EJ3 (colour) at 640x480.
+ * for the exercises the student model covers (the registry says), at
+ * their size.
  */
 #include <math.h>
 #include <pthread.h>
@@ -142,21 +143,21 @@ static int unlit(const scene_work *w, size_t p)
 }
 
 /* The model's ambient value of channel c on sphere b: the byte of
-   Ia ka M (EJ3) or IA (EJ2), in float as the student's program. */
+   Ia ka M (colour) or IA (gray), in float as the student's program. */
 static int ambient_byte(const scene_work *w, int b, unsigned c)
 {
     const rayo_course_ball *ball = &w->data->balls[b];
     float a = (float)w->data->ambient[c], ka = (float)ball->ka;
     float m = (float)ball->color[c], v;
-    if (w->map->exercise == RAYO_COURSE_EJ2)
+    if (w->gray)
         return (int)a;
     v = a * ka;
     v = v * m;
     return (int)(255 * v);
 }
 
-/* The unlit pixels' most common value: the ambient term (EJ2: of every
-   sphere; EJ3: per channel, of the spheres whose ka M is 1 there). */
+/* The unlit pixels' most common value: the ambient term (gray: of every
+   sphere; colour: per channel, of the spheres whose ka M is 1 there). */
 static void find_ambient(scene_work *w)
 {
     const rayo_course_map *m = w->map;
@@ -171,7 +172,7 @@ static void find_ambient(scene_work *w)
             continue;
         ball = &w->data->balls[m->ball[p]];
         for (c = 0; c < w->n; c++)
-            if (m->exercise == RAYO_COURSE_EJ2 ||
+            if (w->gray ||
                 (ball->ka == 1 && ball->color[c] == 1)) {
                 hist[c][w->image->v[p * w->n + c]]++;
                 total[c]++;
@@ -186,7 +187,7 @@ static void find_ambient(scene_work *w)
             }
         if (total[c] < FEW || 2 * most[c] <= total[c])
             return; /* no one value: not a constant */
-        expected = m->exercise == RAYO_COURSE_EJ2
+        expected = w->gray
                        ? (int)w->data->ambient[c]
                        : (int)(255 * (float)w->data->ambient[c]);
         if (mode[c] - expected > (int)w->levels ||
@@ -199,8 +200,8 @@ static void find_ambient(scene_work *w)
             return;
         for (c = 0; c < w->n; c++) {
             f->expected[c] = w->data->ambient[c];
-            /* EJ3: the byte is the integer part of 255 Ia */
-            f->value[c] = m->exercise == RAYO_COURSE_EJ2
+            /* colour: the byte is the integer part of 255 Ia */
+            f->value[c] = w->gray
                               ? mode[c]
                               : (mode[c] + 0.5) / 255.0;
             f->pixels += most[c];
@@ -209,9 +210,9 @@ static void find_ambient(scene_work *w)
     }
 }
 
-/* EJ2's light intensity: the median of (v - IA) / (L.N) over lit pixels
-   the clamp does not reach, named when most agree on a value off the
-   statement's II. */
+/* The gray model's light intensity: the median of (v - IA) / (L.N)
+   over lit pixels the clamp does not reach, named when most agree on a
+   value off the statement's II. */
 static void find_light(scene_work *w)
 {
     const rayo_course_map *m = w->map;
@@ -380,16 +381,18 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
                             int course, rayo_compare_report *r,
                             int *named, rayo_error *err)
 {
+    const rayo_course_info *info =
+        rayo_course_info_of((rayo_course_exercise)course);
     scene_work w;
     rayo_status s;
     *named = 0;
     r->tone.findings = 0;
-    if (course != RAYO_COURSE_EJ2 && course != RAYO_COURSE_EJ3)
+    if (info == NULL || !info->student_model)
         return RAYO_OK;
-    if (ref->width != RAYO_COURSE_WIDTH || ref->height != RAYO_COURSE_HEIGHT ||
+    if (ref->width != info->width || ref->height != info->height ||
         image->width != ref->width || image->height != ref->height ||
         ref->channels != image->channels ||
-        ref->channels != (course == RAYO_COURSE_EJ2 ? 1u : 3u))
+        ref->channels != (info->kind == RAYO_COURSE_GRAY ? 1u : 3u))
         return RAYO_OK;
     memset(&w, 0, sizeof w);
     w.ref = ref;
@@ -397,6 +400,7 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     w.r = r;
     w.n = ref->channels;
     w.levels = r->tone.levels;
+    w.gray = tone_course_gray(course);
     w.data = rayo_course_data_of((rayo_course_exercise)course);
     if (w.data == NULL || w.data->ball_count > SCENE_BALLS)
         return RAYO_OK;
@@ -406,7 +410,7 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     if ((s = tone_scene_objects(&w, err)) != RAYO_OK)
         return s;
     find_ambient(&w);
-    if (course == RAYO_COURSE_EJ2 && !tone_scene_light_direction(&w))
+    if (w.gray && !tone_scene_light_direction(&w))
         find_light(&w);
     find_below(&w);
     *named = r->tone.findings > 0;
@@ -430,7 +434,7 @@ static int ambient_is_offset(const rayo_compare_report *r,
         if (f->kind != RAYO_FINDING_AMBIENT)
             return 0;
         for (c = 0; c < r->tone.channels; c++) {
-            double seen = r->tone.course == RAYO_COURSE_EJ2
+            double seen = tone_course_gray(r->tone.course)
                               ? f->value[c] - f->expected[c]
                               : 255 * (f->value[c] - f->expected[c]);
             if (fabs(seen - offset[c]) > r->tone.levels + 1)

@@ -1,12 +1,15 @@
 /*
- * tone_scene.h - what tone_scene.c and tone_scene_objects.c share: the
- * image being read against the course's scene, and the helpers that add
- * a finding to the report.  Private to those two files.
+ * tone_scene.h - what the tone_scene*.c files share: the image being
+ * read against the course's scene, whether the exercise's model is the
+ * gray one, and the helpers that add a finding to the report.  Private
+ * to those files.
  */
 #ifndef RAYO_TONE_SCENE_H
 #define RAYO_TONE_SCENE_H
 
-#include "../course/course_impl.h"
+#include "rayo/course/course.h"
+#include "rayo/course/course_scene.h"
+
 #include "tone_impl.h"
 
 /* At most as many spheres as the course's scenes have. */
@@ -20,6 +23,8 @@ typedef struct scene_work {
     const rayo_course_data *data;
     rayo_compare_report *r;
     unsigned n, levels;
+    int gray;               /* the gray model's levels (else colours in
+                               [0, 1]): the exercise's light model */
     int bg[3];              /* the image's background (find_background) */
     int gone[SCENE_BALLS];  /* a sphere found missing */
 } scene_work;
@@ -42,6 +47,15 @@ static inline int is_bg(const scene_work *w, const unsigned char *v)
     return near_value(v, w->bg, w->n, w->levels);
 }
 
+/* Whether the course exercise's light model gives levels (the gray
+   one) rather than colours in [0, 1]: the registry says. */
+static inline int tone_course_gray(int course)
+{
+    const rayo_course_info *info =
+        rayo_course_info_of((rayo_course_exercise)course);
+    return info != NULL && info->shade == RAYO_SHADE_COURSE_GRAY;
+}
+
 /* A new finding of kind in r (NULL when r has no room left). */
 rayo_compare_finding *tone_scene_add(rayo_compare_report *r,
                                      rayo_compare_finding_kind kind);
@@ -55,7 +69,7 @@ void tone_scene_ball_at(const scene_work *w, int b, rayo_compare_finding *f);
 void tone_scene_sizes(const scene_work *w, double *scene, double *seen,
                       int *off);
 
-/* tone_scene_light.c (EJ2): the light's direction the shading fits,
+/* tone_scene_light.c (the gray model): the light's direction the shading fits,
    named when it explains the lit pixels much better than the
    statement's; 1 when named. */
 int tone_scene_light_direction(scene_work *w);

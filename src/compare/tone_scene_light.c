@@ -1,13 +1,14 @@
 /*
- * tone_scene_light.c - where EJ2's light seems to come from, read from
- * the shading of a student's image: on the pixels of the spheres that
- * the light reaches (above IA, below the clamp at 255), I = IA + II
- * (L.N) is linear in L, so L is the least-squares fit of (I - IA) / II
- * against each pixel's normal (worked out here from the scene's sphere
- * and the pixel's ray).  It is named only when it explains those pixels
- * much better than the statement's light, and is a direction (about a
- * unit vector: a changed II is tone_scene.c's finding, not this one).
- * Not for EJ3, whose point lights this does not fit.
+ * tone_scene_light.c - where the gray scene's one light seems to come
+ * from, read from the shading of a student's image: on the pixels of
+ * the spheres that the light reaches (above IA, below the clamp at
+ * 255), I = IA + II (L.N) is linear in L, so L is the least-squares fit
+ * of (I - IA) / II against each pixel's normal (worked out here from
+ * the scene's sphere and the pixel's ray).  It is named only when it
+ * explains those pixels much better than the statement's light, and is
+ * a direction (about a unit vector: a changed II is tone_scene.c's
+ * finding, not this one).  Not for the colour scene, whose point lights
+ * this does not fit.
  */
 #include <math.h>
 
@@ -98,7 +99,7 @@ int tone_scene_light_direction(scene_work *w)
     double ii = w->data->lamps[0].color[0], fit = 0, stated = 0, len, dot;
     uint64_t total = 0, close = 0;
     unsigned r, c;
-    if (m->exercise != RAYO_COURSE_EJ2 || w->data->lamp_count != 1 ||
+    if (!w->gray || w->data->lamp_count != 1 ||
         w->data->lamps[0].point)
         return 0;
     for (i = 0; i < w->r->tone.findings; i++)

@@ -11,9 +11,10 @@
  */
 #include <math.h>
 
-#include "../course/course_impl.h"
+#include "rayo/course/course_scene.h"
+
 #include "report_sink.h"
-#include "tone_impl.h"
+#include "tone_scene.h"
 
 static const char *const kind_names[] = {
     "background", "added", "missing", "moved", "partly",
@@ -22,7 +23,7 @@ static const char *const kind_names[] = {
 
 static int gray_course(const rayo_compare_report *r)
 {
-    return r->tone.course == RAYO_COURSE_EJ2;
+    return tone_course_gray(r->tone.course);
 }
 
 static const rayo_course_ball *ball_of(const rayo_compare_report *r,

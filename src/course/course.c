@@ -1,6 +1,6 @@
 /*
- * course.c - the course's exercises by name, which mistakes each can
- * show, what to tell a student about each, and rayo_course_render, which
+ * course.c - the students' mistakes: which each exercise can show, what
+ * to tell a student about each, and rayo_course_render, which
  * sends the correct image to the renderer (course_exact.c) and a
  * mistake's to the student model (course_student.c).
  *
@@ -13,9 +13,6 @@
 #include <string.h>
 
 #include "course_impl.h"
-
-static const char *const exercise_names[RAYO_COURSE_EXERCISES] = {
-    "ej1", "ej2", "ej3"};
 
 static const char *const mistake_names[RAYO_MISTAKE_COUNT] = {
     "none",
@@ -132,32 +129,22 @@ static const char *const ej3_texts[RAYO_MISTAKE_COUNT] = {
         "must be a unit vector, both in (Li.N) and in the shadow ray",
 };
 
-static const char ej1_text[] =
-    "no mistake: a pixel is black exactly where its ray meets the sphere, "
-    "as intersecta_esfera tests with (C.d)^2 - C.C + R^2 >= 0";
+/* EJ1's only sentence: no mistake is modelled for the sphere. */
+static const char *const ej1_texts[RAYO_MISTAKE_COUNT] = {
+    [RAYO_MISTAKE_NONE] =
+        "no mistake: a pixel is black exactly where its ray meets the "
+        "sphere, as intersecta_esfera tests with (C.d)^2 - C.C + R^2 >= 0",
+};
+
+/* Each exercise's sentences, NULL where a mistake does not apply. */
+static const char *const *const texts[RAYO_COURSE_EXERCISES] = {
+    ej1_texts, ej2_texts, ej3_texts};
 
 void rayo_course_options_init(rayo_course_options *options)
 {
     options->mistake = RAYO_MISTAKE_NONE;
     options->literal_rows = 0;
     options->focal_scale = 1.0;
-}
-
-rayo_course_exercise rayo_course_find(const char *name)
-{
-    unsigned i;
-    if (name != NULL)
-        for (i = 0; i < RAYO_COURSE_EXERCISES; i++)
-            if (strcmp(exercise_names[i], name) == 0)
-                return (rayo_course_exercise)i;
-    return RAYO_COURSE_EXERCISES;
-}
-
-const char *rayo_course_name(rayo_course_exercise exercise)
-{
-    if ((unsigned)exercise >= RAYO_COURSE_EXERCISES)
-        return NULL;
-    return exercise_names[exercise];
 }
 
 const char *rayo_course_mistake_name(rayo_course_mistake mistake)
@@ -170,37 +157,16 @@ const char *rayo_course_mistake_name(rayo_course_mistake mistake)
 const char *rayo_course_mistake_text(rayo_course_exercise exercise,
                                      rayo_course_mistake mistake)
 {
-    if (!rayo_course_mistake_applies(exercise, mistake))
+    if ((unsigned)exercise >= RAYO_COURSE_EXERCISES ||
+        (unsigned)mistake >= RAYO_MISTAKE_COUNT)
         return NULL;
-    switch (exercise) {
-    case RAYO_COURSE_EJ1:
-        return ej1_text;
-    case RAYO_COURSE_EJ2:
-        return ej2_texts[mistake];
-    case RAYO_COURSE_EJ3:
-        return ej3_texts[mistake];
-    case RAYO_COURSE_EXERCISES:
-        break;
-    }
-    return NULL;
+    return texts[exercise][mistake];
 }
 
 int rayo_course_mistake_applies(rayo_course_exercise exercise,
                                 rayo_course_mistake mistake)
 {
-    if ((unsigned)mistake >= RAYO_MISTAKE_COUNT)
-        return 0;
-    switch (exercise) {
-    case RAYO_COURSE_EJ1:
-        return mistake == RAYO_MISTAKE_NONE;
-    case RAYO_COURSE_EJ2:
-        return ej2_texts[mistake] != NULL;
-    case RAYO_COURSE_EJ3:
-        return ej3_texts[mistake] != NULL;
-    case RAYO_COURSE_EXERCISES:
-        break;
-    }
-    return 0;
+    return rayo_course_mistake_text(exercise, mistake) != NULL;
 }
 
 rayo_status rayo_course_options_check(const rayo_course_options *options,
@@ -236,7 +202,7 @@ rayo_status rayo_course_render(rayo_course_exercise exercise,
                                   (int)options->mistake);
         return rayo_error_set(err, RAYO_ERR_INVALID,
                               "course: the mistake %s does not apply to %s",
-                              name, exercise_names[exercise]);
+                              name, rayo_course_name(exercise));
     }
     status = rayo_course_options_check(options, err);
     if (status != RAYO_OK)

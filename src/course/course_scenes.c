@@ -68,7 +68,7 @@ static const rayo_course_lamp ej3_lamps[] = {
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
-static const rayo_course_data course_data[RAYO_COURSE_EXERCISES] = {
+const rayo_course_data course_scene_data[RAYO_COURSE_EXERCISES] = {
     {ej1_balls, COUNT(ej1_balls), NULL, 0, {0, 0, 0}, RAYO_SHADE_HIT},
     {ej2_balls, COUNT(ej2_balls), ej2_lamps, COUNT(ej2_lamps), {5, 5, 5},
      RAYO_SHADE_COURSE_GRAY},
@@ -80,7 +80,7 @@ const rayo_course_data *rayo_course_data_of(rayo_course_exercise exercise)
 {
     if ((unsigned)exercise >= RAYO_COURSE_EXERCISES)
         return NULL;
-    return &course_data[exercise];
+    return &course_scene_data[exercise];
 }
 
 static rayo_vec3 vec_of(const double v[3])
@@ -88,8 +88,9 @@ static rayo_vec3 vec_of(const double v[3])
     return rayo_vec3_make(v[0], v[1], v[2]);
 }
 
+/* Ball b with its centre and radius from at[4] when at is not NULL. */
 static rayo_status add_ball(rayo_scene *scene, const rayo_course_ball *b,
-                            rayo_error *err)
+                            const double *at, rayo_error *err)
 {
     rayo_material material;
     unsigned id;
@@ -103,8 +104,9 @@ static rayo_status add_ball(rayo_scene *scene, const rayo_course_ball *b,
     status = rayo_scene_add_material(scene, &material, &id, err);
     if (status != RAYO_OK)
         return status;
-    return rayo_scene_add_sphere_material(scene, vec_of(b->center),
-                                          b->radius, id, err);
+    return rayo_scene_add_sphere_material(
+        scene, vec_of(at != NULL ? at : b->center),
+        at != NULL ? at[3] : b->radius, id, err);
 }
 
 static rayo_status add_lamp(rayo_scene *scene, const rayo_course_lamp *l,
@@ -118,13 +120,14 @@ static rayo_status add_lamp(rayo_scene *scene, const rayo_course_lamp *l,
 }
 
 static rayo_status fill(rayo_scene *scene, const rayo_course_data *data,
-                        rayo_error *err)
+                        const double *spheres, size_t count, rayo_error *err)
 {
     rayo_status status = RAYO_OK;
     size_t i;
     rayo_scene_set_ambient(scene, vec_of(data->ambient));
     for (i = 0; status == RAYO_OK && i < data->ball_count; i++)
-        status = add_ball(scene, &data->balls[i], err);
+        status = add_ball(scene, &data->balls[i],
+                          i < count ? spheres + 4 * i : NULL, err);
     for (i = 0; status == RAYO_OK && i < data->lamp_count; i++)
         status = add_lamp(scene, &data->lamps[i], err);
     if (status == RAYO_OK)
@@ -135,6 +138,13 @@ static rayo_status fill(rayo_scene *scene, const rayo_course_data *data,
 rayo_status rayo_course_scene_build(rayo_course_exercise exercise,
                                     rayo_scene **scene, rayo_error *err)
 {
+    return rayo_course_scene_build_moved(exercise, NULL, 0, scene, err);
+}
+
+rayo_status rayo_course_scene_build_moved(rayo_course_exercise exercise,
+                                          const double *spheres, size_t count,
+                                          rayo_scene **scene, rayo_error *err)
+{
     const rayo_course_data *data = rayo_course_data_of(exercise);
     rayo_status status;
     *scene = NULL;
@@ -144,7 +154,7 @@ rayo_status rayo_course_scene_build(rayo_course_exercise exercise,
                               (int)exercise);
     status = rayo_scene_create(scene, err);
     if (status == RAYO_OK)
-        status = fill(*scene, data, err);
+        status = fill(*scene, data, spheres, count, err);
     if (status != RAYO_OK) {
         rayo_scene_free(*scene);
         *scene = NULL;

@@ -1,59 +1,80 @@
 /*
- * exercise.c - the registry of the course's exercises that rayo can
- * grade: each with its name, the image its program must write and how
- * to make the reference that image is compared with.
+ * exercise.c - the exercises rayo can grade, as the course's registry
+ * (rayo/course/course.h) gives them: each with its name, title, the
+ * image its program must write and its reference, rayo's exact render
+ * of the exercise's scene.  Nothing here names an exercise: a new one is
+ * an entry in the course's registry (src/course/) and its functions'
+ * cases in grade's functions criterion.
  *
- * Adding an exercise is adding an entry here, its scene in src/course
- * and its functions' cases in a functions_ejN.c.  The registry is
- * constant data; nothing here runs a submission.
+ * The table is made from the registry once (pthread_once) and constant
+ * after; nothing here runs a submission.
  */
+#include <pthread.h>
 #include <stddef.h>
 #include <string.h>
 
-#include "rayo/seed.h"
+#include "rayo/course/course.h"
 
 #include "grade_impl.h"
 
-/* The exercises' references: rayo's exact render of each course scene
-   (course.h): EJ1 the seed sphere, black where a ray hits; EJ2 and EJ3
-   their lit scenes. */
-static rayo_status reference_ej1(rayo_image *image, rayo_error *err)
-{
-    return rayo_course_render(RAYO_COURSE_EJ1, NULL, image, err);
-}
+/* The reference of exercise number n: the course's exact render.  One
+   function an exercise, as rayo_grade_exercise's reference takes no
+   argument. */
+#define REFERENCE(n)                                                      \
+    static rayo_status reference_##n(rayo_image *image, rayo_error *err)  \
+    {                                                                     \
+        return rayo_course_render((rayo_course_exercise)(n), NULL, image, \
+                                  err);                                   \
+    }
+REFERENCE(0)
+REFERENCE(1)
+REFERENCE(2)
+REFERENCE(3)
+REFERENCE(4)
+REFERENCE(5)
+REFERENCE(6)
+REFERENCE(7)
 
-static rayo_status reference_ej2(rayo_image *image, rayo_error *err)
-{
-    return rayo_course_render(RAYO_COURSE_EJ2, NULL, image, err);
-}
+static rayo_status (*const references[])(rayo_image *, rayo_error *) = {
+    reference_0, reference_1, reference_2, reference_3,
+    reference_4, reference_5, reference_6, reference_7};
 
-static rayo_status reference_ej3(rayo_image *image, rayo_error *err)
-{
-    return rayo_course_render(RAYO_COURSE_EJ3, NULL, image, err);
-}
+/* The course's registry must fit the references above. */
+typedef char registry_fits[RAYO_COURSE_EXERCISES <=
+                                   sizeof references / sizeof references[0]
+                               ? 1
+                               : -1];
 
-static const rayo_grade_exercise exercises[] = {
-    {"ej1", "Ejercicio obligatorio 1: the sphere, plain PBM 640x480",
-     RAYO_SEED_WIDTH, RAYO_SEED_HEIGHT, '1', RAYO_COURSE_EJ1, reference_ej1},
-    {"ej2", "Ejercicio obligatorio 2: light and shadows in gray, plain PGM "
-            "640x480",
-     640, 480, '2', RAYO_COURSE_EJ2, reference_ej2},
-    {"ej3", "Ejercicio obligatorio 3: colour, structs and dynamic memory, "
-            "plain PPM 640x480",
-     640, 480, '3', RAYO_COURSE_EJ3, reference_ej3},
-};
+static rayo_grade_exercise exercises[RAYO_COURSE_EXERCISES];
+static pthread_once_t made = PTHREAD_ONCE_INIT;
+
+static void make(void)
+{
+    unsigned i;
+    for (i = 0; i < RAYO_COURSE_EXERCISES; i++) {
+        const rayo_course_info *c =
+            rayo_course_info_of((rayo_course_exercise)i);
+        rayo_grade_exercise *e = &exercises[i];
+        e->name = c->name;
+        e->title = c->title;
+        e->width = c->width;
+        e->height = c->height;
+        e->magic = c->magic;
+        e->course = c->exercise;
+        e->reference = references[i];
+    }
+}
 
 const rayo_grade_exercise *rayo_grade_exercises(size_t *count)
 {
-    *count = sizeof exercises / sizeof exercises[0];
+    pthread_once(&made, make);
+    *count = RAYO_COURSE_EXERCISES;
     return exercises;
 }
 
 const rayo_grade_exercise *rayo_grade_exercise_find(const char *name)
 {
-    size_t i;
-    for (i = 0; i < sizeof exercises / sizeof exercises[0]; i++)
-        if (strcmp(exercises[i].name, name) == 0)
-            return &exercises[i];
-    return NULL;
+    rayo_course_exercise e = rayo_course_find(name);
+    pthread_once(&made, make);
+    return e < RAYO_COURSE_EXERCISES ? &exercises[e] : NULL;
 }

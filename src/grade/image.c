@@ -247,10 +247,11 @@ static rayo_status judge_tone(rayo_grade_item *item,
     }
 }
 
-/* The course's references for EJ1 and EJ2 were drawn with a focal
-   distance about 0.47% longer than the formula's (z = 321.5 for 320,
-   pi computed as sqrt(9.81)): when the scale that best lays one picture
-   on the other is that, say which one follows the formula. */
+/* The course's own references of the sphere and the gray scene were
+   drawn with a focal distance about 0.47% longer than the formula's
+   (z = 321.5 for 320, pi computed as sqrt(9.81)): when the scale that
+   best lays one picture on the other is that, say which one follows
+   the formula. */
 #define COURSE_FOCAL_SCALE 1.0047
 
 static rayo_status say_focal(rayo_grade_item *item,
@@ -319,7 +320,8 @@ static rayo_status write_diff(rayo_grade_item *item, const char *path,
 
 /* The statement's y in [-alto/2, alto/2) read literally runs the rows
    from y = 239 down to -240, one row above the course's own code (240
-   down to -239); the course accepts that image.  When the image fails
+   down to -239); the course accepts that image for the exercises whose
+   registry entry says so (literal_rows).  When the image fails
    against rayo's render but matches the literal reading, it passes with
    a note saying which reading it follows. */
 static rayo_status try_literal_rows(grade_context *ctx,
@@ -329,13 +331,14 @@ static rayo_status try_literal_rows(grade_context *ctx,
                                     rayo_error *err)
 {
     const rayo_grade_exercise *e = ctx->options->exercise;
+    const rayo_course_info *info = rayo_course_info_of(e->course);
     rayo_course_options co;
     rayo_image other;
     rayo_compare_report lr;
     rayo_status status;
     *literal = 0;
-    if (ctx->options->reference != NULL || e->course == RAYO_COURSE_EJ3 ||
-        r->verdict != RAYO_VERDICT_INCONSISTENT)
+    if (ctx->options->reference != NULL || info == NULL ||
+        !info->literal_rows || r->verdict != RAYO_VERDICT_INCONSISTENT)
         return RAYO_OK;
     rayo_course_options_init(&co);
     co.literal_rows = 1;

@@ -1,8 +1,8 @@
 #!/bin/sh
 # exports.t - the shared library exports exactly the functions the public
-# headers declare (include/rayo/*.h, each marked RAYO_API): nothing a
-# header does not declare (a helper one source file shares with another
-# stays hidden), and every function a header declares.
+# headers declare (include/rayo/*.h and include/rayo/*/*.h, each marked
+# RAYO_API): nothing a header does not declare (a helper one source file
+# shares with another stays hidden), and every function a header declares.
 #
 # The headers' functions are listed by gcc's -aux-info over a file that
 # includes every public header; static inline ones are not exported and
@@ -18,7 +18,7 @@ if [ ! -e "$so" ] || ! command -v gcc >/dev/null 2>&1 ||
 fi
 
 inc="$RAYO_SOURCE/include"
-for h in "$inc"/rayo.h "$inc"/rayo/*.h; do
+for h in "$inc"/rayo.h "$inc"/rayo/*.h "$inc"/rayo/*/*.h; do
     echo "#include \"${h#"$inc"/}\""
 done >"$TMP/all.c"
 gcc -std=c99 -I"$inc" -fsyntax-only -aux-info "$TMP/aux" "$TMP/all.c" \

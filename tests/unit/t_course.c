@@ -1,7 +1,7 @@
 /*
- * t_course.c - the course's built-in exercises (course.h): names and
- * texts, the exact images against the renderer reached another way (the
- * example scene files), the two camera variations, and each modelled
+ * t_course.c - the course's built-in exercises (course.h): the registry,
+ * names and texts, the exact images against the renderer reached another
+ * way (examples/ejN.scene: one scene, byte for byte), the two camera variations, and each modelled
  * mistake against an independent computation of what it does.
  *
  * The reference here shares no code with src/course: it holds the
@@ -312,7 +312,7 @@ static void count_diff(const rayo_image *a, const rayo_image *b, long *any,
         }
 }
 
-static int render_file(const char *name, const char *text, rayo_image *img)
+static int render_file(const char *name, rayo_image *img)
 {
     const char *root = getenv("RAYO_SOURCE");
     char path[4096];
@@ -322,13 +322,8 @@ static int render_file(const char *name, const char *text, rayo_image *img)
     rayo_error err;
     rayo_status status;
     int good;
-    if (text != NULL) {
-        status = rayo_scene_file_parse(&file, name, text, strlen(text), &err);
-    } else {
-        snprintf(path, sizeof path, "%s/examples/%s", root ? root : ".",
-                 name);
-        status = rayo_scene_file_load(&file, path, &err);
-    }
+    snprintf(path, sizeof path, "%s/examples/%s", root ? root : ".", name);
+    status = rayo_scene_file_load(&file, path, &err);
     if (status != RAYO_OK) {
         printf("# %s\n", err.message);
         return 0;
@@ -344,6 +339,116 @@ static int render_file(const char *name, const char *text, rayo_image *img)
         printf("# %s\n", err.message);
     rayo_scene_file_free(&file);
     return good;
+}
+
+/* The registry: each exercise as the statements define it. */
+static void test_registry(void)
+{
+    static const rayo_course_kind kinds[] = {
+        RAYO_COURSE_BILEVEL, RAYO_COURSE_GRAY, RAYO_COURSE_COLOUR};
+    static const rayo_shade_mode shades[] = {
+        RAYO_SHADE_HIT, RAYO_SHADE_COURSE_GRAY, RAYO_SHADE_COURSE_COLOR};
+    static const int modelled[] = {0, 1, 1}, literal[] = {1, 1, 0};
+    int e;
+    is_int(RAYO_COURSE_EXERCISES, 3, "three exercises");
+    for (e = 0; e < RAYO_COURSE_EXERCISES; e++) {
+        rayo_course_exercise x = (rayo_course_exercise)e;
+        const rayo_course_info *info = rayo_course_info_of(x);
+        char name[8], title[32], reference[40];
+        if (info == NULL) {
+            ok(0, "exercise %d is in the registry", e);
+            continue;
+        }
+        snprintf(name, sizeof name, "ej%d", e + 1);
+        snprintf(title, sizeof title, "Ejercicio obligatorio %d: ", e + 1);
+        snprintf(reference, sizeof reference, "referencia-catedra-ej%d.png",
+                 e + 1);
+        ok(info->exercise == x && strcmp(info->name, name) == 0 &&
+               info->number == e + 1 &&
+               strncmp(info->title, title, strlen(title)) == 0 &&
+               strcmp(info->reference, reference) == 0,
+           "%s: its name, number, title and reference file", name);
+        ok(info->kind == kinds[e] && info->width == W && info->height == H &&
+               info->magic == '1' + e && info->shade == shades[e],
+           "%s: its kind, 640x480, P%c, its light model", name, '1' + e);
+        ok(info->scene == rayo_course_data_of(x) && info->scene != NULL &&
+               info->scene->shade == info->shade,
+           "%s: its scene is the one rayo_course_data_of gives", name);
+        ok(info->student_model == modelled[e] &&
+               info->literal_rows == literal[e],
+           "%s: student model %d, literal rows %d", name, modelled[e],
+           literal[e]);
+        is_int(rayo_course_of_kind(kinds[e]), e, "the %s picture is %s's",
+               e == 0 ? "bilevel" : e == 1 ? "gray" : "colour", name);
+    }
+    ok(rayo_course_info_of(RAYO_COURSE_EXERCISES) == NULL,
+       "no entry past the last exercise");
+    is_int(rayo_course_of_kind((rayo_course_kind)7), RAYO_COURSE_EXERCISES,
+           "no exercise of an unknown kind");
+}
+
+/* A 64x48 render of scene with exercise's shading into img. */
+static int render_small(rayo_course_exercise e, rayo_scene *scene,
+                        rayo_image *img)
+{
+    rayo_camera_spec spec;
+    rayo_camera camera;
+    rayo_render_options options;
+    rayo_error err;
+    rayo_camera_spec_init(&spec);
+    spec.width = 64;
+    spec.height = 48;
+    rayo_render_options_init(&options);
+    options.shade = rayo_course_info_of(e)->shade;
+    options.threads = 1;
+    return rayo_camera_spec_build(&spec, &camera, &err) == RAYO_OK &&
+           rayo_render_image(&camera, scene, &options, img, &err) == RAYO_OK;
+}
+
+/* The page's scene with spheres moved: the scene's own values give the
+   scene's bytes, a smaller sphere other bytes, and what is not moved
+   stays. */
+static void test_moved(void)
+{
+    const rayo_course_data *d = rayo_course_data_of(RAYO_COURSE_EJ2);
+    double at[4 * 8];
+    rayo_scene *scene = NULL;
+    rayo_image plain, same, moved;
+    rayo_error err;
+    size_t i;
+    int good;
+    ok(d->ball_count <= 8, "scene 2 has at most 8 spheres");
+    for (i = 0; i < d->ball_count; i++) {
+        memcpy(at + 4 * i, d->balls[i].center, sizeof d->balls[i].center);
+        at[4 * i + 3] = d->balls[i].radius;
+    }
+    good = rayo_course_scene_build(RAYO_COURSE_EJ2, &scene, &err) ==
+               RAYO_OK &&
+           render_small(RAYO_COURSE_EJ2, scene, &plain);
+    rayo_scene_free(scene);
+    good = good &&
+           rayo_course_scene_build_moved(RAYO_COURSE_EJ2, at, d->ball_count,
+                                         &scene, &err) == RAYO_OK &&
+           render_small(RAYO_COURSE_EJ2, scene, &same);
+    rayo_scene_free(scene);
+    at[4 * 1 + 3] = 0.2; /* the big sphere, 0.85, much smaller */
+    good = good &&
+           rayo_course_scene_build_moved(RAYO_COURSE_EJ2, at, 2, &scene,
+                                         &err) == RAYO_OK &&
+           render_small(RAYO_COURSE_EJ2, scene, &moved);
+    rayo_scene_free(scene);
+    ok(good, "scene 2 builds and renders with and without moved spheres");
+    if (!good)
+        return;
+    ok(same_bytes(&plain, &same), "its own values: the scene's bytes");
+    ok(!same_bytes(&plain, &moved), "a smaller sphere: other bytes");
+    is_int(rayo_course_scene_build_moved(RAYO_COURSE_EXERCISES, NULL, 0,
+                                         &scene, &err),
+           RAYO_ERR_INVALID, "no scene past the last exercise");
+    ok(scene == NULL, "and no scene made");
+    rayo_image_free(&plain);
+    rayo_image_free(&same);
+    rayo_image_free(&moved);
 }
 
 static void test_names(void)
@@ -435,28 +540,26 @@ static void test_names(void)
            RAYO_ERR_INVALID, "focal scale NaN refused");
 }
 
-/* NONE is the renderer's image, as the example scene files give it. */
+/* NONE is the renderer's image, as the example scene files give it:
+   examples/NAME.scene and the registry's scene are one scene. */
 static void test_exact(void)
 {
-    static const char ej1_text[] =
-        "shade hit\ncamera size 640 480 fov 90 origin 0 0 0\n"
-        "sphere 0.5 0.75 1.9 0.8\n";
-    const char *files[] = {NULL, "ej2.scene", "ej3.scene"};
     rayo_image mine, theirs;
     int e;
     for (e = 0; e < RAYO_COURSE_EXERCISES; e++) {
         rayo_course_exercise x = (rayo_course_exercise)e;
+        char file[64];
+        snprintf(file, sizeof file, "%s.scene", rayo_course_name(x));
         if (!render(x, RAYO_MISTAKE_NONE, 0, 1.0, &mine)) {
             ok(0, "%s renders", rayo_course_name(x));
             continue;
         }
-        if (render_file(files[e] ? files[e] : "ej1", files[e] ? NULL
-                        : ej1_text, &theirs)) {
-            ok(same_bytes(&mine, &theirs), "%s: byte for byte the scene "
-               "file's render", rayo_course_name(x));
+        if (render_file(file, &theirs)) {
+            ok(same_bytes(&mine, &theirs), "%s: byte for byte the render of "
+               "examples/%s", rayo_course_name(x), file);
             rayo_image_free(&theirs);
         } else {
-            ok(0, "%s's scene file renders", rayo_course_name(x));
+            ok(0, "examples/%s renders", file);
         }
         ok(mine.info.width == W && mine.info.height == H &&
                mine.info.sample ==
@@ -771,6 +874,8 @@ static void test_by_hand(void)
 
 int main(void)
 {
+    test_registry();
+    test_moved();
     test_names();
     test_exact();
     test_camera();

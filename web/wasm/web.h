@@ -46,6 +46,10 @@ const char *web_compare_verdict(void);
 const char *web_compare_diagnosis(void);
 const unsigned char *web_compare_diff(void);
 size_t web_compare_diff_size(void);
+int web_course_count(void);
+const char *web_course_name(int i);
+int web_course_number(int i);
+int web_course_of_kind(int bilevel, int channels);
 unsigned web_scene_spheres(int scene_id, unsigned i, double *out);
 web_image *web_render(int scene_id, const double *cam, const double *spheres,
                       size_t count);

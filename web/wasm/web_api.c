@@ -24,7 +24,8 @@
 
 #include "rayo/camera_spec.h"
 #include "rayo/compare.h"
-#include "rayo/course.h"
+#include "rayo/course/course.h"
+#include "rayo/course/course_scene.h"
 #include "rayo/limits.h"
 #include "rayo/reader.h"
 #include "rayo/render.h"
@@ -32,7 +33,6 @@
 #include "rayo/seed.h"
 #include "rayo/sphere.h"
 
-#include "../../src/course/course_impl.h"
 #include "../../src/formats/reader_impl.h"
 #include "web.h"
 
@@ -337,7 +337,7 @@ static char *format(size_t (*fn)(const rayo_compare_report *, char *,
  * web_compare_verdict, web_compare_diagnosis and web_compare_diff then
  * say more.  The image should come from web_read with clamp 1.
  */
-/* reference_course: the course's exercise (0, 1, 2) whose image the
+/* reference_course: the course's exercise (web_course_name) whose image the
    reference is, or -1 for a file of the student's; as the command, the
    report then notes pictures of different kinds. */
 WEB_EXPORT("web_compare")
@@ -407,7 +407,41 @@ WEB_EXPORT("web_compare_diff_size") size_t web_compare_diff_size(void)
     return compare_diff.size;
 }
 
-/* The course's exercise scene_id (0-2), NULL for the seed (-1). */
+/*
+ * The course's registry for the page, which asks it and never spells an
+ * exercise: how many there are, each one's name ("" past the last) and
+ * number, and the exercise whose pictures are of an image's kind
+ * (bilevel, else gray for one channel and colour for more), -1 none.
+ */
+WEB_EXPORT("web_course_count") int web_course_count(void)
+{
+    return RAYO_COURSE_EXERCISES;
+}
+
+WEB_EXPORT("web_course_name") const char *web_course_name(int i)
+{
+    const rayo_course_info *info =
+        i < 0 ? NULL : rayo_course_info_of((rayo_course_exercise)i);
+    return info != NULL ? info->name : "";
+}
+
+WEB_EXPORT("web_course_number") int web_course_number(int i)
+{
+    const rayo_course_info *info =
+        i < 0 ? NULL : rayo_course_info_of((rayo_course_exercise)i);
+    return info != NULL ? info->number : 0;
+}
+
+WEB_EXPORT("web_course_of_kind") int web_course_of_kind(int bilevel,
+                                                        int channels)
+{
+    rayo_course_exercise e = rayo_course_of_kind(
+        bilevel ? RAYO_COURSE_BILEVEL
+                : channels == 1 ? RAYO_COURSE_GRAY : RAYO_COURSE_COLOUR);
+    return e < RAYO_COURSE_EXERCISES ? (int)e : -1;
+}
+
+/* The course's exercise scene_id, NULL for the seed (-1). */
 static const rayo_course_data *course_data(int scene_id)
 {
     return scene_id < 0 ? NULL
@@ -430,51 +464,21 @@ static rayo_status build_scene(int scene_id, const double *spheres,
     *shade = RAYO_SHADE_HIT;
     if (scene_id >= 0 && data == NULL)
         return rayo_error_set(err, RAYO_ERR_INVALID, "no scene %d", scene_id);
+    if (data != NULL) {
+        /* the course's scene (one source: course_scenes.c), the balls'
+           centres and radii taken from spheres */
+        *shade = data->shade;
+        return rayo_course_scene_build_moved(
+            (rayo_course_exercise)scene_id, spheres, count, scene, err);
+    }
     if ((s = rayo_scene_create(scene, err)) != RAYO_OK)
         return s;
-    if (data == NULL) {
-        for (i = 0; s == RAYO_OK && i < count; i++)
-            s = rayo_scene_add_sphere(
-                *scene,
-                rayo_vec3_make(spheres[4 * i], spheres[4 * i + 1],
-                               spheres[4 * i + 2]),
-                spheres[4 * i + 3], err);
-        return s;
-    }
-    /* As rayo_course_scene_build fills it (course_scenes.c), the balls'
-       centres and radii taken from spheres. */
-    *shade = data->shade;
-    rayo_scene_set_ambient(*scene, rayo_vec3_make(data->ambient[0],
-                                                  data->ambient[1],
-                                                  data->ambient[2]));
-    for (i = 0; s == RAYO_OK && i < data->ball_count; i++) {
-        const rayo_course_ball *b = &data->balls[i];
-        const double *e = i < count ? spheres + 4 * i : NULL;
-        rayo_material m;
-        unsigned id;
-        memset(&m, 0, sizeof m);
-        m.color = rayo_vec3_make(b->color[0], b->color[1], b->color[2]);
-        m.ka = b->ka;
-        m.kd = b->kd;
-        s = rayo_scene_add_material(*scene, &m, &id, err);
-        if (s == RAYO_OK)
-            s = rayo_scene_add_sphere_material(
-                *scene,
-                e ? rayo_vec3_make(e[0], e[1], e[2])
-                  : rayo_vec3_make(b->center[0], b->center[1], b->center[2]),
-                e ? e[3] : b->radius, id, err);
-    }
-    for (i = 0; s == RAYO_OK && i < data->lamp_count; i++) {
-        const rayo_course_lamp *l = &data->lamps[i];
-        rayo_light light;
-        light.kind = l->point ? RAYO_LIGHT_POINT : RAYO_LIGHT_DIRECTIONAL;
-        light.vector =
-            rayo_vec3_make(l->vector[0], l->vector[1], l->vector[2]);
-        light.color = rayo_vec3_make(l->color[0], l->color[1], l->color[2]);
-        s = rayo_scene_add_light(*scene, &light, err);
-    }
-    if (s == RAYO_OK)
-        s = rayo_scene_prepare(*scene, err);
+    for (i = 0; s == RAYO_OK && i < count; i++)
+        s = rayo_scene_add_sphere(*scene,
+                                  rayo_vec3_make(spheres[4 * i],
+                                                 spheres[4 * i + 1],
+                                                 spheres[4 * i + 2]),
+                                  spheres[4 * i + 3], err);
     return s;
 }
 
