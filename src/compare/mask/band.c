@@ -26,7 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 /* Pixels of row (bits of one colour, padding clear) within the
  * tolerance of the other colour, from its exact distances. */

@@ -25,7 +25,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 /* A candidate "comes close": far mismatches cut twentyfold and IoU. */
 #define CLOSE_REDUCTION 20

@@ -21,8 +21,8 @@
 #include <string.h>
 #include <zlib.h>
 
-#include "compare_impl.h"
-#include "tone_impl.h"
+#include "../compare_impl.h"
+#include "../tone/tone_impl.h"
 
 enum { WHITE, BLACK, REFERENCE_ONLY, IMAGE_ONLY };
 

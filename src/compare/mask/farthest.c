@@ -28,7 +28,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 /* Rows between samples: fewer samples cost fewer full rows, but leave
  * looser bounds and more rows to compute exactly.  Instruction counts

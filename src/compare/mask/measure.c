@@ -25,7 +25,7 @@
 
 #include "rayo/render.h"
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 typedef struct measure_rows {
     unsigned char *img, *known, *diff, *tmp;

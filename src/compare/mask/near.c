@@ -21,7 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 struct cmp_near {
     const cmp_mask *ref;

@@ -25,7 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 struct cmp_outline {
     const cmp_mask *ref;

@@ -21,8 +21,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../course/course_impl.h"
-#include "compare_impl.h"
+#include "../../course/course_impl.h"
+#include "../compare_impl.h"
 #include "tone_impl.h"
 
 #define CLOSE_REDUCTION 20

@@ -6,7 +6,7 @@
 #ifndef RAYO_TONE_SCENE_H
 #define RAYO_TONE_SCENE_H
 
-#include "../course/course_impl.h"
+#include "../../course/course_impl.h"
 #include "tone_impl.h"
 
 /* At most as many spheres as the course's scenes have. */

@@ -11,8 +11,8 @@
  */
 #include <math.h>
 
-#include "../course/course_impl.h"
-#include "report_sink.h"
+#include "../../course/course_impl.h"
+#include "../report_sink.h"
 #include "tone_impl.h"
 
 static const char *const kind_names[] = {
