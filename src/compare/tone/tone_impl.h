@@ -1,27 +1,12 @@
 /*
  * tone_impl.h - the pieces of the tone comparison (gray and colour
  * images compared by value), shared by src/compare/tone/ and the top of
- * src/compare (which chooses the tone or the mask comparison) only.
- *
- *   tone.c          both images as 8-bit samples of the same channel
- *                   count, and rayo_compare_tone_images putting the
- *                   measurements, the verdict and the diagnosis together;
- *   tone_measure.c  one pass over the reference's frame with the image
- *                   undone by a candidate mistake (tone_undo.c):
- *                   statistics, and which differences an edge or the
- *                   shading explains (tone_explain.c);
- *   tone_scale.c    the scale that brings the image closest;
- *   tone_diagnose.c the candidate mistakes, tried one at a time;
- *   tone_scene*.c   against one of the course's scenes, what the image
- *                   differs from it in (a background, a sphere, a
- *                   constant), and its words;
- *   tone_diff.c     the difference picture;
- *   tone_format.c   the report as text and JSON;
- *   tone_cache.c    the reference's maps and the course's render, kept
- *                   for the next comparison.
- *
- * The mask comparison (compare_impl.h) shares none of this but the
- * report and its vocabulary.
+ * src/compare (which chooses the tone or the mask comparison) only: the
+ * images as 8-bit samples and their maps, a candidate mistake undone,
+ * the measuring pass and what explains a difference, the diagnosis, the
+ * difference picture, the report and the cache.  The mask comparison
+ * (compare_impl.h) shares none of this but the report and its
+ * vocabulary; docs/architecture.md lists the files of each group.
  */
 #ifndef RAYO_TONE_IMPL_H
 #define RAYO_TONE_IMPL_H
