@@ -284,10 +284,10 @@ static void *helper_main(void *argument)
 /*
  * Waits for a helper to end.  It usually ends a few microseconds after
  * the last band is delivered, and a joiner that sleeps meanwhile is woken
- * only when its CPU is (30 to 45 us of the P4 frame's 0.5 ms on the
- * development machine, against 2 to 6 us spinning): so, with a CPU per
- * thread, spin a while first, where the C library can tell without
- * waiting whether a thread has ended.
+ * only when its CPU is, far later than a spinning one sees it
+ * (docs/performance.md): so, with a CPU per thread, spin a while first,
+ * where the C library can tell without waiting whether a thread has
+ * ended.
  */
 static void join_helper(pthread_t thread, int spin)
 {
