@@ -324,7 +324,8 @@ static int grade_single(int argc, char **argv, int first, grade_request *req)
     char **sources = NULL;
     size_t count = 0;
     int exit_status, export_status;
-    int quiet = cli_grade_is_stdout(req->csv) || cli_grade_is_stdout(req->gradescope);
+    int quiet =
+        cli_grade_is_stdout(req->csv) || cli_grade_is_stdout(req->gradescope);
     rayo_status status = RAYO_OK;
     rayo_error_clear(&err);
     memset(&report, 0, sizeof report);
@@ -355,7 +356,8 @@ static int grade_single(int argc, char **argv, int first, grade_request *req)
     exit_status = rayo_grade_overall(&report) == RAYO_GRADE_PASS
                       ? CLI_EXIT_OK
                       : CLI_EXIT_FAILURE;
-    export_status = cli_grade_export_one(req, base_name(argv[first]), &report, &err);
+    export_status =
+        cli_grade_export_one(req, base_name(argv[first]), &report, &err);
     rayo_grade_report_free(&report);
     rayo_grade_paths_free(sources, count);
     req->options.sources = NULL;

@@ -249,8 +249,8 @@ int cli_grade_each(const char *dir, grade_request *req)
             fclose(p.csv);
             free(csv_text);
         } else {
-            int written = cli_grade_export_finish(p.csv, &csv_text, &csv_size,
-                                        req->csv);
+            int written =
+                cli_grade_export_finish(p.csv, &csv_text, &csv_size, req->csv);
             if (written != CLI_EXIT_OK)
                 status = written;
         }

@@ -63,8 +63,7 @@ int cli_grade_export_finish(FILE *stream, char **text, size_t *size,
 }
 
 int cli_grade_export_one(const grade_request *req, const char *student,
-                         const rayo_grade_report *report,
-                         const rayo_error *err)
+                         const rayo_grade_report *report, const rayo_error *err)
 {
     const char *message = report == NULL ? err->message : NULL;
     int status = CLI_EXIT_OK;
@@ -80,14 +79,15 @@ int cli_grade_export_one(const grade_request *req, const char *student,
     }
     if (req->gradescope != NULL && status == CLI_EXIT_OK) {
         char line[600];
-        if ((stream = cli_grade_export_start(&text, &size, req->gradescope)) == NULL)
+        if ((stream = cli_grade_export_start(&text, &size, req->gradescope)) ==
+            NULL)
             return CLI_EXIT_NOMEM;
-        cli_grade_gradescope(stream, report, message,
-                             report != NULL
-                                 ? cli_grade_isolation_line(report->isolation, line,
-                                                  sizeof line)
-                                 : NULL,
-                             &req->points);
+        cli_grade_gradescope(
+            stream, report, message,
+            report != NULL
+                ? cli_grade_isolation_line(report->isolation, line, sizeof line)
+                : NULL,
+            &req->points);
         status = cli_grade_export_finish(stream, &text, &size, req->gradescope);
     }
     return status;

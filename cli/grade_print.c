@@ -97,7 +97,8 @@ void cli_grade_print_text(FILE *out, const rayo_grade_report *r)
                                  ? "FAIL"
                                  : rayo_grade_result_name(item->result);
         fprintf(out, "%-10s %-8s ", rayo_grade_criterion_name(c), result);
-        cli_grade_print_escaped(out, item->line_count > 0 ? item->lines[0] : "", 0);
+        cli_grade_print_escaped(out, item->line_count > 0 ? item->lines[0] : "",
+                                0);
         fputc('\n', out);
         for (i = 1; i < item->line_count; i++) {
             fprintf(out, "%-19s ", "");

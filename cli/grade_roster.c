@@ -159,13 +159,15 @@ static rayo_status add_entry_file(builder *b, const entry *e,
             return roster_nomem(b);
         if (roster_taken(b, e->name, n)) {
             free(path);
-            return roster_leave_out(b, e->name, "a second submission of the same "
-                             "student");
+            return roster_leave_out(b, e->name,
+                                    "a second submission of the same "
+                                    "student");
         }
-        s = roster_add_student(b, e->name, n, n == strlen(e->name) - 4
-                                           ? CLI_LAYOUT_ZIP
-                                           : CLI_LAYOUT_MOODLE);
-        status = s != NULL ? roster_add_zip(b, s, path, e->name) : roster_nomem(b);
+        s = roster_add_student(b, e->name, n,
+                               n == strlen(e->name) - 4 ? CLI_LAYOUT_ZIP
+                                                        : CLI_LAYOUT_MOODLE);
+        status =
+            s != NULL ? roster_add_zip(b, s, path, e->name) : roster_nomem(b);
         free(path);
         return status;
     }
@@ -174,14 +176,16 @@ static rayo_status add_entry_file(builder *b, const entry *e,
         f.own = rest;
         f.fixed = 1;
     } else if (n > 0 || !cli_is_source_name(e->name)) {
-        return roster_leave_out(b, e->name, "not a C source, header or zip file");
+        return roster_leave_out(b, e->name,
+                                "not a C source, header or zip file");
     } else {
         size_t i;
         for (i = 0; e->name[i] != '\0' && !cli_flat_splits_at(e->name, i); i++)
             ;
         if (e->name[i] == '\0')
-            return roster_leave_out(b, e->name, "no student's name before the "
-                             "file's own name; expected NAME_main.c");
+            return roster_leave_out(b, e->name,
+                                    "no student's name before the "
+                                    "file's own name; expected NAME_main.c");
     }
     return push(flat, flat_count, sizeof f, &f) ? RAYO_OK : roster_nomem(b);
 }
@@ -224,19 +228,20 @@ rayo_status cli_roster_build(const char *dir, cli_roster *roster,
             status = roster_leave_out(&b, e->name, "not a file or a folder");
         } else if ((n = moodle_name(e->name, &kind, &rest)) > 0) {
             if (strncmp(kind, "file_", 5) != 0)
-                status = roster_leave_out(&b, e->name, "Moodle's online text, "
-                                   "not a file");
+                status = roster_leave_out(&b, e->name,
+                                          "Moodle's online text, "
+                                          "not a file");
             else if (roster_taken(&b, e->name, n))
-                status = roster_leave_out(&b, e->name, "a second submission of "
-                                   "the same student");
+                status = roster_leave_out(&b, e->name,
+                                          "a second submission of "
+                                          "the same student");
             else
                 status = roster_add_folder(&b, e->name, n, CLI_LAYOUT_MOODLE,
-                                    e->name);
+                                           e->name);
         } else {
-            status = roster_add_folder(&b, e->name + strip, strlen(e->name) - strip,
-                                strip > 0 ? CLI_LAYOUT_CLASSROOM
-                                          : CLI_LAYOUT_FOLDER,
-                                e->name);
+            status = roster_add_folder(
+                &b, e->name + strip, strlen(e->name) - strip,
+                strip > 0 ? CLI_LAYOUT_CLASSROOM : CLI_LAYOUT_FOLDER, e->name);
         }
     }
     if (status == RAYO_OK && flat_count > 0)

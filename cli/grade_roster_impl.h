@@ -36,7 +36,8 @@ static inline int is_c_name(const char *s)
 }
 
 /* Appends item (size bytes) to *array of *count, growing it. */
-static inline int push(void *array, size_t *count, size_t size, const void *item)
+static inline int push(void *array, size_t *count, size_t size,
+                       const void *item)
 {
     void **a = array;
     char *grown;

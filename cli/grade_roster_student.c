@@ -158,7 +158,8 @@ static rayo_status look_into(builder *b, const char *path, folder_look *l)
     memset(l, 0, sizeof *l);
     /* A folder that cannot be listed is graded all the same, and the
        grading says why it failed. */
-    if (roster_list_entries(path, &l->inside, &l->count, b->err) == RAYO_ERR_NOMEM)
+    if (roster_list_entries(path, &l->inside, &l->count, b->err) ==
+        RAYO_ERR_NOMEM)
         return RAYO_ERR_NOMEM;
     rayo_error_clear(b->err);
     for (i = 0; i < l->count; i++) {
@@ -214,7 +215,8 @@ rayo_status roster_add_folder(builder *b, const char *name, size_t n,
         char *zip_path = cli_path_join(path, l.zip);
         char *from = cli_path_join(shown_as, l.zip);
         status = zip_path != NULL && from != NULL
-                     ? roster_add_zip(b, s, zip_path, from) : roster_nomem(b);
+                     ? roster_add_zip(b, s, zip_path, from)
+                     : roster_nomem(b);
         free(zip_path);
         free(from);
     } else {
@@ -256,8 +258,9 @@ rayo_status roster_add_flat(builder *b, cli_flat_file *f, size_t count)
             for (j = k; j < count; j++)
                 if (f[j].own != NULL && f[j].prefix == f[k].prefix &&
                     strncmp(f[j].entry, f[k].entry, f[k].prefix) == 0) {
-                    if (roster_leave_out(b, f[j].entry, "the student has a "
-                                  "folder or zip file too") != RAYO_OK)
+                    if (roster_leave_out(b, f[j].entry,
+                                         "the student has a "
+                                         "folder or zip file too") != RAYO_OK)
                         return RAYO_ERR_NOMEM;
                     if (j != k)
                         f[j].own = NULL;
@@ -266,7 +269,8 @@ rayo_status roster_add_flat(builder *b, cli_flat_file *f, size_t count)
             continue;
         }
         s = roster_add_student(b, name, strlen(name),
-                        f[k].fixed ? CLI_LAYOUT_MOODLE : CLI_LAYOUT_FILES);
+                               f[k].fixed ? CLI_LAYOUT_MOODLE
+                                          : CLI_LAYOUT_FILES);
         free(name);
         if (s == NULL || (status = staged_folder(b, s)) != RAYO_OK)
             return s == NULL ? roster_nomem(b) : status;
@@ -280,13 +284,13 @@ rayo_status roster_add_flat(builder *b, cli_flat_file *f, size_t count)
             if (cli_copy_source(from, s->folder, f[j].own))
                 status = add_file(s, f[j].entry) ? RAYO_OK : roster_nomem(b);
             else
-                status = roster_leave_out(b, f[j].entry, errno == EEXIST
-                                   ? "the student has another file of "
-                                     "that own name"
-                                   : errno == EFBIG
-                                   ? "larger than 1 MiB; expected a C "
-                                     "source"
-                                   : "it could not be copied");
+                status = roster_leave_out(
+                    b, f[j].entry,
+                    errno == EEXIST  ? "the student has another file of "
+                                       "that own name"
+                    : errno == EFBIG ? "larger than 1 MiB; expected a C "
+                                       "source"
+                                     : "it could not be copied");
             free(from);
             if (j != k)
                 f[j].own = NULL;

@@ -60,7 +60,7 @@ rayo_status pnm_read_plain_pbm(pnm_reader *r, rayo_image *image,
         if (p == end) {
             if (!rayo_source_refill(src))
                 return pnm_found_error(r, RAYO_ERR_FORMAT, -1,
-                                   "more pixels (0 or 1)", err);
+                                       "more pixels (0 or 1)", err);
             continue;
         }
         while (p < end) {
@@ -103,7 +103,7 @@ rayo_status pnm_read_plain_pbm(pnm_reader *r, rayo_image *image,
             } else if (!pnm_is_space((int)c)) {
                 src->next = p;
                 return pnm_found_error(r, RAYO_ERR_FORMAT, (int)c,
-                                   "0 or 1 (a PBM pixel)", err);
+                                       "0 or 1 (a PBM pixel)", err);
             }
         }
         src->next = p;
@@ -186,7 +186,7 @@ static rayo_status read_plain_sample(pnm_reader *r, unsigned *value,
     if (c >= 0 && !pnm_is_space(c) && c != '#') {
         rayo_source_getc(r->src);
         return pnm_found_error(r, RAYO_ERR_FORMAT, c,
-                           "whitespace after a sample", err);
+                               "whitespace after a sample", err);
     }
     if (r->clamp && (negative || v > r->maxval))
         return clamped(r, negative, v, value);
