@@ -1,73 +1,20 @@
 /*
- * grade_roster.c - the students in a class's folder (see grade_roster.h).
- *
- * Each entry of the folder is looked at once, by its name and kind;
- * folders are graded where they are, and what must be copied (a zip's
- * sources, a student's flat files under their own names, so that
- * `#include "vector.h"` finds ana_vector.h) goes into one temporary
- * folder of rayo's, a subfolder per student, removed at the end.
- *
- * Flat files are grouped by grade_names.c's split of their names.  The
- * grouping is printed, so a teacher sees it before trusting the table.
+ * grade_roster.c - the students in a class's folder (see grade_roster.h):
+ * each entry of the folder looked at once, by its name and kind, and
+ * handed to the student it makes (grade_roster_student.c): a folder,
+ * Moodle's names, GitHub Classroom's shared prefix, a zip, or a flat
+ * file named by student (grouped by grade_names.c's split of the
+ * names).  The grouping is printed, so a teacher sees it before
+ * trusting the table; what fits no shape is left out with its reason.
  */
 #define _POSIX_C_SOURCE 200809L
 
-#include "grade_roster.h"
-
 #include <dirent.h>
 #include <errno.h>
-#include <fcntl.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include "cli.h"
-#include "grade_names.h"
-#include "grade_staging.h"
-#include "zip_read.h"
-
-#define SAFE_MAX 80
-
-/* ---- small helpers ---- */
-
-static char *copy_of(const char *s, size_t n)
-{
-    char *c = malloc(n + 1);
-    if (c != NULL) {
-        memcpy(c, s, n);
-        c[n] = '\0';
-    }
-    return c;
-}
-
-static int ends_with(const char *s, const char *end)
-{
-    size_t n = strlen(s), m = strlen(end);
-    return n > m && strcmp(s + n - m, end) == 0;
-}
-
-static int is_c_name(const char *s)
-{
-    return s[0] != '.' && ends_with(s, ".c");
-}
-
-/* Appends item (size bytes) to *array of *count, growing it. */
-static int push(void *array, size_t *count, size_t size, const void *item)
-{
-    void **a = array;
-    char *grown;
-    if (*count >= ((size_t)-1) / size / 2 - 1)
-        return 0;
-    grown = realloc(*a, (*count + 1) * size);
-    if (grown == NULL)
-        return 0;
-    memcpy(grown + *count * size, item, size);
-    *a = grown;
-    (*count)++;
-    return 1;
-}
+#include "grade_roster_impl.h"
 
 const char *cli_layout_name(cli_layout layout)
 {
@@ -81,14 +28,7 @@ const char *cli_layout_name(cli_layout layout)
     return "unknown";
 }
 
-/* ---- the folder's entries ---- */
-
-typedef struct entry {
-    char *name;
-    char kind; /* 'd' folder, 'f' regular file, 'o' anything else */
-} entry;
-
-static void entries_free(entry *list, size_t count)
+void roster_entries_free(entry *list, size_t count)
 {
     size_t i;
     for (i = 0; i < count; i++)
@@ -101,9 +41,8 @@ static int by_entry(const void *a, const void *b)
     return strcmp(((const entry *)a)->name, ((const entry *)b)->name);
 }
 
-/* The entries of dir but '.'-names, sorted, links followed. */
-static rayo_status list_entries(const char *dir, entry **list,
-                                size_t *count, rayo_error *err)
+rayo_status roster_list_entries(const char *dir, entry **list, size_t *count,
+                                rayo_error *err)
 {
     DIR *d = opendir(dir);
     struct dirent *de;
@@ -140,7 +79,7 @@ static rayo_status list_entries(const char *dir, entry **list,
     return RAYO_OK;
 nomem:
     closedir(d);
-    entries_free(*list, *count);
+    roster_entries_free(*list, *count);
     *list = NULL;
     *count = 0;
     return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory", dir);
@@ -164,238 +103,6 @@ static size_t moodle_name(const char *s, const char **kind,
     *rest = strchr(*kind, '_');
     *rest = *rest != NULL ? *rest + 1 : *kind + strlen(*kind);
     return (size_t)(digits - 1 - s);
-}
-
-/* ---- building ---- */
-
-typedef struct builder {
-    const char *dir;
-    cli_roster *roster;
-    rayo_error *err;
-} builder;
-
-static rayo_status nomem(builder *b)
-{
-    return rayo_error_set(b->err, RAYO_ERR_NOMEM, "%s: out of memory",
-                          b->dir);
-}
-
-static rayo_status leave_out(builder *b, const char *name, const char *why)
-{
-    cli_unplaced u;
-    u.name = strdup(name);
-    u.why = why;
-    if (u.name == NULL || !push(&b->roster->unplaced,
-                                &b->roster->unplaced_count, sizeof u, &u)) {
-        free(u.name);
-        return nomem(b);
-    }
-    return RAYO_OK;
-}
-
-/* Whether a student called name[0..n) is in the roster already. */
-static int taken(builder *b, const char *name, size_t n)
-{
-    size_t i;
-    for (i = 0; i < b->roster->count; i++)
-        if (strlen(b->roster->students[i].name) == n &&
-            strncmp(b->roster->students[i].name, name, n) == 0)
-            return 1;
-    return 0;
-}
-
-/* A new student called name (length n); NULL when out of memory. */
-static cli_student *add_student(builder *b, const char *name, size_t n,
-                                cli_layout layout)
-{
-    cli_roster *r = b->roster;
-    cli_student s;
-    char safe[SAFE_MAX + 16];
-    size_t i, suffix = 1;
-    memset(&s, 0, sizeof s);
-    s.layout = layout;
-    s.name = copy_of(name, n);
-    if (s.name == NULL)
-        return NULL;
-    cli_safe_file_name(s.name, safe, SAFE_MAX + 1);
-    for (i = 0; i < r->count; i++) {
-        if (strcmp(r->students[i].safe, safe) == 0) {
-            char base[SAFE_MAX + 1];
-            cli_safe_file_name(s.name, base, sizeof base);
-            snprintf(safe, sizeof safe, "%s-%zu", base, ++suffix);
-            i = (size_t)-1; /* look again from the start */
-        }
-    }
-    s.safe = strdup(safe);
-    if (s.safe == NULL || !push(&r->students, &r->count, sizeof s, &s)) {
-        free(s.name);
-        free(s.safe);
-        return NULL;
-    }
-    return &r->students[r->count - 1];
-}
-
-static int add_file(cli_student *s, const char *name)
-{
-    char *copy = strdup(name);
-    if (copy == NULL || !push(&s->files, &s->file_count, sizeof copy, &copy)) {
-        free(copy);
-        return 0;
-    }
-    return 1;
-}
-
-/* A new folder of rayo's for the student's copied files. */
-static rayo_status staged_folder(builder *b, cli_student *s)
-{
-    cli_roster *r = b->roster;
-    if (r->staging == NULL) {
-        const char *tmp = getenv("TMPDIR");
-        char *pattern = cli_path_join(
-            tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp", "rayo-class.XXXXXX");
-        if (pattern == NULL)
-            return nomem(b);
-        if (mkdtemp(pattern) == NULL) {
-            rayo_status status = rayo_error_set(b->err, RAYO_ERR_IO,
-                                                "%s: %s", pattern,
-                                                strerror(errno));
-            free(pattern);
-            return status;
-        }
-        r->staging = pattern;
-    }
-    s->folder = cli_path_join(r->staging, s->safe);
-    if (s->folder == NULL)
-        return nomem(b);
-    if (mkdir(s->folder, 0700) != 0)
-        return rayo_error_set(b->err, RAYO_ERR_IO, "%s: %s", s->folder,
-                              strerror(errno));
-    return RAYO_OK;
-}
-
-/* The zip at path (shown as from) copied out into the student's folder;
-   a refused zip is the student's problem, not the class's. */
-static rayo_status add_zip(builder *b, cli_student *s, const char *path,
-                           const char *from)
-{
-    char **names = NULL;
-    size_t count = 0, others = 0, i;
-    rayo_error zip_err;
-    rayo_status status = staged_folder(b, s);
-    if (status != RAYO_OK)
-        return status;
-    if (!add_file(s, from))
-        return nomem(b);
-    rayo_error_clear(&zip_err);
-    status = cli_zip_extract_sources(path, s->folder, &names, &count,
-                                     &others, &zip_err);
-    if (status == RAYO_ERR_NOMEM)
-        return nomem(b);
-    if (status != RAYO_OK) {
-        s->problem = strdup(zip_err.message);
-        return s->problem != NULL ? RAYO_OK : nomem(b);
-    }
-    for (i = 0; i < count && status == RAYO_OK; i++)
-        if (!add_file(s, names[i]))
-            status = nomem(b);
-    rayo_grade_paths_free(names, count);
-    return status;
-}
-
-/* What a student's folder holds: its entries, how many C sources and
-   zips, its one zip's and its one subfolder's names. */
-typedef struct folder_look {
-    entry *inside;
-    size_t count, sources, zips, folders;
-    const char *zip, *folder;
-} folder_look;
-
-static rayo_status look_into(builder *b, const char *path, folder_look *l)
-{
-    size_t i;
-    memset(l, 0, sizeof *l);
-    /* A folder that cannot be listed is graded all the same, and the
-       grading says why it failed. */
-    if (list_entries(path, &l->inside, &l->count, b->err) == RAYO_ERR_NOMEM)
-        return RAYO_ERR_NOMEM;
-    rayo_error_clear(b->err);
-    for (i = 0; i < l->count; i++) {
-        const char *name = l->inside[i].name;
-        if (l->inside[i].kind == 'd' && l->folders++ == 0)
-            l->folder = name;
-        if (l->inside[i].kind != 'f')
-            continue;
-        l->sources += is_c_name(name);
-        if (ends_with(name, ".zip") && l->zips++ == 0)
-            l->zip = name;
-    }
-    return RAYO_OK;
-}
-
-/* A folder of DIR: one student's, graded where it is, or its one zip,
-   or (twice at most) its one subfolder when it holds nothing else. */
-static rayo_status add_folder(builder *b, const char *name, size_t n,
-                              cli_layout layout, const char *entry_name)
-{
-    char *path = cli_path_join(b->dir, entry_name);
-    char *shown_as = strdup(entry_name);
-    folder_look l;
-    size_t i, depth;
-    cli_student *s = add_student(b, name, n, layout);
-    rayo_status status;
-    if (path == NULL || shown_as == NULL || s == NULL) {
-        free(path);
-        free(shown_as);
-        return nomem(b);
-    }
-    for (depth = 0;; depth++) {
-        char *deeper, *deeper_shown;
-        if (look_into(b, path, &l) != RAYO_OK) {
-            free(path);
-            free(shown_as);
-            return RAYO_ERR_NOMEM;
-        }
-        if (depth == 2 || l.sources > 0 || l.zips > 0 || l.folders != 1)
-            break;
-        deeper = cli_path_join(path, l.folder);
-        deeper_shown = cli_path_join(shown_as, l.folder);
-        entries_free(l.inside, l.count);
-        free(path);
-        free(shown_as);
-        path = deeper;
-        shown_as = deeper_shown;
-        if (path == NULL || shown_as == NULL) {
-            free(path);
-            free(shown_as);
-            return nomem(b);
-        }
-    }
-    if (l.sources == 0 && l.zips == 1) {
-        char *zip_path = cli_path_join(path, l.zip);
-        char *from = cli_path_join(shown_as, l.zip);
-        status = zip_path != NULL && from != NULL
-                     ? add_zip(b, s, zip_path, from) : nomem(b);
-        free(zip_path);
-        free(from);
-    } else {
-        status = RAYO_OK;
-        s->folder = path;
-        path = NULL;
-        for (i = 0; i < l.count && status == RAYO_OK; i++) {
-            char *file;
-            if (l.inside[i].kind != 'f' ||
-                !cli_is_source_name(l.inside[i].name))
-                continue;
-            file = cli_path_join(shown_as, l.inside[i].name);
-            if (file == NULL || !add_file(s, file))
-                status = nomem(b);
-            free(file);
-        }
-    }
-    entries_free(l.inside, l.count);
-    free(path);
-    free(shown_as);
-    return status;
 }
 
 /* The prefix, up to and with a '-', that every plain folder shares
@@ -430,75 +137,6 @@ static size_t classroom_prefix(const entry *list, size_t count)
     return shared;
 }
 
-/* ---- files named by student ---- */
-
-/* The flat files, grouped by name, copied under their own names. */
-static rayo_status add_flat(builder *b, cli_flat_file *f, size_t count)
-{
-    size_t k, j;
-    cli_flat_split(f, count);
-    for (k = 0; k < count; k++) {
-        cli_student *s;
-        char *name, *from;
-        rayo_status status = RAYO_OK;
-        if (f[k].own == NULL)
-            continue; /* already placed with an earlier file */
-        name = copy_of(f[k].entry, f[k].prefix);
-        if (name == NULL)
-            return nomem(b);
-        if (taken(b, name, strlen(name))) {
-            free(name);
-            for (j = k; j < count; j++)
-                if (f[j].own != NULL && f[j].prefix == f[k].prefix &&
-                    strncmp(f[j].entry, f[k].entry, f[k].prefix) == 0) {
-                    if (leave_out(b, f[j].entry, "the student has a "
-                                  "folder or zip file too") != RAYO_OK)
-                        return RAYO_ERR_NOMEM;
-                    if (j != k)
-                        f[j].own = NULL;
-                }
-            f[k].own = NULL;
-            continue;
-        }
-        s = add_student(b, name, strlen(name),
-                        f[k].fixed ? CLI_LAYOUT_MOODLE : CLI_LAYOUT_FILES);
-        free(name);
-        if (s == NULL || (status = staged_folder(b, s)) != RAYO_OK)
-            return s == NULL ? nomem(b) : status;
-        for (j = k; j < count && status == RAYO_OK; j++) {
-            if (f[j].own == NULL || f[j].prefix != f[k].prefix ||
-                strncmp(f[j].entry, f[k].entry, f[k].prefix) != 0)
-                continue;
-            from = cli_path_join(b->dir, f[j].entry);
-            if (from == NULL)
-                return nomem(b);
-            if (cli_copy_source(from, s->folder, f[j].own))
-                status = add_file(s, f[j].entry) ? RAYO_OK : nomem(b);
-            else
-                status = leave_out(b, f[j].entry, errno == EEXIST
-                                   ? "the student has another file of "
-                                     "that own name"
-                                   : errno == EFBIG
-                                   ? "larger than 1 MiB; expected a C "
-                                     "source"
-                                   : "it could not be copied");
-            free(from);
-            if (j != k)
-                f[j].own = NULL;
-        }
-        f[k].own = NULL;
-        if (status != RAYO_OK)
-            return status;
-        if (s->file_count == 0 &&
-            (s->problem = strdup("none of the student's files could be "
-                                 "copied")) == NULL)
-            return nomem(b);
-    }
-    return RAYO_OK;
-}
-
-/* ---- the class ---- */
-
 /* A file of DIR: a zip, a flat source, or left out. */
 static rayo_status add_entry_file(builder *b, const entry *e,
                                   cli_flat_file **flat,
@@ -510,7 +148,7 @@ static rayo_status add_entry_file(builder *b, const entry *e,
     memset(&f, 0, sizeof f);
     f.entry = e->name;
     if (n > 0 && strncmp(kind, "file_", 5) != 0)
-        return leave_out(b, e->name, "Moodle's online text, not a file");
+        return roster_leave_out(b, e->name, "Moodle's online text, not a file");
     if (ends_with(e->name, ".zip")) {
         char *path = cli_path_join(b->dir, e->name);
         cli_student *s;
@@ -518,16 +156,18 @@ static rayo_status add_entry_file(builder *b, const entry *e,
         if (n == 0)
             n = strlen(e->name) - 4;
         if (path == NULL)
-            return nomem(b);
-        if (taken(b, e->name, n)) {
+            return roster_nomem(b);
+        if (roster_taken(b, e->name, n)) {
             free(path);
-            return leave_out(b, e->name, "a second submission of the same "
-                             "student");
+            return roster_leave_out(b, e->name,
+                                    "a second submission of the same "
+                                    "student");
         }
-        s = add_student(b, e->name, n, n == strlen(e->name) - 4
-                                           ? CLI_LAYOUT_ZIP
-                                           : CLI_LAYOUT_MOODLE);
-        status = s != NULL ? add_zip(b, s, path, e->name) : nomem(b);
+        s = roster_add_student(b, e->name, n,
+                               n == strlen(e->name) - 4 ? CLI_LAYOUT_ZIP
+                                                        : CLI_LAYOUT_MOODLE);
+        status =
+            s != NULL ? roster_add_zip(b, s, path, e->name) : roster_nomem(b);
         free(path);
         return status;
     }
@@ -536,16 +176,18 @@ static rayo_status add_entry_file(builder *b, const entry *e,
         f.own = rest;
         f.fixed = 1;
     } else if (n > 0 || !cli_is_source_name(e->name)) {
-        return leave_out(b, e->name, "not a C source, header or zip file");
+        return roster_leave_out(b, e->name,
+                                "not a C source, header or zip file");
     } else {
         size_t i;
         for (i = 0; e->name[i] != '\0' && !cli_flat_splits_at(e->name, i); i++)
             ;
         if (e->name[i] == '\0')
-            return leave_out(b, e->name, "no student's name before the "
-                             "file's own name; expected NAME_main.c");
+            return roster_leave_out(b, e->name,
+                                    "no student's name before the "
+                                    "file's own name; expected NAME_main.c");
     }
-    return push(flat, flat_count, sizeof f, &f) ? RAYO_OK : nomem(b);
+    return push(flat, flat_count, sizeof f, &f) ? RAYO_OK : roster_nomem(b);
 }
 
 static int by_student(const void *a, const void *b)
@@ -572,7 +214,7 @@ rayo_status cli_roster_build(const char *dir, cli_roster *roster,
     b.dir = dir;
     b.roster = roster;
     b.err = err;
-    status = list_entries(dir, &list, &count, err);
+    status = roster_list_entries(dir, &list, &count, err);
     if (status != RAYO_OK)
         return status;
     strip = classroom_prefix(list, count);
@@ -583,28 +225,29 @@ rayo_status cli_roster_build(const char *dir, cli_roster *roster,
         if (e->kind == 'f') {
             status = add_entry_file(&b, e, &flat, &flat_count);
         } else if (e->kind != 'd') {
-            status = leave_out(&b, e->name, "not a file or a folder");
+            status = roster_leave_out(&b, e->name, "not a file or a folder");
         } else if ((n = moodle_name(e->name, &kind, &rest)) > 0) {
             if (strncmp(kind, "file_", 5) != 0)
-                status = leave_out(&b, e->name, "Moodle's online text, "
-                                   "not a file");
-            else if (taken(&b, e->name, n))
-                status = leave_out(&b, e->name, "a second submission of "
-                                   "the same student");
+                status = roster_leave_out(&b, e->name,
+                                          "Moodle's online text, "
+                                          "not a file");
+            else if (roster_taken(&b, e->name, n))
+                status = roster_leave_out(&b, e->name,
+                                          "a second submission of "
+                                          "the same student");
             else
-                status = add_folder(&b, e->name, n, CLI_LAYOUT_MOODLE,
-                                    e->name);
+                status = roster_add_folder(&b, e->name, n, CLI_LAYOUT_MOODLE,
+                                           e->name);
         } else {
-            status = add_folder(&b, e->name + strip, strlen(e->name) - strip,
-                                strip > 0 ? CLI_LAYOUT_CLASSROOM
-                                          : CLI_LAYOUT_FOLDER,
-                                e->name);
+            status = roster_add_folder(
+                &b, e->name + strip, strlen(e->name) - strip,
+                strip > 0 ? CLI_LAYOUT_CLASSROOM : CLI_LAYOUT_FOLDER, e->name);
         }
     }
     if (status == RAYO_OK && flat_count > 0)
-        status = add_flat(&b, flat, flat_count);
+        status = roster_add_flat(&b, flat, flat_count);
     free(flat);
-    entries_free(list, count);
+    roster_entries_free(list, count);
     if (status != RAYO_OK)
         return status;
     if (roster->count > 1)

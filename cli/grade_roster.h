@@ -1,9 +1,22 @@
 /*
  * grade_roster.h - who is in a class's folder, as teachers receive it:
  * `rayo grade --each DIR` finds the students in DIR whatever shape the
- * course's platform gave it, and says how it grouped them.
- *
- * Shapes, each entry of DIR on its own (docs/grading.md):
+ * course's platform gave it (a folder per student, Moodle's folders and
+ * flat downloads, GitHub Classroom's repositories, a zip per student, a
+ * flat folder of files named by student: below, and docs/grading.md),
+ * and says how it grouped them.  Files that fit none of these are listed
+ * with the reason, never dropped silently.  This file only finds and
+ * copies; it grades nothing and prints nothing.
+ */
+#ifndef RAYO_CLI_GRADE_ROSTER_H
+#define RAYO_CLI_GRADE_ROSTER_H
+
+#include <stddef.h>
+
+#include "rayo.h"
+
+/*
+ * Shapes, each entry of DIR on its own:
  *   - a folder per student (the name is the folder's);
  *   - Moodle's "Ana Pérez_12345_assignsubmission_file_/" folders, and
  *     its flat download "Ana Pérez_12345_assignsubmission_file_main.c";
@@ -13,16 +26,7 @@
  *     student's folder), its sources copied out (zip_read.h);
  *   - a flat folder of files named by student ("ana_main.c",
  *     "ana_vector.h", "beto-main.c").
- * Files that fit none of these are listed with the reason, never dropped
- * silently.  This file only finds and copies; it grades nothing and
- * prints nothing.
  */
-#ifndef RAYO_CLI_GRADE_ROSTER_H
-#define RAYO_CLI_GRADE_ROSTER_H
-
-#include <stddef.h>
-
-#include "rayo.h"
 
 typedef enum cli_layout {
     CLI_LAYOUT_FOLDER,    /* a folder named by the student */

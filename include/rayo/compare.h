@@ -2,9 +2,31 @@
  * compare.h - comparing a rendered image with a reference, and saying
  * what is wrong when they disagree.
  *
+ * Bilevel images are compared as black/white masks, laid on the
+ * reference's frame with their optical centres aligned; gray and colour
+ * images by value (a tone comparison).  The report gives measurements, a
+ * verdict (identical, consistent, inconsistent) and, for an inconsistent
+ * image, the one mistake that explains it when one fits.  Memory is a few
+ * bits a pixel: no full-size distance map.  Not an image-similarity metric
+ * for photographs (no PSNR, no SSIM).
+ */
+#ifndef RAYO_COMPARE_H
+#define RAYO_COMPARE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/course.h"
+#include "rayo/export.h"
+#include "rayo/image.h"
+#include "rayo/output.h"
+#include "rayo/reader.h"
+#include "rayo/status.h"
+
+/*
  * Both images become black/white masks (image_convert.h: gray and colour
- * are black below half their maximum).  The image is laid on the
- * reference's frame: pixel (i, j) of each is the point
+ * are black below half their maximum) when either is bilevel.  The image
+ * is laid on the reference's frame: pixel (i, j) of each is the point
  * x = i - floor(w/2), y = j - floor(h/2) of its own grid (camera.h), so
  * images of different sizes are aligned at their optical centres and the
  * part of the image outside the reference's frame is ignored.
@@ -33,22 +55,8 @@
  * sphere"), or a sphere somewhere else or of another size.
  *
  * Masks are packed bits and distances come from per-column lists of the
- * reference's colour changes, so memory is a few bits per pixel: no
- * full-size distance map.  Not an image-similarity metric for
- * photographs (no PSNR, no SSIM), not a tool for colour differences.
+ * reference's colour changes.
  */
-#ifndef RAYO_COMPARE_H
-#define RAYO_COMPARE_H
-
-#include <stddef.h>
-#include <stdint.h>
-
-#include "rayo/course.h"
-#include "rayo/export.h"
-#include "rayo/image.h"
-#include "rayo/output.h"
-#include "rayo/reader.h"
-#include "rayo/status.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -1,28 +1,15 @@
 /*
  * grade.h - checking a student's submission the way the course does:
- * it compiles with the course's flags, its three functions return the
- * right values, it runs to the end under limits, its output is strict
- * Netpbm of the right size, its image is consistent with the reference,
- * and valgrind finds no invalid access and no leak.
+ * it compiles with the course's flags, its functions return the right
+ * values, it runs to the end under limits, its output is strict Netpbm of
+ * the right size, its image is consistent with the reference, and
+ * valgrind finds no invalid access and no leak.
  *
  * The grader is library code: it never prints.  It fills a report, one
  * entry per criterion (pass, fail or skipped, with reason lines written
  * for the student), that the command turns into text or JSON.  Each
- * exercise of the course is an entry in a registry (rayo_grade_exercise)
- * with its name, image size and reference, so later exercises plug in.
- *
- * Isolation: by default the compiler, the functions' harness, the
- * program and valgrind all run inside a bubblewrap sandbox (new user,
- * PID, network, IPC and UTS namespaces; a read-only system; the
- * program's folder a size-limited tmpfs; no capabilities), under resource
- * limits (a cgroup per run, where one can be made, for the memory and
- * processes of the whole tree; setrlimit before exec: CPU time, address
- * space, file size, process count, descriptors) and a wall-clock
- * timeout measured by the grader; the report's isolation line says
- * which limits hold.  When
- * no sandbox can be made the report says so (rayo_grade_report.isolated,
- * .isolation) and the limits alone remain: they stop honest mistakes,
- * not code written to do harm (docs/grading.md).
+ * exercise of the course is an entry in a registry (rayo_grade_exercise).
+ * Every program runs isolated and under limits (below; docs/grading.md).
  */
 #ifndef RAYO_GRADE_H
 #define RAYO_GRADE_H
@@ -34,6 +21,20 @@
 #include "rayo/export.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
+
+/*
+ * Isolation: by default the compiler, the functions' harness, the
+ * program and valgrind all run inside a bubblewrap sandbox (new user,
+ * PID, network, IPC and UTS namespaces; a read-only system; the program's
+ * folder a size-limited tmpfs; no capabilities), under resource limits (a
+ * cgroup per run, where one can be made, for the memory and processes of
+ * the whole tree; setrlimit before exec: CPU time, address space, file
+ * size, process count, descriptors) and a wall-clock timeout measured by
+ * the grader; the report's isolation line says which limits hold.  When
+ * no sandbox can be made the report says so (rayo_grade_report.isolated,
+ * .isolation) and the limits alone remain: they stop honest mistakes, not
+ * code written to do harm.
+ */
 
 #ifdef __cplusplus
 extern "C" {

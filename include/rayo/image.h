@@ -1,16 +1,8 @@
 /*
  * image.h - one image type for bilevel, gray and colour pixels.
  *
- * An image is a header (rayo_image_info) and rows of samples.  Three sample
- * layouts cover every format rayo reads or writes:
- *
- *   RAYO_SAMPLE_BIT  one bit per pixel, 8 pixels a byte, most significant
- *                    bit first, 1 = black (PBM's meaning and raw layout);
- *                    channels = 1, maxval = 1.
- *   RAYO_SAMPLE_U8   one byte per sample, channels samples per pixel
- *                    (1 = gray, 3 = RGB), 0 = black, maxval = white.
- *   RAYO_SAMPLE_U16  like U8 with uint16_t samples in native byte order.
- *
+ * An image is a header (rayo_image_info) and rows of samples, in one of
+ * three layouts that cover every format rayo reads or writes (below).
  * The renderer produces rows in these layouts and the writers consume
  * them, so a frame never has to be whole in memory; rayo_image holds a
  * whole frame for the readers, compare, convert and view.
@@ -23,6 +15,17 @@
 
 #include "rayo/export.h"
 #include "rayo/status.h"
+
+/*
+ * The sample layouts:
+ *
+ *   RAYO_SAMPLE_BIT  one bit per pixel, 8 pixels a byte, most significant
+ *                    bit first, 1 = black (PBM's meaning and raw layout);
+ *                    channels = 1, maxval = 1.
+ *   RAYO_SAMPLE_U8   one byte per sample, channels samples per pixel
+ *                    (1 = gray, 3 = RGB), 0 = black, maxval = white.
+ *   RAYO_SAMPLE_U16  like U8 with uint16_t samples in native byte order.
+ */
 
 #ifdef __cplusplus
 extern "C" {

@@ -5,7 +5,19 @@
  * Writers take only the layouts their format holds (writer.h); these
  * functions make the others fit, and give compare its bilevel masks.
  * Every function allocates dst (free it with rayo_image_free), leaves src
- * untouched, and zeroes dst on failure.  Rules, with M = src's maxval:
+ * untouched, and zeroes dst on failure.  The rules, exact integer
+ * arithmetic each, are below.  Not a resampler, not a colour manager (no
+ * gamma), not dithering.
+ */
+#ifndef RAYO_IMAGE_CONVERT_H
+#define RAYO_IMAGE_CONVERT_H
+
+#include "rayo/export.h"
+#include "rayo/image.h"
+#include "rayo/status.h"
+
+/*
+ * Rules, with M = src's maxval:
  *
  *   to bit:   BIT is copied.  Gray is black (1) where 2 v < M; RGB is
  *             black where its luminance is under half the maximum,
@@ -18,15 +30,7 @@
  *   to rgb:   BIT becomes 8-bit RGB, maxval 255 (black 0,0,0, white
  *             255,255,255).  Gray is repeated in all three channels,
  *             same maxval.  RGB is copied.
- *
- * Not a resampler, not a colour manager (no gamma), not dithering.
  */
-#ifndef RAYO_IMAGE_CONVERT_H
-#define RAYO_IMAGE_CONVERT_H
-
-#include "rayo/export.h"
-#include "rayo/image.h"
-#include "rayo/status.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -4,21 +4,11 @@
  *
  * A mesh is a plain list of triangles, three corners each, with the
  * normal an STL file gives every facet (OBJ gives none that rayo uses).
- * The format comes from the content, never from the name: a binary STL
- * is 84 + 50 n bytes for its count n; a file that is not, and begins with
- * "solid", is ASCII STL; one whose first statement is an OBJ keyword (v,
- * f, o, g, #, ...) is OBJ.  A binary header may begin "solid" too: a
- * NUL byte in the first 84, which text never has, says binary.  What a
- * scene does with a mesh (placement, material, which normals shade it)
- * is scene.h's and scene_file.h's business.
- *
+ * The format comes from the content, never from the name (below).
  * Hostile files are refused before memory is asked for what they
- * promise: a binary STL whose count needs more bytes than the file has,
- * a count past RAYO_MAX_OBJECTS, a coordinate that is not a finite
- * number, an OBJ index out of range, a truncated record.  Memory grows
- * with what the file holds, never with what a header says.  Errors are
- * one line: "FILE: byte N: ..." for binary STL, "FILE:LINE: ..." for
- * text.
+ * promise; errors are one line, "FILE: byte N: ..." for binary STL,
+ * "FILE:LINE: ..." for text.  What a scene does with a mesh (placement,
+ * material, which normals shade it) is scene.h's and scene_file.h's.
  */
 #ifndef RAYO_MESH_H
 #define RAYO_MESH_H
@@ -28,6 +18,19 @@
 
 #include "rayo/export.h"
 #include "rayo/status.h"
+
+/*
+ * A binary STL is 84 + 50 n bytes for its count n; a file that is not,
+ * and begins with "solid", is ASCII STL; one whose first statement is an
+ * OBJ keyword (v, f, o, g, #, ...) is OBJ.  A binary header may begin
+ * "solid" too: a NUL byte in the first 84, which text never has, says
+ * binary.
+ *
+ * Refused: a binary STL whose count needs more bytes than the file has, a
+ * count past RAYO_MAX_OBJECTS, a coordinate that is not a finite number,
+ * an OBJ index out of range, a truncated record.  Memory grows with what
+ * the file holds, never with what a header says.
+ */
 
 #ifdef __cplusplus
 extern "C" {

@@ -4,26 +4,13 @@
  * exercises 2 and 3), that explains every deviation in the student's
  * terms.
  *
- * The readers (reader.h) are tolerant, as Netpbm's tools are, and stop
- * at the first error; this checker is the opposite: it holds the output
- * to the letter of the format and of the exercise (the magic in
- * capitals, width and height as two numbers separated by whitespace, the
- * exercise's size, for P2 and P3 a maximum value of 255, only digits
- * and whitespace in the raster, P2 and P3 samples whole numbers in
- * 0..255, exactly as many as the header promises), keeps going after a
- * mistake, and says what each one is: "a lowercase magic 'p1'", "the
- * dimensions written '640x480'", "640 pixels more than the header
- * promises: one row too many", "1 number above 255 ... not clamped".
- * Lines over 70 characters are a note ("note: ...", not counted as a
- * warning): Netpbm's own limit, which the statements and most viewers
- * ignore.
- *
- * It is not a reader for other formats: raw Netpbm, another plain
- * format than the one asked for, and PNG are named and refused, and the
- * caller may read them with rayo_image_read_memory.  The exceptions are
- * outputs that are evidently the format asked for under a wrong magic
- * (a P5 header over text numbers for P2, say): they are read as that
- * format, and the report says so.
+ * The readers (reader.h) are tolerant, as Netpbm's tools are, and stop at
+ * the first error; this checker is the opposite: it holds the output to
+ * the letter of the format and of the exercise, keeps going after a
+ * mistake, and says what each one is (below).  It is not a reader for
+ * other formats: raw Netpbm, another plain format than the one asked for,
+ * and PNG are named and refused, and the caller may read them with
+ * rayo_image_read_memory.
  */
 #ifndef RAYO_PBM_CHECK_H
 #define RAYO_PBM_CHECK_H
@@ -35,6 +22,23 @@
 #include "rayo/grade.h"
 #include "rayo/image.h"
 #include "rayo/status.h"
+
+/*
+ * The letter: the magic in capitals, width and height as two numbers
+ * separated by whitespace, the exercise's size, for P2 and P3 a maximum
+ * value of 255, only digits and whitespace in the raster, P2 and P3
+ * samples whole numbers in 0..255, exactly as many as the header
+ * promises.  Each deviation is named: "a lowercase magic 'p1'", "the
+ * dimensions written '640x480'", "640 pixels more than the header
+ * promises: one row too many", "1 number above 255 ... not clamped".
+ * Lines over 70 characters are a note ("note: ...", not counted as a
+ * warning): Netpbm's own limit, which the statements and most viewers
+ * ignore.
+ *
+ * Outputs that are evidently the format asked for under a wrong magic (a
+ * P5 header over text numbers for P2, say) are read as that format, and
+ * the report says so.
+ */
 
 #ifdef __cplusplus
 extern "C" {

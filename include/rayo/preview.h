@@ -3,9 +3,26 @@
  *
  * The image is shrunk, never enlarged, to fit a number of columns: it is
  * cut into a grid of sub-pixels, squares of s x s image pixels, and each
- * character cell shows a few of them.  Terminal cells are about twice as
- * tall as wide, and every style keeps the picture's proportions under
- * that assumption.  Four styles:
+ * character cell shows a few of them, in one of four styles (below).
+ * Terminal cells are about twice as tall as wide, and every style keeps
+ * the picture's proportions under that assumption.  The library returns
+ * the text; it never prints, and whether a terminal takes colour
+ * (COLORTERM, NO_COLOR, isatty) is the caller's question.  Not an image
+ * viewer (no enlarging, no dithering, no gamma: means are of the stored
+ * values).
+ */
+#ifndef RAYO_PREVIEW_H
+#define RAYO_PREVIEW_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/export.h"
+#include "rayo/image.h"
+#include "rayo/status.h"
+
+/*
+ * The styles:
  *
  *   RAYO_PREVIEW_BLOCKS   1 x 2 sub-pixels a cell: upper half, lower half
  *                         and full blocks (U+2580, U+2584, U+2588);
@@ -26,21 +43,7 @@
  * mean of the pixels it covers (a box filter; gray as gray, 16-bit and
  * any maxval scaled to 8 bits), in SGR escape sequences, each line ending
  * in ESC[0m.
- *
- * The library returns the text; it never prints, and it decides nothing
- * from the environment: whether a terminal takes colour (COLORTERM,
- * NO_COLOR, isatty) is the caller's question.  Not an image viewer (no
- * enlarging, no dithering, no gamma: means are of the stored values).
  */
-#ifndef RAYO_PREVIEW_H
-#define RAYO_PREVIEW_H
-
-#include <stddef.h>
-#include <stdint.h>
-
-#include "rayo/export.h"
-#include "rayo/image.h"
-#include "rayo/status.h"
 
 #ifdef __cplusplus
 extern "C" {

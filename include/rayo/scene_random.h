@@ -2,19 +2,12 @@
  * scene_random.h - seeded random scenes of many spheres, for benchmarks
  * and for testing the bounding volume hierarchy against brute force.
  *
- * The numbers come from a 64-bit linear congruential generator
- * (x' = 6364136223846793005 x + 1442695040888963407 mod 2^64, Knuth's
+ * The numbers come from a 64-bit linear congruential generator (Knuth's
  * MMIX constants), whose top 53 bits make a double in [0, 1): the same
- * seed gives the same scene on every machine.  Not for anything that
- * needs good randomness.
- *
- * Both layouts scale the radii with the count, so that 10 or 100000
- * spheres cover about the same share of the ground (field) or of the
- * default camera's view (cloud): a scene of ten and a scene of 100000 are
+ * seed gives the same scene on every machine.  Both layouts scale the
+ * radii with the count, so that a scene of ten and a scene of 100000 are
  * the same picture in coarse and fine grain, and their times per pixel
- * can be compared.  The default camera (origin, looking down +z) sees the
- * field as a band below the horizon; a camera at (0, 5, -10) looking at
- * (0, -1, 35) sees it fill most of the picture.
+ * can be compared.  Not for anything that needs good randomness.
  */
 #ifndef RAYO_SCENE_RANDOM_H
 #define RAYO_SCENE_RANDOM_H
@@ -25,6 +18,15 @@
 #include "rayo/export.h"
 #include "rayo/scene.h"
 #include "rayo/status.h"
+
+/*
+ * The generator: x' = 6364136223846793005 x + 1442695040888963407 mod
+ * 2^64.  10 or 100000 spheres cover about the same share of the ground
+ * (field) or of the default camera's view (cloud).  The default camera
+ * (origin, looking down +z) sees the field as a band below the horizon; a
+ * camera at (0, 5, -10) looking at (0, -1, 35) sees it fill most of the
+ * picture.
+ */
 
 #ifdef __cplusplus
 extern "C" {

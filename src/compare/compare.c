@@ -12,7 +12,7 @@
 #include "rayo/image_convert.h"
 
 #include "compare_impl.h"
-#include "tone_impl.h"
+#include "tone/tone_impl.h"
 
 rayo_status cmp_options_check(const rayo_compare_options *options,
                               rayo_error *err)

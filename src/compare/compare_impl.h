@@ -1,24 +1,10 @@
 /*
- * compare_impl.h - the pieces compare is built from, shared by the files
- * of src/compare and by no one else.
- *
- *   mask       a bilevel image as packed bits (1 = black), borrowed;
- *   transform  a candidate mistake undone: the image's row y as it would
- *              be in the reference's frame (flipped back, shifted back,
- *              rescaled, ...), with the pixels it cannot know marked;
- *   outline    the reference's colour changes, column by column, giving
- *              for any row the distance of each pixel to the nearest
- *              pixel of the other colour;
- *   near       which mismatches of a row lie within the tolerance of the
- *              outline, without their distances;
- *   band       how many pixels lie within the tolerance of the
- *              outline, which the mismatches of a consistent image
- *              may fill only in part;
- *   farthest   the largest distance of a mismatch, from bounds and the
- *              exact distances of the few that could be the largest;
- *   shape      the moments of a mask's black region and how ellipse-like
- *              it is;
- *   measure    one pass comparing the reference with a transformed image.
+ * compare_impl.h - the pieces the mask comparison (src/compare/mask/) is
+ * built from, shared by the files of src/compare and by no one else:
+ * masks of packed bits, a candidate mistake undone (transform), the
+ * reference's outline and each pixel's distance from it (outline, near,
+ * farthest, band), a black region's shape, and the measuring pass.
+ * docs/architecture.md lists the files of each group.
  */
 #ifndef RAYO_COMPARE_IMPL_H
 #define RAYO_COMPARE_IMPL_H

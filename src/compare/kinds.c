@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "report_sink.h"
-#include "tone_impl.h"
+#include "tone/tone_impl.h"
 
 rayo_picture_kind rayo_picture_kind_of(const rayo_image *image)
 {

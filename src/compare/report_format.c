@@ -13,7 +13,7 @@
 
 #include "compare_impl.h"
 #include "report_sink.h"
-#include "tone_impl.h"
+#include "tone/tone_impl.h"
 
 void cmp_put(cmp_sink *s, const char *format, ...)
 {

@@ -2,27 +2,14 @@
  * decimal.c - decimal numbers read exactly as strtod reads them
  * (decimal.h), fast.
  *
- * Why: strtod was a fifth of reading the 100,000-sphere field:
- * the field's numbers have 16 or 17 significant digits, where glibc's
- * strtod goes to multi-precision arithmetic.  Why exact: a word that is
- * a plain decimal number (sign, digits, one '.', exponent) with at most
- * 19 significant digits w and a decimal exponent q in [POW5_LO, POW5_HI]
- * is converted by the Eisel-Lemire algorithm (D. Lemire, "Number parsing
- * at a gigabyte per second", Software: Practice and Experience 51, 2021,
- * sections 5 and 6; the algorithm of Go's, Rust's and C++'s fast_float
- * readers): w, shifted so its top bit is set, is multiplied by a 128-bit
- * approximation of 5^q, and the top 54 bits of the product give the
- * correctly rounded double unless the product's low bits leave the
- * rounding undecided.  Those cases are detected (the second product's
- * all-ones low word, outside q in [-27, 55] where the table is exact; a
- * tie, which is only possible for q in [-4, 23], settled to even) and
- * anything else the algorithm does not claim - more digits, exponents
- * outside the table, underflow to subnormals - goes to strtod, so the
- * result is strtod's correctly rounded value in every case.  The
- * words accepted and refused are exactly the strtod path's: the fast path
- * only answers for words that fully match the grammar above, and those
- * strtod reads whole too.  tests/unit/t_scene_number.c compares both on
- * hundreds of thousands of random and edge-case words.
+ * Why: glibc's strtod goes to multi-precision arithmetic for numbers of 16
+ * or 17 significant digits, which large scene files are full of
+ * (docs/performance.md).  A plain decimal word with at most 19 significant
+ * digits and an exponent in the table's range is converted by the
+ * Eisel-Lemire algorithm; anything it does not claim goes to strtod, so
+ * the result is strtod's correctly rounded value in every case, and the
+ * words accepted and refused are exactly strtod's.  tests/unit/
+ * t_decimal.c compares both on hundreds of thousands of words.
  */
 #include "decimal.h"
 
@@ -30,6 +17,24 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+
+/*
+ * Why exact: a word that is a plain decimal number (sign, digits, one
+ * '.', exponent) with at most 19 significant digits w and a decimal
+ * exponent q in [POW5_LO, POW5_HI] is converted by the Eisel-Lemire
+ * algorithm (D. Lemire, "Number parsing at a gigabyte per second",
+ * Software: Practice and Experience 51, 2021, sections 5 and 6; the
+ * algorithm of Go's, Rust's and C++'s fast_float readers): w, shifted so
+ * its top bit is set, is multiplied by a 128-bit approximation of 5^q, and
+ * the top 54 bits of the product give the correctly rounded double unless
+ * the product's low bits leave the rounding undecided.  Those cases are
+ * detected (the second product's all-ones low word, outside q in [-27, 55]
+ * where the table is exact; a tie, which is only possible for q in
+ * [-4, 23], settled to even) and anything else the algorithm does not
+ * claim - more digits, exponents outside the table, underflow to
+ * subnormals - goes to strtod.  The fast path only answers for words that
+ * fully match the grammar above, and those strtod reads whole too.
+ */
 
 int decimal_read_strtod(const char *text, size_t length, double *value)
 {
@@ -58,6 +63,7 @@ int decimal_read_strtod(const char *text, size_t length, double *value)
 #define POW5_HI 50
 static const uint64_t pow5[POW5_HI - POW5_LO + 1][2] = {
 #include "decimal_table.h"
+
 };
 
 /* The 128-bit product of a and b. */

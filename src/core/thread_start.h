@@ -5,14 +5,11 @@
  * Left to itself, Linux often puts a new thread on the CPU of the thread
  * that creates it, even with another CPU idle, and there it waits until
  * the creator (working, never sleeping) is preempted or done: a helper
- * meant to share a job of a few milliseconds (a window of a scene file,
- * the copy of a hierarchy, a short frame) then shares nothing, and the
- * two take turns on one CPU (on the development machine half the
- * helpers of a half-millisecond frame rendered nothing; a scene file's
- * windows were read by the two threads in turn).  So a helper is created allowed only the
- * CPUs other than the caller's, and, once running there, is given back
- * all the CPUs the process may use.  Without glibc's affinity calls, or
- * when they fail, threads start wherever the system puts them.
+ * meant to share a job of a few milliseconds then shares nothing
+ * (docs/performance.md).  So a helper is created allowed only the CPUs
+ * other than the caller's, and, once running there, is given back all
+ * the CPUs the process may use.  Without glibc's affinity calls, or when
+ * they fail, threads start wherever the system puts them.
  */
 #ifndef RAYO_THREAD_START_H
 #define RAYO_THREAD_START_H

@@ -2,24 +2,25 @@
  * bmp_write.c - writing Windows BMP in the layout the course's TP1 asks
  * for: a 14-byte file header, a 40-byte BITMAPINFOHEADER with a positive
  * height (rows stored bottom up), no compression, image size and
- * resolutions 0, and rows padded with zero bytes to a multiple of 4.
- * Colour is 24 bits a pixel in B, G, R order, so a right TP1 program's
- * file and rayo's are the same bytes.  Bilevel and gray images, which
- * the course never wrote as BMP, take the format's palettes: 1 bit a
- * pixel (entry 0 white, 1 black: a PBM row's bits unchanged) and 8 bits
- * a pixel (entry i the gray i scaled from maxval to 255: lossless).
- * Samples over 8 bits are scaled to 0-255, rounded.
- *
- * Rows arrive top first and the file wants the bottom one first, so the
- * rows are kept, formatted, until the image is finished: a BMP costs its
- * whole raster in memory (3 bytes a pixel for colour), unlike the other
- * writers.
+ * resolutions 0, and rows padded with zero bytes to a multiple of 4;
+ * colour 24 bits a pixel in B, G, R order, so a right TP1 program's file
+ * and rayo's are the same bytes.  Rows arrive top first and the file
+ * wants the bottom one first, so a BMP costs its whole raster in memory
+ * (3 bytes a pixel for colour), unlike the other writers.
  */
 #include <stdlib.h>
 #include <string.h>
 
 #include "bmp_layout.h"
 #include "writer_impl.h"
+
+/*
+ * Bilevel and gray images, which the course never wrote as BMP, take the
+ * format's palettes: 1 bit a pixel (entry 0 white, 1 black: a PBM row's
+ * bits unchanged) and 8 bits a pixel (entry i the gray i scaled from
+ * maxval to 255: lossless).  Samples over 8 bits are scaled to 0-255,
+ * rounded.  The rows are kept, formatted, until the image is finished.
+ */
 
 typedef struct bmp_state {
     unsigned bits;          /* 1, 8 or 24 */

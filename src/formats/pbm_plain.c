@@ -3,23 +3,25 @@
  *
  * A formatted row has its newlines in the same places whatever the
  * pixels, so the formatter keeps the row spelled out all white and all
- * black.  Rows start as a copy of the white one: a block of rows at a
- * time, from a template of several white rows, because one long copy
- * costs less than many row-sized ones (the seed job's 480 rows of 650
- * bytes, copied alone: 6 us on the development machine; in blocks of
- * 12 rows: 4.4 us).  Each run of black pixels is then copied from the
- * black row, newlines included.  Rows that come as runs (row_runs.h: the
- * span renderer's, through render.c) need nothing more.  Rows that come
- * as bits are scanned for runs of black bytes (0xFF), eight bytes at a
- * time, and only the bytes that mix black and white are spelled out,
- * digit by digit.  Rendered rows are long runs of one colour, so a row
- * costs a few copies instead of one store per eight pixels; a row of
- * noise costs what spelling out every byte does.
+ * black.  Rows start as a copy of the white one, a block of rows at a
+ * time (one long copy costs less than many row-sized ones:
+ * docs/performance.md); each run of black pixels is then copied from the
+ * black row, newlines included.  Rendered rows are long runs of one
+ * colour, so a row costs a few copies instead of one store per eight
+ * pixels; a row of noise costs what spelling out every byte does.
  */
 #include "pbm_plain.h"
 
 #include <stdlib.h>
 #include <string.h>
+
+/*
+ * Rows that come as runs (row_runs.h: the span renderer's, through
+ * render.c) need nothing more than the copies.  Rows that come as bits
+ * are scanned for runs of black bytes (0xFF), eight bytes at a time, and
+ * only the bytes that mix black and white are spelled out, digit by
+ * digit.
+ */
 
 #define LINE_MAX_DIGITS 70
 /* The white template holds as many rows as fit here, and at least one. */

@@ -3,13 +3,26 @@
  *
  * libpng does the decoding (every colour type and bit depth, palettes,
  * interlacing); this file chooses libpng's transformations so that each
- * decoded row is in one of rayo's three layouts but for alpha (see
- * reader.h for the table), puts the row's pixels in place in the image
- * (compositing alpha over white, and spreading an interlaced pass's pixels
- * over their columns), and turns libpng's longjmp errors into one
- * rayo_error naming the file and the byte where reading stopped.  The
- * image is the only full-size buffer: rows are placed from libpng's row
- * buffer as they are decoded (a user transform, the last of libpng's
+ * decoded row is in one of rayo's three layouts but for alpha (reader.h),
+ * puts the row's pixels in place (compositing alpha over white, spreading
+ * an interlaced pass's pixels over their columns), and turns libpng's
+ * longjmp errors into one rayo_error naming the file and the byte where
+ * reading stopped.  Hostile files cost no more than their image (below).
+ * Not a writer (png_write.c) and not a colour manager: gamma and ICC
+ * chunks are ignored.
+ */
+#include <png.h>
+#include <setjmp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "png_chunks.h"
+#include "rayo/limits.h"
+#include "reader_impl.h"
+
+/*
+ * The image is the only full-size buffer: rows are placed from libpng's
+ * row buffer as they are decoded (a user transform, the last of libpng's
  * steps), so an interlaced 16-bit RGBA image needs its 6 bytes a pixel,
  * not 8 more for libpng's layout.
  *
@@ -21,18 +34,8 @@
  * so is a stream that ends before IEND.  Once the last row is decoded,
  * libpng is stopped: the rest of the file up to IEND is read by
  * png_chunks.c, which checks CRCs but inflates nothing, so a zlib bomb
- * after the image costs no more than reading it.  Not a writer
- * (png_write.c) and not a colour manager: gamma and ICC chunks are
- * ignored.
+ * after the image costs no more than reading it.
  */
-#include <png.h>
-#include <setjmp.h>
-#include <stdlib.h>
-#include <string.h>
-
-#include "png_chunks.h"
-#include "rayo/limits.h"
-#include "reader_impl.h"
 
 /*
  * Largest chunk libpng may allocate for: with every ancillary chunk but

@@ -4,10 +4,8 @@
  * Bilevel rows go out as 1-bit grayscale (libpng's invert_mono turns our
  * 1 = black into PNG's 0 = black); gray and RGB as 8 or 16 bits a sample,
  * scaled to the full range when the image's maxval is smaller.  Bilevel
- * rows are deflated with zlib's run-length strategy: on hit-mode frames
- * it measured 3 to 10 times faster than the default, at a size from 18%
- * smaller (the seed's sphere, 16384x12288) to 19% larger (3000 small
- * spheres); docs/performance.md.  libpng
+ * rows are deflated with zlib's run-length strategy, much faster on
+ * rendered frames at about the same size (docs/performance.md).  libpng
  * reports errors by longjmp; every entry point here sets a jump buffer,
  * and the message (or the output's own error) is kept in the state so the
  * caller gets one rayo_error like any other writer's.

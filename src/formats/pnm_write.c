@@ -7,14 +7,8 @@
  * characters (PBM digits unseparated, as Netpbm's own tools write them;
  * PGM and PPM samples separated by spaces).  Raw PBM rows are packed bits
  * with the padding bits of the last byte zero; raw samples are bytes, or
- * two bytes big-endian when maxval > 255.  Each row is formatted straight
- * into the output's buffer (rayo_output_reserve), or into a scratch
- * buffer when a row is larger than that; plain PBM rows come from
- * pbm_plain.c, as bits or, from render.c, as runs (writer_runs.h).  Raw
- * rows that need no change (bytes, or bits whose padding is already
- * zero) go to the output straight from the caller's memory, a whole
- * block of rows in one call; long stretches of white plain PBM rows
- * given as runs go to it by reference to the formatter's white rows.
+ * two bytes big-endian when maxval > 255.  Rows go to the output with as
+ * few copies as they allow (below).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,6 +17,17 @@
 #include "../io/output_reserve.h"
 #include "pbm_plain.h"
 #include "writer_impl.h"
+
+/*
+ * Each row is formatted straight into the output's buffer
+ * (rayo_output_reserve), or into a scratch buffer when a row is larger
+ * than that; plain PBM rows come from pbm_plain.c, as bits or, from
+ * render.c, as runs (writer_runs.h).  Raw rows that need no change
+ * (bytes, or bits whose padding is already zero) go to the output
+ * straight from the caller's memory, a whole block of rows in one call;
+ * long stretches of white plain PBM rows given as runs go to it by
+ * reference to the formatter's white rows.
+ */
 
 #define PLAIN_LINE_MAX 70
 

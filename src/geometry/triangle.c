@@ -3,23 +3,28 @@
  * normal and its validity test.
  *
  * The test is the one of Woop, Benthin and Wald ("Watertight
- * Ray/Triangle Intersection", JCGT 2013), in double precision.  The
- * corners are moved into a frame where the ray runs along +z from the
- * origin (a permutation of the axes and a shear), and the ray meets the
- * triangle where the three 2-D edge functions
- *     u = c_x b_y - c_y b_x,  v = a_x c_y - a_y c_x,  w = b_x a_y - b_y a_x
- * have one sign (zero counts as either: edges and corners are inside).
- * Why no ray slips between two triangles that share an edge: a corner's
- * sheared coordinates depend only on the corner and the ray, so both
- * triangles see the same numbers; the edge function of a shared edge is
- * the same difference of two products with its terms swapped, which
- * IEEE arithmetic negates exactly; and its sign is exact (see
- * edge_function).  So a ray through the shared edge is inside or on the
- * edge for at least one of the two.
+ * Ray/Triangle Intersection", JCGT 2013), in double precision: the
+ * corners moved into a frame where the ray runs along +z from the origin,
+ * and the ray meets the triangle where three 2-D edge functions have one
+ * sign (zero counts as either: edges and corners are inside).  No ray
+ * slips between two triangles that share an edge (why: below).
  */
 #include "rayo/triangle.h"
 
 #include <math.h>
+
+/*
+ * The frame is a permutation of the axes and a shear; the edge functions
+ * are
+ *     u = c_x b_y - c_y b_x,  v = a_x c_y - a_y c_x,  w = b_x a_y - b_y a_x.
+ * Why no ray slips between two triangles that share an edge: a corner's
+ * sheared coordinates depend only on the corner and the ray, so both
+ * triangles see the same numbers; the edge function of a shared edge is
+ * the same difference of two products with its terms swapped, which IEEE
+ * arithmetic negates exactly; and its sign is exact (see edge_function).
+ * So a ray through the shared edge is inside or on the edge for at least
+ * one of the two.
+ */
 
 /* Component k (0, 1, 2 for x, y, z) of v. */
 static double axis(rayo_vec3 v, int k)

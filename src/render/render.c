@@ -5,35 +5,9 @@
  * The frame is cut into bands of consecutive rows, each rendered into a
  * slot buffer and handed to the sink in order by the calling thread.  A
  * band's pixels depend only on its rows, never on which thread rendered
- * it, so the output is identical for any thread count.  With one thread
- * nothing is spawned.  With more, bands are first rendered and delivered
- * on the calling thread, and helpers start only once the frame, at the
- * pace of the bands done so far, would take SERIAL_BELOW_SECONDS or
- * more: the seed job takes a few tens of microseconds, less than waking
- * a second CPU costs.
- *
- * In parallel, the calling thread is one of the renderers: whenever the
- * next band in order is not ready, it claims and renders the next free
- * band itself, so it never idles while a helper is still starting, and a
- * frame of a millisecond still gains from a second CPU.  Each thread
- * renders into band buffers (slots) of its own, freed as their bands are
- * delivered, so no slot is ever written by two CPUs in turn.  A thread
- * with nothing to do spins briefly (a band is usually microseconds from
- * done) before it sleeps on the condition variable, and a thread that
- * changes the state wakes sleepers only when there are some: futex
- * wake-ups cost tens of microseconds on a virtual machine.  For the same
- * reason helpers are started on another CPU than the caller's
- * (thread_start.h), and the caller spins while they end (join_helper).
- *
- * A render stops within a ray of being asked (render_stop.h): the rows
- * poll the stop inside their bands, a band abandoned for it is never
- * delivered, and a render that ends early for any reason raises the
- * stop so its helpers drop their bands at once.
- *
- * Rows reach the sink as pixels, except for one shortcut of the
- * library's own: when the sink is rayo_writer_row_sink and its writer
- * takes runs (plain PBM, writer_runs.h), bands of the span path travel
- * as runs of black pixels, which that writer spells without scanning.
+ * it, so the output is identical for any thread count.  A render stops
+ * within a ray of being asked (render_stop.h).  Not the shading of a
+ * pixel (row_*.c, shade_*.c), nor the writing of rows (the sink's).
  */
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT, pthread_tryjoin_np */
 
@@ -52,6 +26,35 @@
 #include "../core/thread_start.h"
 #include "../formats/writer_runs.h"
 #include "row_plan.h"
+
+/*
+ * With one thread nothing is spawned.  With more, bands are first
+ * rendered and delivered on the calling thread, and helpers start only
+ * once the frame, at the pace of the bands done so far, would take
+ * SERIAL_BELOW_SECONDS or more: a frame as small as the seed job's costs
+ * less than waking a second CPU (docs/performance.md).
+ *
+ * In parallel, the calling thread is one of the renderers: whenever the
+ * next band in order is not ready, it claims and renders the next free
+ * band itself, so it never idles while a helper is still starting.  Each
+ * thread renders into band buffers (slots) of its own, freed as their
+ * bands are delivered, so no slot is ever written by two CPUs in turn.  A
+ * thread with nothing to do spins briefly (a band is usually close to
+ * done) before it sleeps on the condition variable, and a thread that
+ * changes the state wakes sleepers only when there are some: futex
+ * wake-ups are dear on a virtual machine.  For the same reason helpers
+ * are started on another CPU than the caller's (thread_start.h), and the
+ * caller spins while they end (join_helper).
+ *
+ * The rows poll the stop inside their bands, a band abandoned for it is
+ * never delivered, and a render that ends early for any reason raises the
+ * stop so its helpers drop their bands at once.
+ *
+ * Rows reach the sink as pixels, except for one shortcut of the
+ * library's own: when the sink is rayo_writer_row_sink and its writer
+ * takes runs (plain PBM, writer_runs.h), bands of the span path travel
+ * as runs of black pixels, which that writer spells without scanning.
+ */
 
 /* Bands aim at this many bytes, so sinks get large writes. */
 #define BAND_TARGET_BYTES (256u * 1024u)
@@ -281,10 +284,10 @@ static void *helper_main(void *argument)
 /*
  * Waits for a helper to end.  It usually ends a few microseconds after
  * the last band is delivered, and a joiner that sleeps meanwhile is woken
- * only when its CPU is (30 to 45 us of the P4 frame's 0.5 ms on the
- * development machine, against 2 to 6 us spinning): so, with a CPU per
- * thread, spin a while first, where the C library can tell without
- * waiting whether a thread has ended.
+ * only when its CPU is, far later than a spinning one sees it
+ * (docs/performance.md): so, with a CPU per thread, spin a while first,
+ * where the C library can tell without waiting whether a thread has
+ * ended.
  */
 static void join_helper(pthread_t thread, int spin)
 {

@@ -2,27 +2,31 @@
  * row_shaded.c - one row of pixels with N x N stratified samples each:
  * the loop behind every shading mode but one-ray hit renders (row.c).
  *
- * Sample (a, b) of pixel (i, j) is the image position
- *     (i + (a + 1/2) / N - 1/2,  j + (b + 1/2) / N - 1/2),
- * a and b from 0 to N - 1: the centres of an N x N grid over the pixel,
- * so N = 1 is exactly the pixel's own ray.  The samples' values are summed
- * in that fixed order and divided by N^2, so a pixel depends on nothing
- * but its position: the same bytes for any thread count.  The mean is
- * then turned into a sample of the mode's layout:
- *   hit           black when at least half the rays hit;
- *   course-gray   the integer part of the level (already clamped to 255);
- *   course-color, course-tp1
- *                 the integer part of 255 c (c already clamped to 1);
- *   phong         255 c rounded to the nearest level, c clamped to [0, 1].
- * It knows nothing of what a model computes; shade_*.c do.  Before each
- * ray it polls the render's stop (render_stop.h): one ray of the slowest
- * legal scene takes milliseconds, one pixel of 256 rays seconds.
+ * The samples are the centres of an N x N grid over the pixel (N = 1 is
+ * exactly the pixel's own ray), summed in a fixed order and divided by
+ * N^2, so a pixel depends on nothing but its position: the same bytes for
+ * any thread count.  The mean is then turned into a sample of the mode's
+ * layout (below).  It knows nothing of what a model computes; shade_*.c
+ * do.  Before each ray it polls the render's stop (render_stop.h): one ray
+ * of the slowest legal scene takes milliseconds, one pixel of 256 rays
+ * seconds.
  */
 #include <string.h>
 
 #include "shade.h"
 
 #include "../scene/query_packet.h"
+
+/*
+ * Sample (a, b) of pixel (i, j) is the image position
+ *     (i + (a + 1/2) / N - 1/2,  j + (b + 1/2) / N - 1/2),
+ * a and b from 0 to N - 1.  The mean becomes:
+ *   hit           black when at least half the rays hit;
+ *   course-gray   the integer part of the level (already clamped to 255);
+ *   course-color, course-tp1
+ *                 the integer part of 255 c (c already clamped to 1);
+ *   phong         255 c rounded to the nearest level, c clamped to [0, 1].
+ */
 
 static rayo_vec3 shade_one(const rayo_scene *scene,
                            const rayo_render_options *options,

@@ -1,7 +1,15 @@
 /*
  * shade_course_tp1.c - the course's TP1 model (trabajo-practico-1.md),
- * to the letter: Phong with the statement's exponent and its reflections.
- *
+ * to the letter: Phong with the statement's exponent, 10, and its
+ * reflections; the formula is below.  Each dot product that is negative
+ * zeroes its own term only, shadows are visibility only, depth 0 is the
+ * scene without reflections, and each channel above 1 becomes 1 at the
+ * end; the byte, the integer part of 255 c, is the row loop's job.  The
+ * shininess the scene gives a material is not used.
+ */
+#include "shade.h"
+
+/*
  * At the nearest hit P with unit normal N (turned towards the ray, as
  * the scene gives it), D the ray's direction, R = D - 2 N (D.N) and a
  * material (M, ka, kd, ks, kr):
@@ -12,13 +20,9 @@
  * shadows_to_light only up to a point light).  The colour is C (x) M,
  * and with depth left and kr > 0 the reflection is added:
  *     C' = C (x) M + kr I(P + eps R, R)        (or, tinted, (C + kr I) (x) M)
- * where I is this same model one bounce shallower; depth 0 is the scene
- * without reflections.  A ray that meets nothing gives the background
- * (black by default).  Each channel above 1 becomes 1 at the end; the
- * byte, the integer part of 255 c, is the row loop's job.  The shininess
- * the scene gives a material is not used: the statement's is 10.
+ * where I is this same model one bounce shallower.  A ray that meets
+ * nothing gives the background (black by default).
  */
-#include "shade.h"
 
 #define TP1_EXPONENT 10
 

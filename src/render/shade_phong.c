@@ -1,8 +1,16 @@
 /*
  * shade_phong.c - the general model: Phong's ambient, diffuse and
  * specular terms per light, shadows, and mirror reflections followed to
- * a depth limit (Whitted), for every kind of object.
- *
+ * a depth limit (Whitted), for every kind of object; the formula is
+ * below.  A ray that meets nothing brings back the background.  The
+ * reflected ray is followed only while depth lasts.  Values are not
+ * clamped here: the row loop clamps each channel to [0, 1].
+ */
+#include "shade.h"
+
+#include "../scene/query_packet.h"
+
+/*
  * At the nearest hit P, with N the unit normal turned to face the ray,
  * V = -d the direction back to the viewer and a material (M, ka, kd, ks,
  * shininess n, reflectivity r):
@@ -12,13 +20,8 @@
  * where Ri = 2 (Li.N) N - Li, (Ri.V) counts only when positive, and
  * delta_i = 1 when Li.N > 0 and nothing lies between P and the light (up
  * to a point light's distance; the whole half-line for a directional
- * light).  A ray that meets nothing brings back the background.  The
- * reflected ray is followed only while depth lasts.  Values are not
- * clamped here: the row loop clamps each channel to [0, 1].
+ * light).
  */
-#include "shade.h"
-
-#include "../scene/query_packet.h"
 
 /* Secondary rays start a little past their origin, against acne. */
 static double self_offset(rayo_vec3 p)

@@ -5,7 +5,7 @@
 # outline (the band is the whole frame), so only the chance test can
 # tell, and "fewer mismatches than chance" was a coin toss: noise has
 # chance's count on average, and half the seeds got under it.  The test
-# is now "at most half of chance" (src/compare/band.c), and a
+# is now "at most half of chance" (src/compare/mask/band.c), and a
 # diagnosis's candidate must pass it too, or the luckiest of the scales
 # searched was named ("scaled by 1.813").
 . "$(dirname "$0")/lib.sh"

@@ -2,7 +2,7 @@
  * compare_corpus_warm.c - the pairs of compare_corpus.sh compared in ONE
  * process, PASSES times over (text, JSON and a hash of the --diff PNG of
  * each on standard output), so that what the comparison's cache
- * (src/compare/tone_cache.c) keeps from one pair to the next can be seen
+ * (src/compare/tone/tone_cache.c) keeps from one pair to the next can be seen
  * to change no report: run it linked with a build that has the cache and
  * with one that has none (or compare its passes with each other), on
  * pairs.txt in order and shuffled.  Not part of `make check`:

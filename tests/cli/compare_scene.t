@@ -1,7 +1,7 @@
 #!/bin/sh
 # compare_scene.t - `rayo compare` against one of the course's scenes
 # names what a student's image differs in, in the statement's terms
-# (src/compare/tone_scene.c): the student-style programs of tests/grade
+# (src/compare/tone/tone_scene.c): the student-style programs of tests/grade
 # with one such mistake each (tests/grade/CORPUS.md) are compiled, run,
 # and compared with the course's reference; each gets the finding its
 # mistake deserves, with numbers worked out here from the statement (a

@@ -14,7 +14,7 @@
 #include "rayo.h"
 #include "tap.h"
 
-#include "../../src/compare/tone_impl.h"
+#include "../../src/compare/tone/tone_impl.h"
 
 static rayo_image gray(uint32_t w, uint32_t h, unsigned char fill)
 {

@@ -17,7 +17,7 @@
 #include "rayo.h"
 #include "tap.h"
 
-#include "../../src/compare/tone_impl.h"
+#include "../../src/compare/tone/tone_impl.h"
 
 /* A w x h tone image of `channels` with a smooth pattern and a disc. */
 static tone_image pattern(uint32_t w, uint32_t h, unsigned channels,

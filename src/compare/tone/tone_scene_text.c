@@ -13,7 +13,7 @@
 
 #include "rayo/course/course_scene.h"
 
-#include "report_sink.h"
+#include "../report_sink.h"
 #include "tone_scene.h"
 
 static const char *const kind_names[] = {

@@ -3,17 +3,26 @@
  * within the tolerance of a pixel of the other colour.
  *
  * Every mismatch within the tolerance lies in this band, and a picture
- * drawn a pixel or two apart (another focal distance, float instead of
- * double, off-by-one outlines) changes only a part of it: an outline
- * moved by d <= t pixels turns d of the 2t pixels across the band, at
- * most half where it is straight, a little more on the outside of a
- * curve (RAYO_COMPARE_BAND_SHARE).  The consistency rule (diagnose.c, docs/compare.md)
- * compares the mismatches with this count, so that an image whose
- * mismatches are near an outline only because the reference is all
- * outline (a checkerboard against its inverse) is not called
- * consistent.  Counted with near.c's dilations for small tolerances and
- * outline.c's exact distances beyond; a pass over the reference, made
- * only when every mismatch is within the tolerance.
+ * drawn a pixel or two apart changes only a part of it.  The consistency
+ * rule (diagnose.c, docs/compare.md) compares the mismatches with this
+ * count, and with what chance would give (cmp_chance_limit), so that an
+ * image whose mismatches are near an outline only because the reference
+ * is all outline (a checkerboard against its inverse, noise) is not
+ * called consistent.  Counted with near.c's dilations for small
+ * tolerances and outline.c's exact distances beyond.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "../compare_impl.h"
+
+/*
+ * A picture drawn a pixel or two apart (another focal distance, float
+ * instead of double, off-by-one outlines): an outline moved by d <= t
+ * pixels turns d of the 2t pixels across the band, at most half where it
+ * is straight, a little more on the outside of a curve
+ * (RAYO_COMPARE_BAND_SHARE).  The band is counted in a pass over the
+ * reference, made only when every mismatch is within the tolerance.
  *
  * Where the reference is noise or a checkerboard, the band is the whole
  * frame, and any unrelated image mismatches about half of it: the share
@@ -23,10 +32,6 @@
  * mismatches of an image with as many black pixels placed at random
  * (cmp_chance_limit; docs/compare.md has the bound on the luck left).
  */
-#include <stdlib.h>
-#include <string.h>
-
-#include "compare_impl.h"
 
 /* Pixels of row (bits of one colour, padding clear) within the
  * tolerance of the other colour, from its exact distances. */

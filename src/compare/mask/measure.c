@@ -4,19 +4,11 @@
  * disagreement, and each mismatch's distance from the reference's
  * outline.
  *
- * Rows are packed bits, so agreement is counted a byte at a time with
- * XOR, AND and OR; distances are computed only for rows that have
- * mismatches, and only for the colour those mismatches need.  With the
- * usual small tolerances no mismatch needs its own distance to be
- * counted near or far (near.c tests whole words of a row at once), and
- * only those that could be the farthest get an exact distance
- * (farthest.c); larger tolerances take every mismatch's exact distance
- * from the outline (outline.c).  Large frames are cut into bands of rows
- * measured by one thread each (one per CPU), each with its own cursors on
- * the outline; the counts are summed afterwards (the largest distance
- * is the largest of the bands'), so the result does not depend on the
- * number of threads.
- * The verdict and the diagnosis are not made here.
+ * Rows are packed bits, so agreement is counted a byte at a time; exact
+ * distances are computed only where they are needed (below).  Large
+ * frames are cut into bands of rows measured by one thread each, whose
+ * counts are summed afterwards, so the result does not depend on the
+ * number of threads.  The verdict and the diagnosis are not made here.
  */
 #include <math.h>
 #include <pthread.h>
@@ -25,7 +17,19 @@
 
 #include "rayo/render.h"
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
+
+/*
+ * Agreement is counted with XOR, AND and OR; distances are computed only
+ * for rows that have mismatches, and only for the colour those mismatches
+ * need.  With the usual small tolerances no mismatch needs its own
+ * distance to be counted near or far (near.c tests whole words of a row
+ * at once), and only those that could be the farthest get an exact
+ * distance (farthest.c); larger tolerances take every mismatch's exact
+ * distance from the outline (outline.c).  Each band (one per CPU) has its
+ * own cursors on the outline; the largest distance is the largest of the
+ * bands'.
+ */
 
 typedef struct measure_rows {
     unsigned char *img, *known, *diff, *tmp;

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 /* 1 black, 0 white, -1 outside the image. */
 static int image_bit(const cmp_mask *image, int64_t i, int64_t j)

@@ -18,7 +18,7 @@
 #include "rayo/output.h"
 #include "rayo/reader.h"
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 /* tan(45 rad) / tan(45 deg): how much bigger the focal distance is
    when FOV is given to tan() in degrees: the sphere looks this much

@@ -8,7 +8,7 @@
 #ifndef RAYO_TONE_CHOICE_H
 #define RAYO_TONE_CHOICE_H
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 #include "tone_impl.h"
 
 /* A candidate is named when it leaves at most this fraction of the

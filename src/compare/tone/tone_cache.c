@@ -2,26 +2,35 @@
  * tone_cache.c - the tone images a process compares against again and
  * again, kept with their maps: the page (web/) and `rayo grade --each`
  * compare many images with the same reference, and every gray or colour
- * comparison of a 640x480 reference renders the course's scene to see
- * whether the reference shows it.  Without a cache each comparison
- * renders that scene again and makes the same edge and window maps
- * (tone_image_find_edges) of the reference and of the render, and the
- * difference picture makes the reference's once more.
+ * comparison of a 640x480 reference renders the course's scene.  Without
+ * it each comparison renders that scene again and makes the same edge and
+ * window maps (tone_image_find_edges) once more.
  *
+ * A hit is the very maps or render a comparison would make; callers get
+ * copies, one lock guards the entries, and the cache is bounded (below).
+ * Should memory run short it keeps nothing and the comparison makes what
+ * it needs itself.
+ */
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tone_impl.h"
+
+/*
  * An entry is a copy of a tone image (its samples, and its maps when
- * they were made) with, for the course's render, the exercise it is,
- * and for a reference, which course scene it shows once that was found.
- * Maps are found by the samples themselves (size, channels and every
- * byte compared, and the radius and levels they were made for), so a
- * hit is the very maps tone_image_find_edges would make; the course's
+ * they were made) with, for the course's render, the exercise it is, and
+ * for a reference, which course scene it shows once that was found.  Maps
+ * are found by the samples themselves (size, channels and every byte
+ * compared, and the radius and levels they were made for); the course's
  * render by its exercise and channels (rayo_course_render with the
  * default options: the same image every time).  Callers get copies, so
- * nothing they hold changes under them; one lock guards the entries
- * (threads of `rayo grade -j`), held only to look up and copy, never
- * while maps are made.  Bounded: at most CACHE_ENTRIES entries, an
- * image of more than CACHE_ENTRY_BYTES with its maps is never kept, the
- * least recently used entry goes first.  Should memory run short the
- * cache keeps nothing and the comparison makes what it needs itself.
+ * nothing they hold changes under them; the lock (threads of `rayo grade
+ * -j`) is held only to look up and copy, never while maps are made.
+ * Bounded: at most CACHE_ENTRIES entries, an image of more than
+ * CACHE_ENTRY_BYTES with its maps is never kept, the least recently used
+ * entry goes first.
+ *
  * The student model's render of each of the course's mistakes is kept
  * apart, as far down as a comparison made it (tone_diagnose.c renders a
  * mistake a band of rows at a time and stops once it is ruled out): a
@@ -30,11 +39,6 @@
  * reachable until rayo_compare_release_cache (which the command calls
  * before it exits) or the process's end.
  */
-#include <pthread.h>
-#include <stdlib.h>
-#include <string.h>
-
-#include "tone_impl.h"
 
 #define CACHE_ENTRIES 4
 /* 640 x 480 RGB with its maps is about 3.4 MB. */

@@ -2,30 +2,30 @@
  * diagnose.c - the verdict, and for an inconsistent image the mistake
  * that explains it.
  *
- * Every candidate mistake is tried the same way: undo it on the image
- * (transform.c) and compare again.  A candidate is named only if the
- * result is consistent with the reference, or close to it (at most a
- * twentieth of the far mismatches left and the black regions' IoU at
- * least 0.97); among those, the one leaving fewest far mismatches wins.
- * Counting alone is cheap, so a candidate whose undoing does not halve
- * the mismatches is dropped before any distance is computed.  The shift
- * to try comes from the centroids; the scale from the areas and the
- * centroids, refined by a golden-section search on a sampled grid.  When
- * nothing fits, the image's black region is judged on its own: empty,
- * an outline that no ellipse fits (not a sphere), or another sphere.
- *
- * Thresholds are written once, below, with their reasons.  Not a
- * registration algorithm: one mistake at a time, no combinations.
- *
  * Consistent means every mismatch within the tolerance of the outline,
  * the mismatches at most RAYO_COMPARE_BAND_SHARE of the pixels there and
- * fewer than chance (band.c): near an outline only because the
- * reference is all outline is not enough.
+ * fewer than chance (band.c).  Otherwise every candidate mistake is tried
+ * the same way: undo it on the image (transform.c) and compare again; the
+ * one leaving fewest far mismatches, and close enough to consistent,
+ * wins.  Thresholds are written once, below, with their reasons.  Not a
+ * registration algorithm: one mistake at a time, no combinations.
  */
 #include <math.h>
 #include <stdlib.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
+
+/*
+ * A candidate is named only if the result is consistent with the
+ * reference, or close to it (at most a twentieth of the far mismatches
+ * left and the black regions' IoU at least 0.97).  Counting alone is
+ * cheap, so a candidate whose undoing does not halve the mismatches is
+ * dropped before any distance is computed.  The shift to try comes from
+ * the centroids; the scale from the areas and the centroids, refined by a
+ * golden-section search on a sampled grid.  When nothing fits, the image's
+ * black region is judged on its own: empty, an outline that no ellipse
+ * fits (not a sphere), or another sphere.
+ */
 
 /* A candidate "comes close": far mismatches cut twentyfold and IoU. */
 #define CLOSE_REDUCTION 20

@@ -1,24 +1,12 @@
 /*
  * tone_impl.h - the pieces of the tone comparison (gray and colour
- * images compared by value), shared by src/compare/tone*.c only.
- *
- *   tone.c          both images as 8-bit samples of the same channel
- *                   count, and rayo_compare_tone_images putting the
- *                   measurements, the verdict and the diagnosis together;
- *   tone_measure.c  one pass over the reference's frame with the image
- *                   undone by a candidate mistake: statistics, and which
- *                   differences an edge or the shading explains;
- *   tone_diagnose.c the candidate mistakes, tried one at a time;
- *   tone_scene*.c   against one of the course's scenes, what the image
- *                   differs from it in (a background, a sphere, a
- *                   constant), and its words;
- *   tone_diff.c     the difference picture;
- *   tone_format.c   the report as text and JSON;
- *   tone_cache.c    the reference's maps and the course's render, kept
- *                   for the next comparison.
- *
- * The mask comparison (compare_impl.h) shares none of this but the
- * report and its vocabulary.
+ * images compared by value), shared by src/compare/tone/ and the top of
+ * src/compare (which chooses the tone or the mask comparison) only: the
+ * images as 8-bit samples and their maps, a candidate mistake undone,
+ * the measuring pass and what explains a difference, the diagnosis, the
+ * difference picture, the report and the cache.  The mask comparison
+ * (compare_impl.h) shares none of this but the report and its
+ * vocabulary; docs/architecture.md lists the files of each group.
  */
 #ifndef RAYO_TONE_IMPL_H
 #define RAYO_TONE_IMPL_H
@@ -166,6 +154,19 @@ typedef struct tone_xform {
 
 /* A transform that changes nothing. */
 tone_xform tone_identity(void);
+
+/* The image's pixel for reference pixel (x, y), undone by t, into u;
+   0 when it falls outside the image. */
+int tone_undo(const tone_image *ref, const tone_image *image,
+              const tone_xform *t, uint32_t x, uint32_t y, unsigned char *u);
+
+/* Whether the reference takes u's values within the window of radius
+   around (x, y), give or take the levels and its shading there; and
+   whether an edge of the reference lies within radius of (x, y). */
+int tone_explained(const tone_image *ref, uint32_t x, uint32_t y,
+                   const unsigned char *u, int radius, unsigned levels);
+int tone_near_edge(const tone_image *ref, uint32_t x, uint32_t y, int radius,
+                   unsigned levels);
 
 typedef struct tone_counts {
     uint64_t known;       /* pixels compared (outside the image: black) */

@@ -6,20 +6,24 @@
  * within the tolerance, how steep the shading is there and which values
  * the reference takes there.  Asked pixel by pixel that costs the
  * window's area, (2r + 1)^2, each time; as maps made once it costs a few
- * operations a pixel whatever r is.  The window is separable: a running
- * extreme along each row, then along each column of the result.  Along a
- * line, van Herk's and Gil and Werman's method: cut the line (padded by
- * r neutral values at both ends) into blocks of the window's length w;
- * a prefix extreme from each block's start and a suffix extreme to each
- * block's end; the window starting at i covers the end of one block and
- * the start of the next, so its extreme is that of suffix[i] and
- * prefix[i + w - 1].  Three comparisons a value.  Rows are passed one
- * at a time; columns a tile of them at once, read row by row.
+ * operations a pixel whatever r is (van Herk's and Gil and Werman's
+ * method, below).
  */
 #include <stdlib.h>
 #include <string.h>
 
 #include "tone_impl.h"
+
+/*
+ * The window is separable: a running extreme along each row, then along
+ * each column of the result.  Along a line: cut the line (padded by r
+ * neutral values at both ends) into blocks of the window's length w; a
+ * prefix extreme from each block's start and a suffix extreme to each
+ * block's end; the window starting at i covers the end of one block and
+ * the start of the next, so its extreme is that of suffix[i] and
+ * prefix[i + w - 1].  Three comparisons a value.  Rows are passed one at
+ * a time; columns a tile of them at once, read row by row.
+ */
 
 static unsigned char pick(unsigned char a, unsigned char b, int max)
 {

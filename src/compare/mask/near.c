@@ -2,26 +2,28 @@
  * near.c - which mismatches lie within the tolerance of the reference's
  * outline, counted a row at a time with whole words of bits.
  *
- * A mismatch on a reference pixel of one colour is within the tolerance
- * t when some reference pixel of the other colour lies within t of it,
- * that is when it belongs to the other colour's set dilated by the disk
- * of radius t.  The dilation is separable by rows: for each row offset dy
- * (|dy| <= t) the rows y - dy and y + dy are ORed and then widened
- * sideways by the largest dx with dx^2 + dy^2 <= t^2.  The same test as
- * computing every mismatch's exact distance and comparing it with t, at a
- * few word operations per 64 pixels instead of a distance transform per
- * mismatch, so the count of far mismatches no longer depends on how many
- * mismatches there are.
- *
- * Only for small tolerances (CMP_NEAR_MAX_TOLERANCE): the cost grows with
- * the square of t; measure.c computes exact distances beyond that.  Not
- * a general morphology library: one disk, counts only.
+ * A mismatch within the tolerance t belongs to the other colour's set
+ * dilated by the disk of radius t; the dilation is separable by rows
+ * (below).  The same test as computing every mismatch's exact distance
+ * and comparing it with t, at a few word operations per 64 pixels.  Only
+ * for small tolerances (CMP_NEAR_MAX_TOLERANCE): the cost grows with the
+ * square of t; measure.c computes exact distances beyond that.  Not a
+ * general morphology library: one disk, counts only.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
+
+/*
+ * A mismatch on a reference pixel of one colour is within the tolerance
+ * t when some reference pixel of the other colour lies within t of it.
+ * For each row offset dy (|dy| <= t) the rows y - dy and y + dy are ORed
+ * and then widened sideways by the largest dx with dx^2 + dy^2 <= t^2.
+ * So the count of far mismatches does not depend on how many mismatches
+ * there are, where a distance transform per mismatch would.
+ */
 
 struct cmp_near {
     const cmp_mask *ref;

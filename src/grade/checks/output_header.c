@@ -13,7 +13,7 @@
  */
 #include <string.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 /* Numbers past this are kept at it: far past any size a reader takes. */
 #define SATURATED ((uint64_t)1 << 40)

@@ -6,14 +6,9 @@
  * is red and one black only in the image is blue (compare.h), so a
  * student sees at a glance which side of the outline is wrong.  The
  * picture has the reference's frame, with the image laid on it as
- * compare does (centres aligned).
- *
- * Four colours fit a 2-bit palette PNG, which writer.h does not make
- * (it writes gray and RGB), so this file drives libpng itself: a 4096 x
- * 4096 picture is 4 MiB of 2-bit samples instead of 48 MiB of RGB, and
- * compressing it at zlib's fastest level takes milliseconds.  Bytes go
- * through the rayo_output, so the file appears whole or not at all.
- * Memory is one packed row.
+ * compare does (centres aligned).  Four colours fit a 2-bit palette PNG,
+ * which writer.h does not make, so this file drives libpng itself.  Bytes
+ * go through the rayo_output, so the file appears whole or not at all.
  */
 #include <png.h>
 #include <setjmp.h>
@@ -21,8 +16,15 @@
 #include <string.h>
 #include <zlib.h>
 
-#include "compare_impl.h"
-#include "tone_impl.h"
+#include "../compare_impl.h"
+#include "../tone/tone_impl.h"
+
+/*
+ * A 2-bit palette makes a 4096 x 4096 picture 4 MiB of samples instead of
+ * 48 MiB of RGB, compressed at zlib's fastest level.  Memory is one
+ * packed row.  A gray or colour pair is handed to the tone comparison's
+ * own picture (tone_diff.c).
+ */
 
 enum { WHITE, BLACK, REFERENCE_ONLY, IMAGE_ONLY };
 

@@ -10,7 +10,7 @@
  */
 #include <math.h>
 
-#include "report_sink.h"
+#include "../report_sink.h"
 #include "tone_impl.h"
 
 static const char *channel_name(const rayo_compare_tone *t, unsigned c)

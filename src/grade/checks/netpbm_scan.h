@@ -18,7 +18,7 @@
 #include "rayo/image.h"
 #include "rayo/status.h"
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 typedef struct netpbm_scan {
     const unsigned char *data;

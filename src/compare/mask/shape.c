@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 typedef struct sums {
     uint64_t n, sx, sxx, sy, syy, sxy;

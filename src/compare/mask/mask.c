@@ -10,7 +10,7 @@
 
 #include "rayo/image_convert.h"
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
 
 uint64_t cmp_popcount(const unsigned char *bytes, size_t n)
 {

@@ -4,31 +4,34 @@
  *
  * Only the maximum is reported (near.c counts the mismatches beyond the
  * tolerance), so a mismatch needs exact work only if it could beat the
- * largest distance found so far.  Distances to a set are 1-Lipschitz: a
- * pixel k rows from a row whose distances are known is at most k farther
- * than the pixel of that row in its column.  So a band of rows is first
- * sampled: every SAMPLE_STEP-th row (and the band's last) gets the exact
- * distance of every pixel to each colour (outline.c), kept only as the
- * largest distance in each block of BLOCK_BYTES * 8 columns, rounded up
- * to whole pixels; the mismatches of the sampled rows seed the maximum.
- * Then, for every other row, a block of mismatches is bounded by the
- * samples above and below (largest distance in the block's columns plus
- * the rows between) and handed to outline.c for exact distances only
- * when that bound exceeds the maximum so far.  Images wrong everywhere
- * (flipped, inverted) then cost a few hundred exact rows instead of
- * thousands.  The result is the exact maximum, bit for bit what
- * computing every distance gives: every skipped mismatch is provably no
- * farther than one already found.
- *
- * Integers throughout: squared distances, and bounds rounded up.  Not
- * for counting mismatches beyond a tolerance, nor for a reference with
- * a single colour (no outline: every distance is infinite).
+ * largest distance found so far; distances to a set are 1-Lipschitz, so
+ * rows sampled exactly bound the rows between them (below).  The result
+ * is the exact maximum, bit for bit what computing every distance gives.
+ * Integers throughout: squared distances, and bounds rounded up.  Not for
+ * counting mismatches beyond a tolerance, nor for a reference with a
+ * single colour (no outline: every distance is infinite).
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
+
+/*
+ * A pixel k rows from a row whose distances are known is at most k
+ * farther than the pixel of that row in its column.  So a band of rows is
+ * first sampled: every SAMPLE_STEP-th row (and the band's last) gets the
+ * exact distance of every pixel to each colour (outline.c), kept only as
+ * the largest distance in each block of BLOCK_BYTES * 8 columns, rounded
+ * up to whole pixels; the mismatches of the sampled rows seed the maximum.
+ * Then, for every other row, a block of mismatches is bounded by the
+ * samples above and below (largest distance in the block's columns plus
+ * the rows between) and handed to outline.c for exact distances only when
+ * that bound exceeds the maximum so far.  Images wrong everywhere
+ * (flipped, inverted) then cost a few hundred exact rows instead of
+ * thousands; every skipped mismatch is provably no farther than one
+ * already found.
+ */
 
 /* Rows between samples: fewer samples cost fewer full rows, but leave
  * looser bounds and more rows to compute exactly.  Instruction counts

@@ -3,29 +3,31 @@
  * without a full-size distance map.
  *
  * The distance of a pixel from the outline is the Euclidean distance to
- * the nearest reference pixel of the other colour.  It is computed as
- * the exact two-pass distance transform of Meijster et al. and of
- * Felzenszwalb and Huttenlocher, rearranged so the first (vertical) pass
- * is never stored: each column keeps only the rows where its colour
- * changes, so the vertical distance from (x, y) to the other colour is
- * read off the change just above and the change just below y, found by a
- * cursor that moves down as the rows are asked for.  A sphere's mask has
- * two changes a column; memory is two bytes a change (rows fit in 16
- * bits, since heights are at most 65536), so even a worst-case noise
- * image costs no more than a 16-bit map.  The second (horizontal) pass is
- * the lower envelope of parabolas over a row, or rather over the stretches
- * of it near mismatches (a run of mismatches is widened by a bound on its
- * distances: the vertical distance, and the horizontal one to the nearest
- * pixel of the other colour beside the run).
- *
- * Not a general distance-transform library: one reference, rows in
- * order, distances only to "the other colour".
+ * the nearest reference pixel of the other colour, computed as the exact
+ * two-pass distance transform of Meijster et al. and of Felzenszwalb and
+ * Huttenlocher, rearranged so that the first (vertical) pass is never
+ * stored (below): even a worst-case noise image costs no more than a
+ * 16-bit map.  Not a general distance-transform library: one reference,
+ * rows in order, distances only to "the other colour".
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare_impl.h"
+#include "../compare_impl.h"
+
+/*
+ * Each column keeps only the rows where its colour changes, so the
+ * vertical distance from (x, y) to the other colour is read off the change
+ * just above and the change just below y, found by a cursor that moves
+ * down as the rows are asked for.  A sphere's mask has two changes a
+ * column; memory is two bytes a change (rows fit in 16 bits, since heights
+ * are at most 65536).  The second (horizontal) pass is the lower envelope
+ * of parabolas over a row, or rather over the stretches of it near
+ * mismatches (a run of mismatches is widened by a bound on its distances:
+ * the vertical distance, and the horizontal one to the nearest pixel of
+ * the other colour beside the run).
+ */
 
 struct cmp_outline {
     const cmp_mask *ref;
