@@ -56,7 +56,10 @@ for file in $(find src include/rayo web/wasm fuzz -name '*.[ch]' | sort); do
             to=$(home "$(basename "$target" .h)")
             folder=public ;;
         */src/* | ../*)
-            folder=$(echo "$target" | sed 's|.*\.\./||; s|^src/||' | cut -d/ -f1)
+            # resolved from the including file's folder, so that a
+            # subfolder's "../x_impl.h" is its own folder's
+            folder=$(realpath -m -s --relative-to=. "${file%/*}/$target" |
+                sed 's|^src/||' | cut -d/ -f1)
             to=$folder ;;
         *)
             continue ;; # its own folder

@@ -28,7 +28,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 /* What the probe found, kept for the process's life. */
 static pthread_once_t probed = PTHREAD_ONCE_INIT;

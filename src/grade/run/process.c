@@ -37,7 +37,7 @@
 #include <sys/prctl.h>
 #endif
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 extern char **environ;
 

@@ -30,7 +30,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 /* A growing list of owned words, NULL-terminated. */
 typedef struct words {
