@@ -6,14 +6,15 @@
  *
  * Everything it needs was worked out before fork() (process.c), so it
  * calls only async-signal-safe functions (setsid, prctl, open, dup2,
- * fcntl, chdir, setrlimit, getrlimit, execve, _exit) and is safe to fork
- * from a threaded program.  The limits are set on what it execs (bwrap,
+ * fcntl, chdir, setrlimit, getrlimit, setgroups, setgid, setuid,
+ * execve, _exit) and is safe to fork from a threaded program.  The limits are set on what it execs (bwrap,
  * in the sandbox) and so hold inside.  Not where a run is planned or
  * waited for: process.c and wait.c.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE
 
 #include <fcntl.h>
+#include <grp.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -145,6 +146,16 @@ void grade_child(const child_plan *plan)
                   (rlim_t)limits->open_files);
     if (moved[2] >= 0)
         keep_log_out_of_reach(fds->log_number);
+    /* A uid of its own (uid.c), after the limits root may set; the
+       change clears the death signal, which is set again. */
+    if (plan->uid != 0) {
+        if (setgroups(0, NULL) != 0 || setgid((gid_t)plan->uid) != 0 ||
+            setuid((uid_t)plan->uid) != 0)
+            _exit(126);
+#ifdef __linux__
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+#endif
+    }
     signal(SIGPIPE, SIG_DFL);
     signal(SIGXFSZ, SIG_DFL);
     execve(plan->program, plan->argv, plan->env);

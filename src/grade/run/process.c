@@ -252,6 +252,9 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     child_fds fds;
     grade_cgroup cg;
     long max_fd = sysconf(_SC_OPEN_MAX);
+    grade_limits here = grade_limits_here(limits, ctx->sandboxed);
+    unsigned long uid = 0;
+    int counted = 0;
     rayo_status status = RAYO_OK;
     pid_t pid;
 
@@ -297,7 +300,11 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
                                     strerror(errno));
             goto done;
         }
-        words = grade_sandbox_argv(ctx, run, FD_JSON);
+        status = grade_run_uid(ctx, &uid, err);
+        if (status != RAYO_OK)
+            goto done;
+        words = grade_sandbox_argv(ctx, run, FD_JSON, here.processes,
+                                   &counted);
         program = ctx->bwrap != NULL ? strdup(ctx->bwrap) : NULL;
         env = minimal_env(work);
         full = words;
@@ -318,13 +325,17 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     fds.json = json != NULL ? fileno(json) : -1;
     fds.name = name != NULL ? fileno(name) : -1;
     fds.file = file != NULL ? fileno(file) : -1;
-    if (limits->tree_memory > 0 || limits->processes > 0) {
-        status = grade_cgroup_create(&cg, limits->tree_memory,
-                                     limits->processes, err);
+    if (here.tree_memory > 0 || here.processes > 0) {
+        status = grade_cgroup_create(&cg, here.tree_memory, here.processes,
+                                     err);
         if (status != RAYO_OK)
             goto done;
     }
     fds.in = run->input > 0 ? run->input : -1;
+    /* Counted inside the sandbox, the processes are not limited again
+       on bwrap (there the count would be all the user's). */
+    if (counted)
+        here.processes = 0;
     pid = fork();
     if (pid < 0) {
         status = rayo_error_set(err, RAYO_ERR_IO, "grade: cannot start %s: %s",
@@ -338,9 +349,9 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
         plan.env = env != NULL ? env : environ;
         plan.dir = dir;
         plan.fds = &fds;
-        plan.limits = limits;
+        plan.limits = &here;
         plan.cg = &cg;
-        plan.uid = 0;
+        plan.uid = uid;
         plan.max_fd = max_fd;
         grade_child(&plan);
     }
@@ -348,7 +359,7 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
         close(pipe_fds[1]);
         pipe_fds[1] = -1;
     }
-    grade_wait(pid, limits, &log, &got->outcome);
+    grade_wait(pid, &here, &log, &got->outcome);
     /* What the kernel did in the group, then nothing left in it. */
     got->memory_exceeded = grade_cgroup_oom(&cg);
     got->memory_peak = grade_cgroup_peak(&cg);

@@ -38,6 +38,16 @@ char *grade_path_join(const char *dir, const char *name)
     return path;
 }
 
+char *grade_dir_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    if (slash == NULL)
+        return strdup(".");
+    if (slash == path)
+        return strdup("/");
+    return strndup(path, (size_t)(slash - path));
+}
+
 char *grade_concat(const char *a, const char *b)
 {
     size_t m = strlen(a), n = strlen(b);
