@@ -1,19 +1,15 @@
 /*
  * cgroup.c - limits on the whole tree of a run's processes: a control
- * group of its own per run, with a memory limit on the total of the
- * tree (swap included) and a limit on the number of its processes,
- * enforced by the kernel whatever the processes do (fork, exec, run as
- * another uid in a user namespace).  process.c puts the child in it
- * before exec and asks, after the run, whether the kernel killed for
- * memory; then whatever is left in it is killed and it is removed.
+ * group of its own per run, bounding the tree's memory (swap included)
+ * and its processes whatever they do (fork, exec, another uid in a user
+ * namespace).  process.c puts the child in it before exec and asks
+ * afterwards whether the kernel killed for memory; then what is left in
+ * it is killed and it is removed.
  *
- * Chosen at run time: cgroup v2 when the grader's own group offers the
- * memory and pids controllers (as root, or a systemd user session with
- * delegation), else cgroup v1 (the memory and pids hierarchies), else
- * none (or RAYO_GRADE_NO_CGROUP=1, for tests): limits.c then sizes the
- * per-process limits so that their product bounds the tree, and the
- * report says so.  Not a general cgroup library: two limits, one level
- * below the grader's own group.
+ * cgroup v2 where the grader's group offers the memory and pids
+ * controllers, else v1, else none (or RAYO_GRADE_NO_CGROUP=1, for
+ * tests: limits.c then bounds the tree by a product of per-process
+ * limits).  Not a general cgroup library: two limits, one level down.
  */
 #define _POSIX_C_SOURCE 200809L
 

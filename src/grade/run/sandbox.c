@@ -3,18 +3,13 @@
  * be made here (tried once, for real), and the bwrap words that put one
  * run inside it.  process.c runs those words; nothing else knows them.
  *
- * Inside, a run sees a read-only system (/usr, the /bin /lib /sbin links
- * or folders, and of /etc only the compiler alternatives and the dynamic
- * loader's cache: no passwd, no shadow, no keys), a /proc of its own PID
- * namespace, a minimal /dev, no network (its own network namespace with
- * only a loopback), no IPC or UTS of the host, a new session, uid and gid
- * 65534 with no capabilities, and a read-only root.  The compiler
- * (GRADE_ROLE_TOOL) also sees the folders of the submission's sources,
- * read-only, the build folder, writable, a tmpfs of options->disk bytes
- * for its temporaries and no device but /dev/null; the student's code
- * (GRADE_ROLE_STUDENT) sees the one file it runs, read-only, and its own
- * folder, a fresh tmpfs of options->disk bytes that is gone when the run
- * ends.  Everything it started dies with the sandbox's PID namespace.
+ * Inside, a run sees a read-only system with almost nothing of /etc, a
+ * /proc of its own PID namespace, a minimal /dev, no network, IPC or UTS
+ * of the host, a new session, uid and gid 65534 with no capabilities.
+ * The compiler (GRADE_ROLE_TOOL) also sees the sources' folders
+ * read-only and the build folder; the student's code the one file it
+ * runs and a fresh tmpfs folder.  docs/grading.md ("Isolation") lists
+ * it all; this file is not where limits are chosen (limits.c, run.c).
  */
 #define _POSIX_C_SOURCE 200809L
 
