@@ -16,6 +16,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <unistd.h>
 
 #include "../grade_impl.h"
@@ -24,6 +25,15 @@
    four at once (the sandbox's first process, the driver, collect2 and
    the linker), a course's program one. */
 #define GRADE_PROCESSES_ALONE 8UL
+
+/* 1 when RLIMIT_NPROC can be set inside the sandbox (sandbox.c runs
+   the command through prlimit), where it counts the sandbox alone. */
+static int counted_inside(int sandboxed)
+{
+    char *prlimit = sandboxed ? grade_which("prlimit") : NULL;
+    free(prlimit);
+    return prlimit != NULL;
+}
 
 /* The processes a tree may have without a cgroup. */
 static unsigned long processes_alone(unsigned long processes)
@@ -40,7 +50,7 @@ grade_limits grade_limits_here(const grade_limits *limits, int sandboxed)
         return here;
     /* Outside the sandbox the user's own processes count too: fewer
        than theirs would stop the run from starting at all. */
-    if (sandboxed)
+    if (counted_inside(sandboxed))
         here.processes = processes_alone(limits->processes);
     /* valgrind, which has no address-space limit of its own where the
        cgroup bounds it, gets the tree's. */
@@ -60,8 +70,8 @@ void grade_limits_describe(const rayo_grade_options *o, char *text,
 {
     char cpu[32];
     int version = grade_cgroup_kind(NULL, 0);
-    int sandboxed = o->sandbox != RAYO_GRADE_SANDBOX_OFF &&
-                    grade_sandbox_available(NULL, 0);
+    int sandboxed = counted_inside(o->sandbox != RAYO_GRADE_SANDBOX_OFF &&
+                                   grade_sandbox_available(NULL, 0));
     unsigned long processes = sandboxed ? processes_alone(o->processes)
                                         : o->processes;
     unsigned long long total = mib(o->memory) * processes;
