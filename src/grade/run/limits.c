@@ -85,22 +85,25 @@ void grade_limits_describe(const rayo_grade_options *o, char *text,
                              "%llu MiB files, %d descriptors",
                  version, mib(o->memory), o->processes, cpu,
                  mib(o->output_limit), GRADE_OPEN_FILES);
-    else if (sandboxed && geteuid() == 0)
-        snprintf(text, room, "limits: per process only, no cgroup here; the "
-                             "sandbox runs as a uid of its own (%llu MiB "
-                             "address space each, %lu processes in the "
-                             "sandbox: at most %llu MiB in all; %s, %llu MiB "
-                             "files, %d descriptors)",
+    else if (sandboxed || geteuid() != 0)
+        /* One sentence each, with the same numbers in the same order. */
+        snprintf(text, room,
+                 !sandboxed ? "limits: per process only, no cgroup here "
+                              "(%llu MiB address space each, %lu processes "
+                              "of the user: at most %llu MiB in all; %s, "
+                              "%llu MiB files, %d descriptors)"
+                 : geteuid() == 0
+                     ? "limits: per process only, no cgroup here; the "
+                       "sandbox runs as a uid of its own (%llu MiB address "
+                       "space each, %lu processes in the sandbox: at most "
+                       "%llu MiB in all; %s, %llu MiB files, %d descriptors)"
+                     : "limits: per process only, no cgroup here (%llu MiB "
+                       "address space each, %lu processes in the sandbox: "
+                       "at most %llu MiB in all; %s, %llu MiB files, %d "
+                       "descriptors)",
                  mib(o->memory), processes, total, cpu,
                  mib(o->output_limit), GRADE_OPEN_FILES);
-    else if (sandboxed)
-        snprintf(text, room, "limits: per process only, no cgroup here "
-                             "(%llu MiB address space each, %lu processes "
-                             "in the sandbox: at most %llu MiB in all; %s, "
-                             "%llu MiB files, %d descriptors)",
-                 mib(o->memory), processes, total, cpu,
-                 mib(o->output_limit), GRADE_OPEN_FILES);
-    else if (geteuid() == 0)
+    else
         /* RLIMIT_NPROC does not bind for root: nothing bounds the
            total outside the sandbox. */
         snprintf(text, room, "limits: per process only, no cgroup here "
@@ -109,11 +112,4 @@ void grade_limits_describe(const rayo_grade_options *o, char *text,
                              "%s, %llu MiB files, %d descriptors)",
                  mib(o->memory), cpu, mib(o->output_limit),
                  GRADE_OPEN_FILES);
-    else
-        snprintf(text, room, "limits: per process only, no cgroup here "
-                             "(%llu MiB address space each, %lu processes "
-                             "of the user: at most %llu MiB in all; %s, "
-                             "%llu MiB files, %d descriptors)",
-                 mib(o->memory), processes, total, cpu,
-                 mib(o->output_limit), GRADE_OPEN_FILES);
 }
