@@ -111,9 +111,11 @@ static rayo_status read_capture(FILE *file, uint64_t limit, char **data,
     return grade_read_fd(fileno(file), limit, data, size, &cut, err);
 }
 
-/* bwrap's exit status, from its --json-status-fd: "exit-code": N.
-   -1 when it never said (the sandbox could not be set up). */
-static int sandbox_exit_code(FILE *json)
+/* A number bwrap wrote on its --json-status-fd after key: the
+   sandbox's first process ("child-pid":), its exit status
+   ("exit-code":).  -1 when it never said (the sandbox could not be set
+   up). */
+static int sandbox_said(FILE *json, const char *key)
 {
     char *text = NULL, *p;
     size_t size;
@@ -122,9 +124,9 @@ static int sandbox_exit_code(FILE *json)
     if (read_capture(json, 65536, &text, &size, &ignored) != RAYO_OK ||
         text == NULL)
         return -1;
-    p = strstr(text, "\"exit-code\":");
+    p = strstr(text, key);
     if (p != NULL)
-        code = atoi(p + strlen("\"exit-code\":"));
+        code = atoi(p + strlen(key));
     free(text);
     return code;
 }
@@ -254,7 +256,7 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     long max_fd = sysconf(_SC_OPEN_MAX);
     grade_limits here = grade_limits_here(limits, ctx->sandboxed);
     unsigned long uid = 0;
-    int counted = 0;
+    int counted = 0, cg_version;
     rayo_status status = RAYO_OK;
     pid_t pid;
 
@@ -361,9 +363,17 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     }
     grade_wait(pid, &here, &log, &got->outcome);
     /* What the kernel did in the group, then nothing left in it. */
+    cg_version = cg.version;
     got->memory_exceeded = grade_cgroup_oom(&cg);
     got->memory_peak = grade_cgroup_peak(&cg);
     grade_cgroup_remove(&cg);
+    /* Without a group to empty, the sandbox's first process, which the
+       kernel makes take every other with it, is waited out. */
+    if (ctx->sandboxed && cg_version == 0) {
+        int first = sandbox_said(json, "\"child-pid\":");
+        if (first > 1)
+            grade_wait_gone((pid_t)first);
+    }
     if (got->outcome.ending == GRADE_CANCELLED) {
         status = rayo_error_set(err, RAYO_ERR_CANCELLED, "grade: cancelled");
         goto done;
@@ -384,7 +394,7 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     else if (got->log != NULL)
         got->log[got->log_size] = '\0';
     if (ctx->sandboxed && got->outcome.ending == GRADE_EXITED) {
-        int code = sandbox_exit_code(json);
+        int code = sandbox_said(json, "\"exit-code\":");
         if (code < 0) {
             /* bwrap never started the program: its own message. */
             size_t n = got->errors != NULL ? strcspn(got->errors, "\n") : 0;

@@ -60,5 +60,8 @@ typedef struct log_reader {
    or when limits->cancelled says so, reading the log meanwhile. */
 void grade_wait(pid_t pid, const grade_limits *limits, log_reader *log,
                 grade_outcome *outcome);
+/* Waits (a few seconds at most) until process pid, not a child, has
+   ended: gone, or a zombie. */
+void grade_wait_gone(pid_t pid);
 
 #endif

@@ -6,14 +6,17 @@
  * as an overflow), so that a full socket never stalls the run.
  *
  * A run that ends after the limit by that clock (the grader was stopped
- * or starved meanwhile) counts as timed out.  Not where the run starts
- * (process.c, child.c) nor what its log means (valgrind_log.c).
+ * or starved meanwhile) counts as timed out.  Without a cgroup to empty,
+ * the sandbox's first process is waited out too.  Not where the run
+ * starts (process.c, child.c) nor what its log means (valgrind_log.c).
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
@@ -114,5 +117,34 @@ void grade_wait(pid_t pid, const grade_limits *limits, log_reader *log,
     } else {
         outcome->ending = GRADE_EXITED;
         outcome->status = WEXITSTATUS(status);
+    }
+}
+
+/* Polls for at most GONE_TRIES * 2 ms. */
+#define GONE_TRIES 2500
+
+void grade_wait_gone(pid_t pid)
+{
+    char path[64], text[512];
+    int i;
+    snprintf(path, sizeof path, "/proc/%ld/stat", (long)pid);
+    for (i = 0; i < GONE_TRIES; i++) {
+        struct timespec pause = {0, 2000000};
+        int fd = open(path, O_RDONLY | O_CLOEXEC);
+        ssize_t n;
+        const char *state;
+        if (fd < 0)
+            return;
+        n = read(fd, text, sizeof text - 1);
+        close(fd);
+        if (n <= 0)
+            return;
+        text[n] = '\0';
+        /* "PID (NAME) S ...": the state after the name's last ')'. */
+        state = strrchr(text, ')');
+        if (state == NULL || state[1] != ' ' || state[2] == 'Z' ||
+            state[2] == 'X')
+            return;
+        nanosleep(&pause, NULL);
     }
 }
