@@ -255,6 +255,15 @@ if [ "$sandbox" = 1 ]; then
         # reap keeps them.)
         is "$(ps -e -o uid= -o stat= | awk '$1 >= 1879048192 && $1 < 2147483648 && $2 !~ /^Z/' |
             wc -l | tr -d ' ')" 0 "root, no cgroup: no process of the grades' uids is left"
+        # Two at once, each grade under a uid of its own: each tree is
+        # bounded apart (6 GiB each at most; 2.1 GB and next to nothing).
+        mkdir "$TMP/class_alone" "$TMP/class_alone/ana" "$TMP/class_alone/beto"
+        cp "$H/fork_memory/main.c" "$TMP/class_alone/ana/"
+        cp "$H/fork_bomb/main.c" "$TMP/class_alone/beto/"
+        guarded 12288 env RAYO_GRADE_NO_CGROUP=1 $G --no-valgrind --memory 1024 --processes 6 \
+            --timeout 5 --each -j 2 "$TMP/class_alone"
+        held "root, no cgroup: --each -j 2"
+        says '^0 of 2 submissions passed$' "root, no cgroup: --each -j 2: both graded, both failed"
         # That uid cannot read a folder of root's: the sources are
         # copied for it, and the report is the one the cgroup gives.
         mkdir "$TMP/private"
