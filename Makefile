@@ -198,7 +198,8 @@ unit: $(UNIT_BIN)
 # the others, each alone.  The last line says how it went and how long.
 CHECK_JOBS ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
 CHECK_ALONE := tests/cli/progress.t tests/cli/signals.t \
-               tests/cli/grade_sandbox.t tests/cli/limits.t
+               tests/cli/grade_sandbox.t tests/cli/limits.t \
+               tests/cli/grade_limits.t
 CHECK_FILES = $(UNIT_BIN) $(sort $(wildcard tests/cli/*.t))
 CHECK_RULES = $(foreach f,$(filter-out $(CHECK_ALONE),$(CHECK_FILES)), \
                   --rules='par=$(f)')

@@ -35,7 +35,7 @@ rayo_status grade_fail(rayo_grade_item *item, rayo_error *err,
 rayo_status grade_quote(rayo_grade_item *item, const char *text,
                         size_t max, rayo_error *err);
 
-/* tempdir.c */
+/* run/tempdir.c */
 rayo_status grade_tempdir_create(char **path, rayo_error *err);
 /* Removes the directory and everything in it with descriptor-relative
    calls (no symbolic link followed, no PATH_MAX limit, any depth);
@@ -43,6 +43,9 @@ rayo_status grade_tempdir_create(char **path, rayo_error *err);
 void grade_tempdir_remove(char *path);
 /* dir + "/" + name, allocated; NULL when memory runs out. */
 char *grade_path_join(const char *dir, const char *name);
+/* The folder part of path, allocated ("." for none); NULL when memory
+   runs out. */
+char *grade_dir_of(const char *path);
 /* a + b, allocated; NULL when memory runs out. */
 char *grade_concat(const char *a, const char *b);
 /* Reads a whole file (at most limit bytes) into a NUL-terminated buffer;
@@ -77,7 +80,7 @@ uint64_t grade_pixels_allowed(const rayo_grade_exercise *exercise,
    a course's program or the compiler opens. */
 #define GRADE_OPEN_FILES 256
 
-/* process.c: one run of a program, its limits and what became of it. */
+/* run/process.c: one run of a program, its limits and what became of it. */
 typedef struct grade_limits {
     double wall;          /* seconds; the process group is killed after */
     double cpu;           /* seconds; 0 = no limit */
@@ -173,7 +176,7 @@ void grade_captured_free(grade_captured *got);
    limit is too low for one. */
 int grade_log_fd(void);
 
-/* cgroup.c: a control group of its own per run (cgroup v2, else v1),
+/* run/cgroup.c: a control group of its own per run (cgroup v2, else v1),
    limiting the memory and the processes of the whole tree. */
 typedef struct grade_cgroup {
     int version;          /* 2, 1, or 0: none (the rlimits alone hold) */
@@ -196,21 +199,29 @@ int grade_cgroup_oom(const grade_cgroup *cg);
 uint64_t grade_cgroup_peak(const grade_cgroup *cg);
 /* Kills whatever is left in it and removes it. */
 void grade_cgroup_remove(grade_cgroup *cg);
-/* The limits that hold on a run here, for the report's first line. */
+/* run/limits.c: the limits that hold on a run here, for the report's
+   first line. */
 void grade_limits_describe(const rayo_grade_options *options, char *text,
                            size_t room);
+/* The limits a run gets here: as asked with a cgroup; without one, the
+   sandbox's processes fewer, so that address space times processes
+   bounds the tree, and an address space for every run. */
+grade_limits grade_limits_here(const grade_limits *limits, int sandboxed);
 
-/* sandbox.c: whether the sandbox works (cached), and its command. */
+/* run/sandbox.c: whether the sandbox works (cached), and its command. */
 int grade_sandbox_available(char *why, size_t room);
-/* The bwrap words in front of run->argv, for ctx; NULL when memory runs
-   out.  Free with grade_words_free. */
+/* The bwrap words in front of run->argv, for ctx; with processes > 0,
+   RLIMIT_NPROC set to it inside (the processes of the sandbox's user
+   namespace) and *counted 1.  NULL when memory runs out.  Free with
+   grade_words_free. */
 char **grade_sandbox_argv(const struct grade_context *ctx,
-                          const grade_run *run, int json_fd);
+                          const grade_run *run, int json_fd,
+                          unsigned long processes, int *counted);
 void grade_words_free(char **words);
 /* The text rayo_grade_report.isolation holds for a working sandbox. */
 void grade_sandbox_describe(uint64_t disk, char *text, size_t room);
 
-/* The limits a student's program runs under (run.c). */
+/* The limits a student's program runs under (run/run.c). */
 grade_limits grade_run_limits(const rayo_grade_options *options);
 /* Only a wall clock, for the (trusted) compiler. */
 grade_limits grade_compiler_limits(const rayo_grade_options *options,
@@ -243,7 +254,19 @@ typedef struct grade_context {
     int stopped;        /* the run was stopped by a limit */
     char *output;       /* what the program wrote */
     size_t output_size;
+    unsigned long run_uid; /* the sandbox's uid of its own (run/uid.c);
+                              0 while it has none */
 } grade_context;
+
+/* run/uid.c: the uid the sandboxed runs of ctx take (0: the grader's
+   own): one of their own where the grader is root and no cgroup can be
+   made, with the build folder handed to it and the sources' folders
+   copied for it. */
+rayo_status grade_run_uid(grade_context *ctx, unsigned long *uid,
+                          rayo_error *err);
+/* The copy of source i's folder that such a uid's sandbox binds where
+   the folder is, allocated; NULL when memory runs out. */
+char *grade_source_copy(const grade_context *ctx, size_t i);
 
 /* Builds an argv: the compiler words, then the given words, then NULL.
    Free with free() (the strings are borrowed). */

@@ -9,7 +9,9 @@
 # it (failing the test) otherwise, so that a regression cannot take the
 # test machine down.  As root (a cgroup per run where the
 # machine has one), as an unprivileged user (setpriv, where possible),
-# and --each -j 2 over two of them.  Not a test of speed: the times
+# and --each -j 2 over two of them; and without a cgroup
+# (RAYO_GRADE_NO_CGROUP=1), as root and as uid 65534, where the
+# per-process limits' product bounds the tree.  Not a test of speed: the times
 # below are ceilings far above what a grade takes.
 . "${RAYO_SOURCE:-.}/tests/cli/lib.sh"
 
@@ -214,6 +216,81 @@ guarded 2048 $G --no-valgrind --memory 1024 --timeout 10 --each -j 2 "$TMP/class
 held "--each -j 2"
 is "$status" 1 "--each -j 2: graded, none passed"
 says '^0 of 2 submissions passed$' "--each -j 2: both graded, both failed"
+
+# ---- without a cgroup (RAYO_GRADE_NO_CGROUP=1: as on a machine whose
+# cgroups are read-only, or a user's without delegation) ----
+# forked_at_most N: the program's "forked K" (quoted from its standard
+# error) says it made between 1 and N children.
+forked_at_most() {
+    forked=$(sed -n 's/^ *forked \([0-9]*\)$/\1/p' "$TMP/out" | head -n 1)
+    [ -n "$forked" ] && [ "$forked" -ge 1 ] && [ "$forked" -le "$1" ]
+    ok $? "$2 (forked ${forked:-?})"
+}
+# alone PREFIX WHO DIR: the fork bomb and the fork-memory bomb of DIR,
+# under the per-process limits alone, run by PREFIX (empty, or setpriv).
+alone() {
+    A="env RAYO_GRADE_NO_CGROUP=1 TMPDIR=$TMP/tmp $1 $RAYO grade --no-valgrind"
+    who=$2
+    D=$3
+    # 8 processes in the sandbox of 256 MiB each: 2 GiB at most.
+    guarded 2048 $A --memory 256 --timeout 5 "$D/fork_bomb"
+    held "$who, no cgroup: fork bomb"
+    says "; limits: per process only, no cgroup here.* \\(256 MiB address space each, 8 processes in the sandbox: at most 2048 MiB in all" \
+        "$who, no cgroup: the first line says the product bounds the tree"
+    says '^run +FAIL +did not finish within 5 s' "$who, no cgroup: fork bomb stopped by the wall clock"
+    forked_at_most 7 "$who, no cgroup: fork bomb: no more children than the sandbox's processes"
+    # 6 processes of 1 GiB: 3 children of 700 MB fit, 2.1 GB; the
+    # twenty of an unbounded tree would take 14 GB.
+    guarded 6144 $A --memory 1024 --processes 6 --timeout 5 "$D/fork_memory"
+    held "$who, no cgroup: fork memory"
+    says "at most 6144 MiB in all" "$who, no cgroup: fork memory: 6 processes of 1024 MiB named"
+    says '^run +FAIL ' "$who, no cgroup: fork memory fails"
+    forked_at_most 5 "$who, no cgroup: fork memory: no more children than the sandbox's processes"
+}
+if [ "$sandbox" = 1 ]; then
+    if [ "$(id -u)" = 0 ]; then
+        alone "" root "$H"
+        says '; the sandbox runs as a uid of its own' "root, no cgroup: the sandbox runs as a uid of its own"
+        # (Zombies aside: they hold nothing, and a pid 1 that does not
+        # reap keeps them.)
+        is "$(ps -e -o uid= -o stat= | awk '$1 >= 1879048192 && $1 < 2147483648 && $2 !~ /^Z/' |
+            wc -l | tr -d ' ')" 0 "root, no cgroup: no process of the grades' uids is left"
+        # Two at once, each grade under a uid of its own: each tree is
+        # bounded apart (6 GiB each at most; 2.1 GB and next to nothing).
+        mkdir "$TMP/class_alone" "$TMP/class_alone/ana" "$TMP/class_alone/beto"
+        cp "$H/fork_memory/main.c" "$TMP/class_alone/ana/"
+        cp "$H/fork_bomb/main.c" "$TMP/class_alone/beto/"
+        guarded 12288 env RAYO_GRADE_NO_CGROUP=1 $G --no-valgrind --memory 1024 --processes 6 \
+            --timeout 5 --each -j 2 "$TMP/class_alone"
+        held "root, no cgroup: --each -j 2"
+        says '^0 of 2 submissions passed$' "root, no cgroup: --each -j 2: both graded, both failed"
+        # That uid cannot read a folder of root's: the sources are
+        # copied for it, and the report is the one the cgroup gives.
+        mkdir "$TMP/private"
+        cp "$RAYO_SOURCE/tests/grade/correct/main.c" "$TMP/private/"
+        chmod 700 "$TMP/private"
+        chmod 600 "$TMP/private/main.c"
+        # (valgrind too: without a cgroup it has an address-space limit.)
+        (cd "$TMP/private" && env TMPDIR="$TMP/tmp" "$RAYO" grade main.c) \
+            >"$TMP/with" 2>&1
+        status=0
+        (cd "$TMP/private" && env RAYO_GRADE_NO_CGROUP=1 TMPDIR="$TMP/tmp" "$RAYO" grade \
+            main.c) >"$TMP/out" 2>&1 || status=$?
+        is "$status" 0 "root, no cgroup: a source only root can read is graded"
+        is "$(sed -e 1d -e 's/ in [0-9.]* s / in N s /' "$TMP/out")" \
+            "$(sed -e 1d -e 's/ in [0-9.]* s / in N s /' "$TMP/with")" \
+            "root, no cgroup: the report is the one with a cgroup"
+        is "$(find "$TMP/tmp" -mindepth 1 | wc -l | tr -d ' ')" 0 \
+            "root, no cgroup: nothing left in the temporary folder"
+    fi
+    if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null 2>&1 &&
+        setpriv --reuid 65534 --regid 65534 --clear-groups test -x "$RAYO"; then
+        mkdir "$TMP/alone"
+        cp -r "$H/fork_bomb" "$H/fork_memory" "$TMP/alone/"
+        chmod -R a+rX "$TMP/alone"
+        alone "setpriv --reuid 65534 --regid 65534 --clear-groups env HOME=$TMP/tmp" "uid 65534" "$TMP/alone"
+    fi
+fi
 
 # ---- as an unprivileged user, where the machine allows ----
 if [ "$(id -u)" = 0 ] && command -v setpriv >/dev/null 2>&1 &&

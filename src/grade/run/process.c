@@ -2,42 +2,30 @@
  * process.c - running one program for the grader: the compiler, the
  * functions' harness, the student's program or valgrind, with no input,
  * its output into unlinked files the grader holds, under resource limits,
- * with a wall-clock timeout by the grader's clock that kills its whole
- * process group, inside the sandbox when there is one (sandbox.c builds
- * bwrap's words; this file runs them: one mechanism for every run).
+ * inside the sandbox when there is one (sandbox.c builds bwrap's words;
+ * this file runs them: one mechanism for every run).
  *
- * Everything the child needs (paths, environment, descriptors, limits)
- * is worked out before fork(), so the child only calls async-signal-safe
- * functions (setsid, prctl, open, dup2, fcntl, chdir, setrlimit,
- * getrlimit, execve, _exit) and is safe to fork from a threaded
- * program.  On Linux the child also dies with the grader
- * (PR_SET_PDEATHSIG), and bwrap's
- * --die-with-parent takes the whole sandbox with it.  The limits are set
- * on bwrap and so hold inside; before them the child joins the run's
- * cgroup (cgroup.c), which bounds the memory and processes of the whole
- * tree and is emptied and removed when the run ends.
+ * This file plans a run (the program's path, its environment, the
+ * captures, the log's socket, the run's cgroup), forks, and reads back
+ * what came of it; child.c is the child until exec, wait.c the waiting.
+ * On Linux the child dies with the grader (PR_SET_PDEATHSIG) and bwrap's
+ * --die-with-parent takes the whole sandbox with it; the run's cgroup
+ * (cgroup.c) is emptied and removed when the run ends.
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <poll.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
-#ifdef __linux__
-#include <sys/prctl.h>
-#endif
 
-#include "grade_impl.h"
+#include "spawn.h"
 
 extern char **environ;
 
@@ -58,13 +46,6 @@ const char *grade_signal_name(int signal_number)
     case SIGTRAP: return "trap (SIGTRAP)";
     }
     return "a signal";
-}
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
 }
 
 /* Resolves a command name on PATH in the parent (execvp is not
@@ -105,248 +86,6 @@ char *grade_which(const char *name)
     return path;
 }
 
-static void set_limit(int resource, rlim_t soft, rlim_t hard)
-{
-    struct rlimit limit;
-    limit.rlim_cur = soft;
-    limit.rlim_max = hard;
-    setrlimit(resource, &limit);
-}
-
-/* The descriptors the child gets, by number. */
-#define FD_JSON 4    /* bwrap's --json-status-fd */
-#define FD_NAME 5    /* the collected file's name (the wrapper writes) */
-#define FD_FILE 6    /* and its bytes */
-
-typedef struct child_fds {
-    int out, err;            /* captures */
-    int log, log_number;     /* the log socket's write end, its number */
-    int json, name, file;    /* sandbox only; -1 when unused */
-    int in;                  /* standard input; -1: /dev/null */
-} child_fds;
-
-/* fd onto number, even when it already is that number (dup2 would
-   then keep FD_CLOEXEC). */
-static int place(int fd, int number)
-{
-    if (fd == number)
-        return fcntl(fd, F_SETFD, 0);
-    return dup2(fd, number) < 0 ? -1 : 0;
-}
-
-/*
- * valgrind keeps the descriptors from the soft RLIMIT_NOFILE it starts
- * with upwards for itself: the program under it gets EBADF there (and
- * valgrind logs "invalid file descriptor N"), while valgrind's own
- * --log-fd=N keeps working.  The log's descriptor is placed below the
- * inherited limit (grade_log_fd) and the limit then lowered to it, last,
- * after any other limit on descriptors, keeping the hard limit the child
- * has by then (getrlimit: not on POSIX's list of async-signal-safe
- * functions, but a bare system call that takes no lock).
- */
-static void keep_log_out_of_reach(int log_number)
-{
-    struct rlimit limit;
-    if (getrlimit(RLIMIT_NOFILE, &limit) == 0 &&
-        limit.rlim_cur > (rlim_t)log_number)
-        set_limit(RLIMIT_NOFILE, (rlim_t)log_number, limit.rlim_max);
-}
-
-int grade_log_fd(void)
-{
-    struct rlimit limit;
-    rlim_t highest = 1023;
-    if (getrlimit(RLIMIT_NOFILE, &limit) == 0 &&
-        limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= highest)
-        highest = limit.rlim_cur > 0 ? limit.rlim_cur - 1 : 0;
-    /* Above the descriptors the child is given by number. */
-    return highest > FD_FILE + 1 ? (int)highest : -1;
-}
-
-/* In the child, between fork and exec: async-signal-safe calls only. */
-static void child(const char *program, char *const argv[],
-                  char *const env[], const char *dir, const child_fds *fds,
-                  const grade_limits *limits, const grade_cgroup *cg,
-                  long max_fd)
-{
-    int fd, moved[6], in = -1, i;
-    long k;
-    /* Into the run's cgroup before anything else: all it starts is
-       counted there. */
-    if (grade_cgroup_enter(cg) != 0)
-        _exit(126);
-    /* A session of its own: its own process group (killed as one), and
-       no controlling terminal to push input into (TIOCSTI). */
-    setsid();
-#ifdef __linux__
-    /* If the grader dies (killed, not cancelled), so does the program. */
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-#endif
-    /* Out of the way of the numbers they are going to, first. */
-    {
-        const int sources[6] = {fds->out, fds->err, fds->log, fds->json,
-                                fds->name, fds->file};
-        for (i = 0; i < 6; i++) {
-            moved[i] = -1;
-            if (sources[i] >= 0) {
-                moved[i] = fcntl(sources[i], F_DUPFD, 20);
-                if (moved[i] < 0)
-                    _exit(126);
-            }
-        }
-    }
-    if (fds->in >= 0 && (in = fcntl(fds->in, F_DUPFD, 20)) < 0)
-        _exit(126);
-    fd = in >= 0 ? in : open("/dev/null", O_RDONLY);
-    if (fd < 0 || dup2(fd, 0) < 0)
-        _exit(126);
-    if (place(moved[0], 1) != 0 || place(moved[1], 2) != 0)
-        _exit(126);
-    if (moved[2] >= 0 && place(moved[2], fds->log_number) != 0)
-        _exit(126);
-    if (moved[3] >= 0 && place(moved[3], FD_JSON) != 0)
-        _exit(126);
-    if (moved[4] >= 0 && place(moved[4], FD_NAME) != 0)
-        _exit(126);
-    if (moved[5] >= 0 && place(moved[5], FD_FILE) != 0)
-        _exit(126);
-    for (k = 3; k < max_fd; k++) {
-        if ((moved[2] >= 0 && k == fds->log_number) ||
-            (moved[3] >= 0 && k == FD_JSON) ||
-            (moved[4] >= 0 && k == FD_NAME) ||
-            (moved[5] >= 0 && k == FD_FILE))
-            continue;
-        close((int)k);
-    }
-    if (chdir(dir) != 0)
-        _exit(126);
-    set_limit(RLIMIT_CORE, 0, 0);
-    if (limits->cpu > 0) {
-        rlim_t cpu = (rlim_t)limits->cpu;
-        if ((double)cpu < limits->cpu)
-            cpu++;
-        set_limit(RLIMIT_CPU, cpu, cpu + 1);
-    }
-    if (limits->memory > 0)
-        set_limit(RLIMIT_AS, (rlim_t)limits->memory,
-                  (rlim_t)limits->memory);
-    if (limits->file_size > 0)
-        set_limit(RLIMIT_FSIZE, (rlim_t)limits->file_size,
-                  (rlim_t)limits->file_size);
-    if (limits->processes > 0)
-        set_limit(RLIMIT_NPROC, (rlim_t)limits->processes,
-                  (rlim_t)limits->processes);
-    if (limits->open_files > 0)
-        set_limit(RLIMIT_NOFILE, (rlim_t)limits->open_files,
-                  (rlim_t)limits->open_files);
-    if (moved[2] >= 0)
-        keep_log_out_of_reach(fds->log_number);
-    signal(SIGPIPE, SIG_DFL);
-    signal(SIGXFSZ, SIG_DFL);
-    execve(program, argv, env);
-    _exit(127);
-}
-
-/* The log's reader: what it holds, kept up to LOG_KEPT bytes. */
-#define LOG_KEPT ((size_t)16 << 20)
-
-typedef struct log_reader {
-    int fd;
-    char *data;
-    size_t size, capacity;
-    int overflow, failed;
-} log_reader;
-
-/* Reads what the log holds now (it is non-blocking). */
-static void drain(log_reader *log)
-{
-    char buffer[65536];
-    for (;;) {
-        ssize_t got;
-        if (log->fd < 0)
-            return;
-        got = read(log->fd, buffer, sizeof buffer);
-        if (got < 0 && errno == EINTR)
-            continue;
-        if (got <= 0)
-            return;
-        if (log->size + (size_t)got > LOG_KEPT) {
-            log->overflow = 1;
-            continue;
-        }
-        if (log->size + (size_t)got + 1 > log->capacity) {
-            size_t capacity = (log->size + (size_t)got + 1) * 2;
-            char *grown = realloc(log->data, capacity);
-            if (grown == NULL) {
-                log->failed = 1;
-                continue;
-            }
-            log->data = grown;
-            log->capacity = capacity;
-        }
-        memcpy(log->data + log->size, buffer, (size_t)got);
-        log->size += (size_t)got;
-    }
-}
-
-/* Waits for pid, killing its process group after limits->wall seconds
-   or when limits->cancelled says so, reading the log meanwhile. */
-static void wait_for(pid_t pid, const grade_limits *limits,
-                     log_reader *log, grade_outcome *outcome)
-{
-    double start = now_seconds();
-    int status = 0;
-    int timed_out = 0, cancelled = 0;
-    for (;;) {
-        pid_t done = waitpid(pid, &status, WNOHANG);
-        if (done == pid || (done < 0 && errno != EINTR))
-            break;
-        if (limits->cancelled != NULL &&
-            limits->cancelled(limits->cancel_context))
-            cancelled = 1;
-        if (cancelled || now_seconds() - start > limits->wall) {
-            kill(-pid, SIGKILL);
-            kill(pid, SIGKILL);
-            while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-                ;
-            timed_out = 1;
-            break;
-        }
-        if (log->fd >= 0) {
-            struct pollfd ready;
-            ready.fd = log->fd;
-            ready.events = POLLIN;
-            ready.revents = 0;
-            if (poll(&ready, 1, 2) > 0)
-                drain(log);
-        } else {
-            struct timespec pause = {0, 2000000};
-            nanosleep(&pause, NULL);
-        }
-    }
-    /* Whatever it left behind in its group goes too. */
-    kill(-pid, SIGKILL);
-    drain(log);
-    outcome->seconds = now_seconds() - start;
-    /* The grader's clock holds: a run that ended past the limit (the
-       grader was stopped, or starved) did not end within it. */
-    if (!cancelled && !timed_out && outcome->seconds > limits->wall)
-        timed_out = 1;
-    if (cancelled) {
-        outcome->ending = GRADE_CANCELLED;
-        outcome->status = SIGKILL;
-    } else if (timed_out) {
-        outcome->ending = GRADE_TIMED_OUT;
-        outcome->status = SIGKILL;
-    } else if (WIFSIGNALED(status)) {
-        outcome->ending = GRADE_SIGNALED;
-        outcome->status = WTERMSIG(status);
-    } else {
-        outcome->ending = GRADE_EXITED;
-        outcome->status = WEXITSTATUS(status);
-    }
-}
-
 /* An unlinked file for a capture (tmpfile: the program cannot reach it
    by name, swap it for a FIFO or a link). */
 static FILE *capture(void)
@@ -372,9 +111,11 @@ static rayo_status read_capture(FILE *file, uint64_t limit, char **data,
     return grade_read_fd(fileno(file), limit, data, size, &cut, err);
 }
 
-/* bwrap's exit status, from its --json-status-fd: "exit-code": N.
-   -1 when it never said (the sandbox could not be set up). */
-static int sandbox_exit_code(FILE *json)
+/* A number bwrap wrote on its --json-status-fd after key: the
+   sandbox's first process ("child-pid":), its exit status
+   ("exit-code":).  -1 when it never said (the sandbox could not be set
+   up). */
+static int sandbox_said(FILE *json, const char *key)
 {
     char *text = NULL, *p;
     size_t size;
@@ -383,9 +124,9 @@ static int sandbox_exit_code(FILE *json)
     if (read_capture(json, 65536, &text, &size, &ignored) != RAYO_OK ||
         text == NULL)
         return -1;
-    p = strstr(text, "\"exit-code\":");
+    p = strstr(text, key);
     if (p != NULL)
-        code = atoi(p + strlen("\"exit-code\":"));
+        code = atoi(p + strlen(key));
     free(text);
     return code;
 }
@@ -513,6 +254,9 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     child_fds fds;
     grade_cgroup cg;
     long max_fd = sysconf(_SC_OPEN_MAX);
+    grade_limits here = grade_limits_here(limits, ctx->sandboxed);
+    unsigned long uid = 0;
+    int counted = 0, cg_version;
     rayo_status status = RAYO_OK;
     pid_t pid;
 
@@ -558,7 +302,11 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
                                     strerror(errno));
             goto done;
         }
-        words = grade_sandbox_argv(ctx, run, FD_JSON);
+        status = grade_run_uid(ctx, &uid, err);
+        if (status != RAYO_OK)
+            goto done;
+        words = grade_sandbox_argv(ctx, run, FD_JSON, here.processes,
+                                   &counted);
         program = ctx->bwrap != NULL ? strdup(ctx->bwrap) : NULL;
         env = minimal_env(work);
         full = words;
@@ -579,31 +327,53 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     fds.json = json != NULL ? fileno(json) : -1;
     fds.name = name != NULL ? fileno(name) : -1;
     fds.file = file != NULL ? fileno(file) : -1;
-    if (limits->tree_memory > 0 || limits->processes > 0) {
-        status = grade_cgroup_create(&cg, limits->tree_memory,
-                                     limits->processes, err);
+    if (here.tree_memory > 0 || here.processes > 0) {
+        status = grade_cgroup_create(&cg, here.tree_memory, here.processes,
+                                     err);
         if (status != RAYO_OK)
             goto done;
     }
     fds.in = run->input > 0 ? run->input : -1;
+    /* Counted inside the sandbox, the processes are not limited again
+       on bwrap (there the count would be all the user's). */
+    if (counted)
+        here.processes = 0;
     pid = fork();
     if (pid < 0) {
         status = rayo_error_set(err, RAYO_ERR_IO, "grade: cannot start %s: %s",
                                 run->argv[0], strerror(errno));
         goto done;
     }
-    if (pid == 0)
-        child(program, full, env != NULL ? env : environ, dir, &fds, limits,
-              &cg, max_fd);
+    if (pid == 0) {
+        child_plan plan;
+        plan.program = program;
+        plan.argv = full;
+        plan.env = env != NULL ? env : environ;
+        plan.dir = dir;
+        plan.fds = &fds;
+        plan.limits = &here;
+        plan.cg = &cg;
+        plan.uid = uid;
+        plan.max_fd = max_fd;
+        grade_child(&plan);
+    }
     if (pipe_fds[1] >= 0) {
         close(pipe_fds[1]);
         pipe_fds[1] = -1;
     }
-    wait_for(pid, limits, &log, &got->outcome);
+    grade_wait(pid, &here, &log, &got->outcome);
     /* What the kernel did in the group, then nothing left in it. */
+    cg_version = cg.version;
     got->memory_exceeded = grade_cgroup_oom(&cg);
     got->memory_peak = grade_cgroup_peak(&cg);
     grade_cgroup_remove(&cg);
+    /* Without a group to empty, the sandbox's first process, which the
+       kernel makes take every other with it, is waited out. */
+    if (ctx->sandboxed && cg_version == 0) {
+        int first = sandbox_said(json, "\"child-pid\":");
+        if (first > 1)
+            grade_wait_gone((pid_t)first);
+    }
     if (got->outcome.ending == GRADE_CANCELLED) {
         status = rayo_error_set(err, RAYO_ERR_CANCELLED, "grade: cancelled");
         goto done;
@@ -624,7 +394,7 @@ rayo_status grade_spawn(grade_context *ctx, const grade_run *run,
     else if (got->log != NULL)
         got->log[got->log_size] = '\0';
     if (ctx->sandboxed && got->outcome.ending == GRADE_EXITED) {
-        int code = sandbox_exit_code(json);
+        int code = sandbox_said(json, "\"exit-code\":");
         if (code < 0) {
             /* bwrap never started the program: its own message. */
             size_t n = got->errors != NULL ? strcspn(got->errors, "\n") : 0;

@@ -3,18 +3,13 @@
  * be made here (tried once, for real), and the bwrap words that put one
  * run inside it.  process.c runs those words; nothing else knows them.
  *
- * Inside, a run sees a read-only system (/usr, the /bin /lib /sbin links
- * or folders, and of /etc only the compiler alternatives and the dynamic
- * loader's cache: no passwd, no shadow, no keys), a /proc of its own PID
- * namespace, a minimal /dev, no network (its own network namespace with
- * only a loopback), no IPC or UTS of the host, a new session, uid and gid
- * 65534 with no capabilities, and a read-only root.  The compiler
- * (GRADE_ROLE_TOOL) also sees the folders of the submission's sources,
- * read-only, the build folder, writable, a tmpfs of options->disk bytes
- * for its temporaries and no device but /dev/null; the student's code
- * (GRADE_ROLE_STUDENT) sees the one file it runs, read-only, and its own
- * folder, a fresh tmpfs of options->disk bytes that is gone when the run
- * ends.  Everything it started dies with the sandbox's PID namespace.
+ * Inside, a run sees a read-only system with almost nothing of /etc, a
+ * /proc of its own PID namespace, a minimal /dev, no network, IPC or UTS
+ * of the host, a new session, uid and gid 65534 with no capabilities.
+ * The compiler (GRADE_ROLE_TOOL) also sees the sources' folders
+ * read-only and the build folder; the student's code the one file it
+ * runs and a fresh tmpfs folder.  docs/grading.md ("Isolation") lists
+ * it all; this file is not where limits are chosen (limits.c, run.c).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -30,7 +25,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 /* A growing list of owned words, NULL-terminated. */
 typedef struct words {
@@ -169,17 +164,6 @@ static void add_env(words *w, const char *home, const char *tmp, int tool)
     }
 }
 
-/* The directory part of path, allocated ("." for none). */
-static char *dir_of(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    if (slash == NULL)
-        return strdup(".");
-    if (slash == path)
-        return strdup("/");
-    return strndup(path, (size_t)(slash - path));
-}
-
 /* The wrapper that runs a student's program when its image file is to
    be brought back: the program (without the wrapper's descriptors),
    then everything else in the sandbox killed, then the one image file
@@ -200,7 +184,7 @@ static const char collect_script[] =
     "exit $s\n";
 
 char **grade_sandbox_argv(const grade_context *ctx, const grade_run *run,
-                          int json_fd)
+                          int json_fd, unsigned long processes, int *counted)
 {
     words w = {NULL, 0, 0, 0};
     char number[32];
@@ -218,13 +202,18 @@ char **grade_sandbox_argv(const grade_context *ctx, const grade_run *run,
         add2(&w, "--tmpfs", "/tmp");
         add2(&w, "--dir", ctx->cwd);
         for (i = 0; i < ctx->source_count; i++) {
-            char *dir = dir_of(ctx->absolute[i]);
-            if (dir == NULL) {
+            /* Under a uid of its own, a copy it can read (uid.c). */
+            char *dir = grade_dir_of(ctx->absolute[i]);
+            char *copy = ctx->run_uid != 0 ? grade_source_copy(ctx, i)
+                                           : NULL;
+            if (dir == NULL || (ctx->run_uid != 0 && copy == NULL)) {
+                free(dir);
                 w.failed = 1;
                 break;
             }
-            add3(&w, "--ro-bind", dir, dir);
+            add3(&w, "--ro-bind", copy != NULL ? copy : dir, dir);
             free(dir);
+            free(copy);
         }
         add3(&w, "--bind", ctx->dir, ctx->dir);
         add(&w, "--remount-ro");
@@ -244,6 +233,19 @@ char **grade_sandbox_argv(const grade_context *ctx, const grade_run *run,
     snprintf(number, sizeof number, "%d", json_fd);
     add2(&w, "--json-status-fd", number);
     add(&w, "--");
+    *counted = 0;
+    if (processes > 0) {
+        /* Set inside, the limit counts the processes of the sandbox's
+           user namespace; set on bwrap, all those of the user. */
+        char *prlimit = grade_which("prlimit"), nproc[64];
+        if (prlimit != NULL) {
+            snprintf(nproc, sizeof nproc, "--nproc=%lu:%lu", processes,
+                     processes);
+            add3(&w, prlimit, nproc, "--");
+            *counted = 1;
+        }
+        free(prlimit);
+    }
     if (run->role == GRADE_ROLE_STUDENT && run->collect) {
         add3(&w, "/bin/sh", "-c", collect_script);
         add(&w, "sh");

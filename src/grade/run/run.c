@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 #define QUOTED_LINES 5
 

@@ -21,7 +21,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 char *grade_path_join(const char *dir, const char *name)
 {
@@ -36,6 +36,16 @@ char *grade_path_join(const char *dir, const char *name)
     path[a] = '/';
     memcpy(path + a + 1, name, b + 1);
     return path;
+}
+
+char *grade_dir_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    if (slash == NULL)
+        return strdup(".");
+    if (slash == path)
+        return strdup("/");
+    return strndup(path, (size_t)(slash - path));
 }
 
 char *grade_concat(const char *a, const char *b)

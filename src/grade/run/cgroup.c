@@ -1,18 +1,15 @@
 /*
  * cgroup.c - limits on the whole tree of a run's processes: a control
- * group of its own per run, with a memory limit on the total of the
- * tree (swap included) and a limit on the number of its processes,
- * enforced by the kernel whatever the processes do (fork, exec, run as
- * another uid in a user namespace).  process.c puts the child in it
- * before exec and asks, after the run, whether the kernel killed for
- * memory; then whatever is left in it is killed and it is removed.
+ * group of its own per run, bounding the tree's memory (swap included)
+ * and its processes whatever they do (fork, exec, another uid in a user
+ * namespace).  process.c puts the child in it before exec and asks
+ * afterwards whether the kernel killed for memory; then what is left in
+ * it is killed and it is removed.
  *
- * Chosen at run time: cgroup v2 when the grader's own group offers the
- * memory and pids controllers (as root, or a systemd user session with
- * delegation), else cgroup v1 (the memory and pids hierarchies), else
- * none: the per-process rlimits of process.c are then all that holds,
- * and the report says so.  Not a general cgroup library: two limits,
- * one level below the grader's own group.
+ * cgroup v2 where the grader's group offers the memory and pids
+ * controllers, else v1, else none (or RAYO_GRADE_NO_CGROUP=1, for
+ * tests: limits.c then bounds the tree by a product of per-process
+ * limits).  Not a general cgroup library: two limits, one level down.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -28,7 +25,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 /* What the probe found, kept for the process's life. */
 static pthread_once_t probed = PTHREAD_ONCE_INIT;
@@ -258,6 +255,12 @@ static void remove_stale(const char *dir)
 
 static void probe(void)
 {
+    const char *off = getenv("RAYO_GRADE_NO_CGROUP");
+    if (off != NULL && strcmp(off, "1") == 0) {
+        snprintf(reason, sizeof reason, "cgroups turned off "
+                                        "(RAYO_GRADE_NO_CGROUP=1)");
+        return;
+    }
     if (group_dir(NULL, "", base[0], sizeof base[0]) && v2_ready(base[0]) &&
         can_make(base[0], "memory.max", "1073741824")) {
         kind = 2;
@@ -452,44 +455,4 @@ void grade_cgroup_remove(grade_cgroup *cg)
         cg->dirs[i] = NULL;
     }
     cg->version = 0;
-}
-
-/* Whole MiB, as the options take them. */
-static unsigned long long mib(uint64_t bytes)
-{
-    return (unsigned long long)(bytes >> 20);
-}
-
-void grade_limits_describe(const rayo_grade_options *o, char *text,
-                           size_t room)
-{
-    char cpu[32];
-    int version = grade_cgroup_kind(NULL, 0);
-    if (o->cpu > 0)
-        snprintf(cpu, sizeof cpu, "%g s CPU", o->cpu);
-    else
-        snprintf(cpu, sizeof cpu, "no CPU limit");
-    if (version > 0)
-        snprintf(text, room, "limits: cgroup v%d on the whole tree (%llu MiB "
-                             "memory, %lu processes); per process %s, "
-                             "%llu MiB files, %d descriptors",
-                 version, mib(o->memory), o->processes, cpu,
-                 mib(o->output_limit), GRADE_OPEN_FILES);
-    else if (geteuid() == 0)
-        /* RLIMIT_NPROC does not bind for root, not even inside the
-           sandbox's user namespace: nothing bounds the total. */
-        snprintf(text, room, "limits: per process only, no cgroup here "
-                             "(%llu MiB address space each, no bound on "
-                             "the processes of root nor on their total; "
-                             "%s, %llu MiB files, %d descriptors)",
-                 mib(o->memory), cpu, mib(o->output_limit),
-                 GRADE_OPEN_FILES);
-    else
-        snprintf(text, room, "limits: per process only, no cgroup here "
-                             "(%llu MiB address space each, %lu processes "
-                             "of the user: at most %llu MiB in all; %s, "
-                             "%llu MiB files, %d descriptors)",
-                 mib(o->memory), o->processes,
-                 mib(o->memory) * (unsigned long long)o->processes, cpu,
-                 mib(o->output_limit), GRADE_OPEN_FILES);
 }
