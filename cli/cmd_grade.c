@@ -516,7 +516,7 @@ static int is_stdout(const char *path)
 static int write_whole(const char *path, const char *text, size_t size)
 {
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     rayo_error_clear(&err);
     fflush(stdout);
     if (cli_output_open(&out, path, &err) != RAYO_OK)
@@ -601,7 +601,7 @@ static const char *base_name(const char *path)
 static int grade_single(int argc, char **argv, int first, grade_request *req)
 {
     rayo_grade_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     char **sources = NULL;
     size_t count = 0;
     int exit_status, export_status;
@@ -795,7 +795,7 @@ static int grade_each(const char *dir, grade_request *req)
     char *csv_text = NULL;
     size_t csv_size = 0;
     class_printer p;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     char isolation[512];
     int status;
     rayo_error_clear(&err);

@@ -157,7 +157,7 @@ rayo_course_exercise cli_course_picture(const rayo_image *image)
         rayo_picture_kind_exercise(rayo_picture_kind_of(image));
     char path[4096];
     rayo_image course;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     int same;
     /* The course's images are 640x480: nothing else is read for others. */
     if (e >= RAYO_COURSE_EXERCISES || image->info.width != 640 ||

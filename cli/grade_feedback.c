@@ -70,7 +70,7 @@ int cli_feedback_write(const char *dir, const cli_student *student,
     size_t room = strlen(dir) + strlen(student->safe) + 8;
     char *path = malloc(room);
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     int status = CLI_EXIT_OK;
     if (path == NULL) {
         cli_sayf("--feedback: %s: out of memory", dir);

@@ -280,7 +280,7 @@ static rayo_status add_zip(builder *b, cli_student *s, const char *path,
 {
     char **names = NULL;
     size_t count = 0, others = 0, i;
-    rayo_error zip_err;
+    rayo_error zip_err = RAYO_ERROR_INIT(cli_lang());
     rayo_status status = staged_folder(b, s);
     if (status != RAYO_OK)
         return status;

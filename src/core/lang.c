@@ -1,7 +1,7 @@
 /*
  * lang.c - naming and choosing a language: codes, --lang's parsing, the
  * environment's choice, and numbers written with the language's decimal
- * separator.
+ * separator, and messages formatted with it (rayo_lang_vformat).
  *
  * The environment is read as gettext reads it, with one difference on
  * purpose: LANGUAGE counts even when the locale is "C" or not generated,
@@ -16,6 +16,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "format_point.h"
 
 static const char *const codes[RAYO_LANG_COUNT] = {"en", "es"};
 
@@ -102,4 +104,16 @@ char *rayo_lang_decimal(rayo_lang lang, double value, int decimals,
     if ((point = strpbrk(buffer, ".,")) != NULL)
         *point = lang == RAYO_LANG_ES ? ',' : '.';
     return buffer;
+}
+
+void rayo_lang_vformat(rayo_lang lang, char *buffer, size_t room,
+                       const char *format, va_list args)
+{
+    const char *text = rayo_gettext(lang, format);
+    if (room == 0)
+        return;
+    if (lang == RAYO_LANG_ES)
+        rayo_format_point(buffer, room, ',', text, args);
+    else
+        vsnprintf(buffer, room, text, args);
 }
