@@ -18,6 +18,10 @@
  * vsnprintf as it is.  out is always terminated when room > 0.
  */
 void rayo_format_point(char *out, size_t room, char point,
-                       const char *format, va_list args);
+                       const char *format, va_list args)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 4, 0)))
+#endif
+    ;
 
 #endif

@@ -88,6 +88,12 @@ rayo_lang rayo_lang_from_environment(void)
     return RAYO_LANG_EN;
 }
 
+/* The decimal separator lang writes numbers with. */
+static char decimal_point(rayo_lang lang)
+{
+    return lang == RAYO_LANG_ES ? ',' : '.';
+}
+
 char *rayo_lang_decimal(rayo_lang lang, double value, int decimals,
                         char *buffer, size_t room)
 {
@@ -102,18 +108,18 @@ char *rayo_lang_decimal(rayo_lang lang, double value, int decimals,
     /* printf's separator is the C locale's '.' unless the program set
        another locale; either way it becomes the language's. */
     if ((point = strpbrk(buffer, ".,")) != NULL)
-        *point = lang == RAYO_LANG_ES ? ',' : '.';
+        *point = decimal_point(lang);
     return buffer;
 }
 
 void rayo_lang_vformat(rayo_lang lang, char *buffer, size_t room,
                        const char *format, va_list args)
 {
-    const char *text = rayo_gettext(lang, format);
     if (room == 0)
         return;
-    if (lang == RAYO_LANG_ES)
-        rayo_format_point(buffer, room, ',', text, args);
+    if (decimal_point(lang) != '.')
+        rayo_format_point(buffer, room, decimal_point(lang),
+                          rayo_gettext(lang, format), args);
     else
-        vsnprintf(buffer, room, text, args);
+        vsnprintf(buffer, room, rayo_gettext(lang, format), args);
 }
