@@ -72,11 +72,11 @@ static int push(void *array, size_t *count, size_t size, const void *item)
 const char *cli_layout_name(cli_layout layout)
 {
     switch (layout) {
-    case CLI_LAYOUT_FOLDER: return "a folder";
-    case CLI_LAYOUT_MOODLE: return "Moodle";
-    case CLI_LAYOUT_CLASSROOM: return "a GitHub Classroom repository";
-    case CLI_LAYOUT_ZIP: return "a zip file";
-    case CLI_LAYOUT_FILES: return "files named by student";
+    case CLI_LAYOUT_FOLDER: return N_("a folder");
+    case CLI_LAYOUT_MOODLE: return N_("Moodle");
+    case CLI_LAYOUT_CLASSROOM: return N_("a GitHub Classroom repository");
+    case CLI_LAYOUT_ZIP: return N_("a zip file");
+    case CLI_LAYOUT_FILES: return N_("files named by student");
     }
     return "unknown";
 }
@@ -479,9 +479,9 @@ static rayo_status add_flat(builder *b, cli_flat_file *f, size_t count)
                                    ? "the student has another file of "
                                      "that own name"
                                    : errno == EFBIG
-                                   ? "larger than 1 MiB; expected a C "
-                                     "source"
-                                   : "it could not be copied");
+                                   ? N_("larger than 1 MiB; expected a C "
+                                        "source")
+                                   : N_("it could not be copied"));
             free(from);
             if (j != k)
                 f[j].own = NULL;
