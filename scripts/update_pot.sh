@@ -12,8 +12,9 @@
 # of rayo_error_set(err, status, "...") and of the scene lexer's
 # scene_lexer_fail(lx, column, status, "..."), which look their format
 # up in the error's language (include/rayo/status.h), and the reasons
-# grade's roster gives leave_out(b, name, "..."), translated where they
-# are shown.  References name
+# grade's roster gives leave_out(b, name, "...") and the phrases the
+# image readers put after "expected" (found_error, rayo_source_end_error),
+# translated where they are put in.  References name
 # the file without a line number, so that the template changes only when
 # a message does, not when code moves.  Sources are
 # listed in C's byte order so the template does not depend on the
@@ -31,7 +32,8 @@ LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
     --keyword=rayo_gettext:2 --keyword=rayo_ngettext:2,3 \
     --keyword=rayo_error_set:3 --flag=rayo_error_set:3:c-format \
     --keyword=scene_lexer_fail:4 --flag=scene_lexer_fail:4:c-format \
-    --keyword=leave_out:3 \
+    --keyword=leave_out:3 --keyword=found_error:4 \
+    --keyword=rayo_source_end_error:2 \
     --add-comments=TRANSLATORS: --add-location=file --no-wrap --sort-by-file \
     --output="$tmp" $files
 if [ -f "$out" ] &&

@@ -1,8 +1,9 @@
 #!/bin/sh
 # i18n_errors.t - the library's error messages in the command's language
-# (docs/i18n.md): a malformed image, a bad scene file, an output name
-# whose format cannot be told, an unreadable file and a bad --fov give
-# Spanish under --lang es and LANG=es_AR.UTF-8 (with no Spanish locale
+# (docs/i18n.md): a malformed image (no image at all, a PBM with a bad
+# pixel, one cut short, the phrase after "expected" translated too), a
+# bad scene file, an output name whose format cannot be told, an
+# unreadable file and a bad --fov give Spanish under --lang es and LANG=es_AR.UTF-8 (with no Spanish locale
 # generated), English under --lang en and LANG=C; always one line on
 # stderr, nothing on stdout, and the same exit status in both languages.
 # Numbers in a Spanish message have a decimal comma; the system's reason
@@ -11,6 +12,8 @@
 
 cd "$TMP" || exit 1
 printf 'hola\n' >magic.pbm
+printf 'P1\n3 2\n1 0 1\n0 x 1\n' >pixel.pbm
+printf 'P1\n2 2\n1 0\n' >short.pbm
 printf 'camera fov 200.5\nsphere 0 0 -3 1\n' >fov.scene
 
 # one NAME STATUS LINE ARGS...: rayo ARGS gives exit status STATUS,
@@ -48,6 +51,14 @@ both "a file that is no image" 2 \
     "rayo: magic.pbm: byte 0: se encontró \"ho\"; se esperaba un número mágico de Netpbm (P1-P6), una firma PNG, el \"BM\" de un BMP o el ff d8 de un JPEG" \
     "rayo: magic.pbm: byte 0: found \"ho\"; expected a Netpbm magic number (P1-P6), a PNG signature, a BMP's \"BM\" or a JPEG's ff d8" \
     view magic.pbm
+both "a PBM with a letter for a pixel" 2 \
+    "rayo: pixel.pbm: byte 15 (línea 4): se encontró 'x'; se esperaba 0 o 1 (un píxel de PBM)" \
+    "rayo: pixel.pbm: byte 15 (line 4): found 'x'; expected 0 or 1 (a PBM pixel)" \
+    view pixel.pbm
+both "a PBM cut short" 2 \
+    "rayo: short.pbm: byte 11 (línea 4): se encontró el final del archivo; se esperaba más píxeles (0 o 1)" \
+    "rayo: short.pbm: byte 11 (line 4): found the end of the file; expected more pixels (0 or 1)" \
+    compare short.pbm short.pbm
 both "a scene file's field of view" 2 \
     "rayo: fov.scene:1:12: no se acepta el campo de visión 200,5; se esperaban grados estrictamente entre 0 y 180" \
     "rayo: fov.scene:1:12: field of view 200.5 is not accepted; expected degrees strictly between 0 and 180" \
