@@ -712,7 +712,7 @@ static void write_feedback(class_printer *p, const cli_student *student,
     int status;
     FILE *stream = open_memstream(&text, &size);
     if (stream == NULL) {
-        cli_sayf("--feedback: %s: out of memory", p->req->feedback);
+        cli_sayf(_("--feedback: %s: out of memory"), p->req->feedback);
         status = CLI_EXIT_FAILURE;
     } else {
         if (report != NULL)
@@ -721,7 +721,7 @@ static void write_feedback(class_printer *p, const cli_student *student,
             fprintf(stream, "rayo grade could not grade this submission: "
                     "%s\n", error);
         if (fclose(stream) != 0 || text == NULL) {
-            cli_sayf("--feedback: %s: out of memory", p->req->feedback);
+            cli_sayf(_("--feedback: %s: out of memory"), p->req->feedback);
             status = CLI_EXIT_FAILURE;
         } else {
             status = cli_feedback_write(p->req->feedback, student, text,
@@ -808,7 +808,7 @@ static int grade_each(const char *dir, grade_request *req)
     folders = malloc(count * sizeof *folders);
     if (folders == NULL) {
         cli_roster_free(&roster);
-        cli_sayf("%s: out of memory", dir);
+        cli_sayf(_("%s: out of memory"), dir);
         return CLI_EXIT_FAILURE;
     }
     for (i = 0; i < count; i++)
