@@ -3,9 +3,10 @@
 # (docs/i18n.md): a malformed image (no image at all, a PBM with a bad
 # pixel, one cut short, the phrase after "expected" translated too), a
 # bad scene file, an output name whose format cannot be told, an
-# unreadable file and a bad --fov give Spanish under --lang es and LANG=es_AR.UTF-8 (with no Spanish locale
-# generated), English under --lang en and LANG=C; always one line on
-# stderr, nothing on stdout, and the same exit status in both languages.
+# unreadable file and a bad --fov give Spanish under --lang es and
+# LANG=es_AR.UTF-8 (with no Spanish locale generated), English under
+# --lang en and LANG=C; always one line on stderr, nothing on stdout,
+# and the same exit status in both languages.
 # Numbers in a Spanish message have a decimal comma; the system's reason
 # for an unreadable file (strerror) stays the system's.
 . "$(dirname "$0")/lib.sh"
