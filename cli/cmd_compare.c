@@ -226,7 +226,7 @@ static int write_diff(const char *path, const rayo_image *reference,
                       const rayo_compare_options *options)
 {
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     rayo_error_clear(&err);
     if (cli_output_open(&out, path, &err) != RAYO_OK)
         return cli_report(&err);
@@ -276,7 +276,7 @@ static int compare_images(const compare_request *req,
                           const rayo_read_report *clamped)
 {
     rayo_compare_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     int status;
     rayo_compare_options options = req->options;
     rayo_error_clear(&err);
@@ -321,7 +321,7 @@ static uint64_t surplus_pixels(const input *in)
 static void *read_input(void *context)
 {
     input *in = context;
-    rayo_error_clear(&in->err);
+    rayo_error_init(&in->err, cli_lang());
     rayo_read_options options;
     memset(&options, 0, sizeof options);
     options.clamp = in->clamp;

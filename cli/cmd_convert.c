@@ -136,7 +136,7 @@ static int parse_request(int argc, char **argv, convert_request *req)
 static int choose_format(const convert_request *req,
                          const rayo_image_info *info, rayo_format *format)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     if (req->format != NULL) {
         if (rayo_format_parse(req->format, format, &err) != RAYO_OK)
             return cli_usage_error(_("--format: %s is not a format; "
@@ -298,7 +298,7 @@ static int convert(const convert_request *req)
     const rayo_image *fit;
     rayo_read_report report;
     rayo_write_options options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     int exit_status;
     /* Only a '-' OUT without --format waits for the image to decide. */
     int decided = req->format != NULL || strcmp(req->output, "-") != 0;

@@ -320,7 +320,7 @@ static const char *base_name(const char *path)
 static int grade_single(int argc, char **argv, int first, grade_request *req)
 {
     rayo_grade_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     char **sources = NULL;
     size_t count = 0;
     int exit_status, export_status;

@@ -318,7 +318,7 @@ static int is_regular_or_new(const char *path)
 
 static int choose_format(const render_request *req, rayo_format *format)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     rayo_shade_mode mode = effective_shade(req);
     rayo_format netpbm = netpbm_for_shade(mode);
     const char *ext = rayo_format_name(netpbm);
@@ -489,7 +489,7 @@ int cli_render(int argc, char **argv)
     rayo_render_options options;
     rayo_write_options write_options;
     rayo_output *out = NULL;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     cli_progress progress;
     cli_preview *preview = NULL;
     int exit_status, on_terminal;

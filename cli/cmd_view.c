@@ -107,7 +107,7 @@ int cli_print_preview(const rayo_image *image,
 {
     char *text;
     size_t length;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     rayo_error_clear(&err);
     if (rayo_preview_render(image, options, &text, &length, NULL, NULL,
                             &err) != RAYO_OK)
@@ -173,7 +173,7 @@ int cli_view(int argc, char **argv)
 {
     rayo_preview_options options;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     const char *file = NULL;
     char course_path[4096];
     int status;

@@ -161,7 +161,7 @@ rayo_course_exercise cli_course_picture(const rayo_image *image)
     const rayo_course_info *info = rayo_course_info_of(e);
     char path[4096];
     rayo_image course;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     int same;
     /* Only a picture of the exercise's size is read against its image. */
     if (info == NULL || image->info.width != info->width ||

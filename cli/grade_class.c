@@ -60,7 +60,7 @@ static void grade_slot(class_run *run, size_t i)
     g->index = i;
     g->folder = run->folders[i];
     g->options = &slot->options;
-    rayo_error_clear(&g->err);
+    rayo_error_init(&g->err, cli_lang());
     memset(&g->report, 0, sizeof g->report);
     slot->options = *run->template;
     slot->options.cancelled = run_cancelled;

@@ -95,7 +95,7 @@ static void write_feedback(class_printer *p, const cli_student *student,
     int status;
     FILE *stream = open_memstream(&text, &size);
     if (stream == NULL) {
-        cli_sayf("--feedback: %s: out of memory", p->req->feedback);
+        cli_sayf(_("--feedback: %s: out of memory"), p->req->feedback);
         status = CLI_EXIT_FAILURE;
     } else {
         if (report != NULL)
@@ -104,7 +104,7 @@ static void write_feedback(class_printer *p, const cli_student *student,
             fprintf(stream, "rayo grade could not grade this submission: "
                     "%s\n", error);
         if (fclose(stream) != 0 || text == NULL) {
-            cli_sayf("--feedback: %s: out of memory", p->req->feedback);
+            cli_sayf(_("--feedback: %s: out of memory"), p->req->feedback);
             status = CLI_EXIT_FAILURE;
         } else {
             status = cli_feedback_write(p->req->feedback, student, text,
@@ -178,7 +178,7 @@ int cli_grade_each(const char *dir, grade_request *req)
     char *csv_text = NULL;
     size_t csv_size = 0;
     class_printer p;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     char isolation[512];
     int status;
     rayo_error_clear(&err);
@@ -191,7 +191,7 @@ int cli_grade_each(const char *dir, grade_request *req)
     folders = malloc(count * sizeof *folders);
     if (folders == NULL) {
         cli_roster_free(&roster);
-        cli_sayf("%s: out of memory", dir);
+        cli_sayf(_("%s: out of memory"), dir);
         return CLI_EXIT_FAILURE;
     }
     for (i = 0; i < count; i++)

@@ -23,7 +23,7 @@
 void cli_roster_say(const char *dir, const cli_roster *roster)
 {
     size_t i, j;
-    cli_sayf("%s: how the submissions were grouped (%zu in all)", dir,
+    cli_sayf(_("%s: how the submissions were grouped (%zu in all)"), dir,
              roster->count);
     for (i = 0; i < roster->count; i++) {
         const cli_student *s = &roster->students[i];
@@ -35,18 +35,18 @@ void cli_roster_say(const char *dir, const cli_roster *roster)
         for (j = 0; j < s->file_count; j++)
             fprintf(list, "%s%s", j > 0 ? ", " : "", s->files[j]);
         if (s->file_count == 0)
-            fputs("no C source", list);
+            fputs(_("no C source"), list);
         if (fclose(list) != 0 || files == NULL) {
             free(files);
             return;
         }
-        cli_sayf("%s (%s): %s", s->name, cli_layout_name(s->layout),
+        cli_sayf("%s (%s): %s", s->name, _(cli_layout_name(s->layout)),
                  files);
         free(files);
     }
     for (i = 0; i < roster->unplaced_count; i++)
-        cli_sayf("left out: %s (%s)", roster->unplaced[i].name,
-                 roster->unplaced[i].why);
+        cli_sayf(_("left out: %s (%s)"), roster->unplaced[i].name,
+                 _(roster->unplaced[i].why));
 }
 
 int cli_feedback_prepare(const char *dir)
@@ -57,8 +57,8 @@ int cli_feedback_prepare(const char *dir)
         return CLI_EXIT_FAILURE;
     }
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        cli_sayf("--feedback: %s: not a folder; expected a folder for the "
-                 "students' reports", dir);
+        cli_sayf(_("--feedback: %s: not a folder; expected a folder for "
+                   "the students' reports"), dir);
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
@@ -70,10 +70,10 @@ int cli_feedback_write(const char *dir, const cli_student *student,
     size_t room = strlen(dir) + strlen(student->safe) + 8;
     char *path = malloc(room);
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     int status = CLI_EXIT_OK;
     if (path == NULL) {
-        cli_sayf("--feedback: %s: out of memory", dir);
+        cli_sayf(_("--feedback: %s: out of memory"), dir);
         return CLI_EXIT_FAILURE;
     }
     snprintf(path, room, "%s/%s.txt", dir, student->safe);

@@ -23,7 +23,7 @@ int cli_grade_is_stdout(const char *path)
 static int write_whole(const char *path, const char *text, size_t size)
 {
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     rayo_error_clear(&err);
     fflush(stdout);
     if (cli_output_open(&out, path, &err) != RAYO_OK)

@@ -19,11 +19,11 @@
 const char *cli_layout_name(cli_layout layout)
 {
     switch (layout) {
-    case CLI_LAYOUT_FOLDER: return "a folder";
-    case CLI_LAYOUT_MOODLE: return "Moodle";
-    case CLI_LAYOUT_CLASSROOM: return "a GitHub Classroom repository";
-    case CLI_LAYOUT_ZIP: return "a zip file";
-    case CLI_LAYOUT_FILES: return "files named by student";
+    case CLI_LAYOUT_FOLDER: return N_("a folder");
+    case CLI_LAYOUT_MOODLE: return N_("Moodle");
+    case CLI_LAYOUT_CLASSROOM: return N_("a GitHub Classroom repository");
+    case CLI_LAYOUT_ZIP: return N_("a zip file");
+    case CLI_LAYOUT_FILES: return N_("files named by student");
     }
     return "unknown";
 }

@@ -122,7 +122,7 @@ rayo_status roster_add_zip(builder *b, cli_student *s, const char *path,
 {
     char **names = NULL;
     size_t count = 0, others = 0, i;
-    rayo_error zip_err;
+    rayo_error zip_err = RAYO_ERROR_INIT(cli_lang());
     rayo_status status = staged_folder(b, s);
     if (status != RAYO_OK)
         return status;
@@ -288,9 +288,9 @@ rayo_status roster_add_flat(builder *b, cli_flat_file *f, size_t count)
                     b, f[j].entry,
                     errno == EEXIST  ? "the student has another file of "
                                        "that own name"
-                    : errno == EFBIG ? "larger than 1 MiB; expected a C "
-                                       "source"
-                                     : "it could not be copied");
+                    : errno == EFBIG ? N_("larger than 1 MiB; expected a C "
+                                          "source")
+                                     : N_("it could not be copied"));
             free(from);
             if (j != k)
                 f[j].own = NULL;

@@ -104,10 +104,13 @@ void cli_tally_print(FILE *stream, const cli_tally *tally)
     if (tally->kind_count > 1)
         qsort(tally->kinds, tally->kind_count, sizeof *tally->kinds,
               by_count);
-    fprintf(stream, "summary: %zu passed, %zu failed, %zu could not be "
-            "graded\n", tally->passed, tally->failed, tally->errors);
-    fprintf(stream, "%-10s %6s  %s\n", "criterion", "failed",
-            "mistakes, as the report names them (students)");
+    fprintf(stream, _("summary: %zu passed, %zu failed, %zu could not be "
+                      "graded\n"),
+            tally->passed, tally->failed, tally->errors);
+    /* TRANSLATORS: the columns of grade's summary table; the first
+       within 10 columns, the second within 6. */
+    fprintf(stream, "%-10s %6s  %s\n", _("criterion"), _("failed"),
+            _("mistakes, as the report names them (students)"));
     for (c = 0; c < RAYO_GRADE_CRITERIA; c++) {
         size_t shown = 0, more = 0;
         fprintf(stream, "%-10s %6zu", rayo_grade_criterion_name(c),
@@ -123,7 +126,10 @@ void cli_tally_print(FILE *stream, const cli_tally *tally)
             shown++;
         }
         if (more > 0)
-            fprintf(stream, "\n%17s  ... and %zu more kinds", "", more);
+            /* TRANSLATORS: the English says "kinds" for 1 as well. */
+            fprintf(stream, _n("\n%17s  ... and %zu more kinds",
+                               "\n%17s  ... and %zu more kinds", more),
+                    "", more);
         fputc('\n', stream);
     }
 }

@@ -47,7 +47,8 @@ int cli_report(const rayo_error *err)
         return CLI_EXIT_USAGE;
     case RAYO_ERR_NOMEM:
         /* Its own status (not an output's 1), and what to change. */
-        if (strcmp(err->message, "out of memory") == 0)
+        if (strcmp(err->message,
+                   rayo_gettext(err->lang, "out of memory")) == 0)
             cli_say(_("out of memory: the machine's memory, or the address "
                       "space that ulimit -v allows, is too small for this"));
         else

@@ -65,7 +65,7 @@ rayo_status cli_preview_rows(void *preview, const unsigned char *rows,
 int cli_preview_print(const cli_preview *preview, FILE *stream)
 {
     rayo_preview_options options = preview->options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     char *text;
     size_t length;
     rayo_error_clear(&err);

@@ -21,7 +21,7 @@ int cli_unreadable(const rayo_error *err)
 
 int cli_flush_text(FILE *stream, const char *name)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(cli_lang());
     int saved;
     errno = 0;
     if (fflush(stream) == 0 && !ferror(stream))

@@ -106,27 +106,27 @@ static const char *refused(const zip_entry *e)
     size_t i, start = 0;
     unsigned type = (unsigned)(e->attributes >> 16) & 0170000u;
     if (e->name_length == 0)
-        return "has no name";
+        return N_("has no name");
     if (memchr(e->name, '\0', e->name_length) != NULL)
-        return "has a NUL byte in its name";
+        return N_("has a NUL byte in its name");
     if (e->name[0] == '/' || e->name[0] == '\\' ||
         (e->name_length >= 2 && e->name[1] == ':'))
-        return "is an absolute path";
+        return N_("is an absolute path");
     for (i = 0; i <= e->name_length; i++) {
         if (i == e->name_length || e->name[i] == '/' || e->name[i] == '\\') {
             if (i - start == 2 && e->name[start] == '.' &&
                 e->name[start + 1] == '.')
-                return "climbs out of the folder with '..'";
+                return N_("climbs out of the folder with '..'");
             start = i + 1;
         }
     }
     if ((e->made_by >> 8) == 3 && type == 0120000u)
-        return "is a symbolic link";
+        return N_("is a symbolic link");
     if ((e->made_by >> 8) == 3 && type != 0 && type != 0100000u &&
         type != 0040000u)
-        return "is not a plain file or folder";
+        return N_("is not a plain file or folder");
     if (e->flags & 1u)
-        return "is encrypted";
+        return N_("is encrypted");
     return NULL;
 }
 
@@ -212,16 +212,16 @@ static rayo_status read_entries(const char *path, const unsigned char *zip,
         why = refused(&e[i]);
         if (why == NULL && is_source(&e[i]) && e[i].method != 0 &&
             e[i].method != 8)
-            why = "is compressed with a method other than stored or "
-                  "deflated";
+            why = N_("is compressed with a method other than stored or "
+                     "deflated");
         if (why == NULL && is_source(&e[i]) && e[i].size > CLI_ZIP_MAX_FILE)
-            why = "inflates past the 1 MiB a source may have";
+            why = N_("inflates past the 1 MiB a source may have");
         if (why != NULL) {
             shown(&e[i], text);
             free(e);
             return rayo_error_set(err, RAYO_ERR_FORMAT, "%s: the entry "
                                   "'%s' %s; refusing the archive",
-                                  path, text, why);
+                                  path, text, _(why));
         }
         at += CENTRAL_SIZE + e[i].name_length + get16(zip + at + 30) +
               get16(zip + at + 32);

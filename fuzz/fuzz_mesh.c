@@ -23,7 +23,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rayo_mesh_report report;
     rayo_mesh_placement placement;
     rayo_scene *scene;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     size_t i, left_out = 0;
     rayo_error_clear(&err);

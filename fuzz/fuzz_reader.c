@@ -15,7 +15,7 @@
 static void convert_all(const rayo_image *image)
 {
     rayo_image out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status (*const to[3])(const rayo_image *, rayo_image *,
                                rayo_error *) = {
         rayo_image_to_bit, rayo_image_to_gray, rayo_image_to_rgb};
@@ -34,7 +34,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     rayo_image image;
     rayo_read_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     rayo_error_clear(&err);
     status = rayo_image_read_memory(data, size, "fuzz", &image, &report, &err);

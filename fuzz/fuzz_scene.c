@@ -23,7 +23,7 @@ static void render_small(const rayo_scene_file *file)
     rayo_camera camera;
     rayo_render_options options;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     spec.width = 6;
     spec.height = 4;
@@ -48,7 +48,7 @@ static void render_small(const rayo_scene_file *file)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     rayo_scene_file file;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     rayo_error_clear(&err);
     status = rayo_scene_file_parse(&file, FUZZ_NAME, (const char *)data, size,

@@ -58,7 +58,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *tmp = getenv("TMPDIR");
     char zip[4096], dest[4096], **names = NULL;
     size_t count = 0, others = 0, i;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     FILE *file;
     int fd;

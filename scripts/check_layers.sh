@@ -23,7 +23,7 @@ rank() {
 }
 home() { # the layer a public header belongs to
     case $1 in
-    status | limits | lang | vec3 | export | cpu) echo core ;;
+    status | limits | lang | lang_id | vec3 | export | cpu) echo core ;;
     image | image_convert | row_sink) echo image ;;
     output) echo io ;;
     reader | writer | mesh) echo formats ;;

@@ -8,7 +8,13 @@
 #
 # The marks (docs/i18n.md): _("...") and N_("...") in the command,
 # _n("one", "many", n) for plurals, rayo_gettext(lang, "...") and
-# rayo_ngettext(lang, "one", "many", n) in the library.  References name
+# rayo_ngettext(lang, "one", "many", n) in the library, and the formats
+# of rayo_error_set(err, status, "...") and of the scene lexer's
+# scene_lexer_fail(lx, column, status, "..."), which look their format
+# up in the error's language (include/rayo/status.h), and the reasons
+# grade's roster gives leave_out(b, name, "...") and the phrases the
+# image readers put after "expected" (found_error, rayo_source_end_error),
+# translated where they are put in.  References name
 # the file without a line number, so that the template changes only when
 # a message does, not when code moves.  Sources are
 # listed in C's byte order so the template does not depend on the
@@ -24,6 +30,10 @@ tmp="$out.tmp"
 LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
     --keyword= --keyword=_ --keyword=N_ --keyword=_n:1,2 \
     --keyword=rayo_gettext:2 --keyword=rayo_ngettext:2,3 \
+    --keyword=rayo_error_set:3 --flag=rayo_error_set:3:c-format \
+    --keyword=scene_lexer_fail:4 --flag=scene_lexer_fail:4:c-format \
+    --keyword=roster_leave_out:3 --keyword=pnm_found_error:4 \
+    --keyword=rayo_source_end_error:2 \
     --add-comments=TRANSLATORS: --add-location=file --no-wrap --sort-by-file \
     --output="$tmp" $files
 if [ -f "$out" ] &&

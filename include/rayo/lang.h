@@ -15,20 +15,18 @@
 #ifndef RAYO_LANG_H
 #define RAYO_LANG_H
 
+#include <stdarg.h>
 #include <stddef.h>
 
 #include "rayo/export.h"
+#include "rayo/lang_id.h"
 #include "rayo/status.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-typedef enum rayo_lang {
-    RAYO_LANG_EN = 0, /* English: the sources' own text */
-    RAYO_LANG_ES      /* Spanish (rioplatense): po/es.po */
-} rayo_lang;
-#define RAYO_LANG_COUNT 2
+/* rayo_lang (RAYO_LANG_EN, RAYO_LANG_ES) and RAYO_LANG_COUNT: lang_id.h */
 
 /* "en", "es": the code of the language, as --lang and po/ name it. */
 RAYO_API const char *rayo_lang_code(rayo_lang lang);
@@ -82,6 +80,21 @@ RAYO_API const char *rayo_ngettext(rayo_lang lang, const char *singular,
 #define RAYO_LANG_NUMBER_SIZE 64
 RAYO_API char *rayo_lang_decimal(rayo_lang lang, double value, int decimals,
                                  char *buffer, size_t room);
+
+/*
+ * vsnprintf(buffer, room, rayo_gettext(lang, format), args), with the
+ * numbers of floating-point conversions (%g, %.2f, ...) written with
+ * lang's decimal separator: what rayo_error_set writes, for library code
+ * that formats a message of its own before recording it.  Numbered
+ * conversions (%2$s) of a translation are followed as printf does.
+ * buffer is always terminated when room > 0.
+ */
+RAYO_API void rayo_lang_vformat(rayo_lang lang, char *buffer, size_t room,
+                                const char *format, va_list args)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 4, 0)))
+#endif
+    ;
 
 #ifdef __cplusplus
 }

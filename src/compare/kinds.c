@@ -18,7 +18,7 @@
 
 rayo_picture_kind rayo_picture_kind_of(const rayo_image *image)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN); /* not shown */
     if (image == NULL || image->pixels == NULL ||
         rayo_image_info_check(&image->info, &err) != RAYO_OK)
         return RAYO_PICTURE_UNKNOWN;
@@ -60,7 +60,7 @@ const char *rayo_picture_kind_name(rayo_picture_kind kind)
 int rayo_image_same_picture(const rayo_image *a, const rayo_image *b)
 {
     tone_image ta, tb;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN); /* not shown */
     int same;
     if (a == NULL || b == NULL || a->info.width != b->info.width ||
         a->info.height != b->info.height)

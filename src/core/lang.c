@@ -1,7 +1,7 @@
 /*
  * lang.c - naming and choosing a language: codes, --lang's parsing, the
  * environment's choice, and numbers written with the language's decimal
- * separator.
+ * separator, and messages formatted with it (rayo_lang_vformat).
  *
  * The environment is read as gettext reads it, with one difference on
  * purpose: LANGUAGE counts even when the locale is "C" or not generated,
@@ -16,6 +16,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "format_point.h"
 
 static const char *const codes[RAYO_LANG_COUNT] = {"en", "es"};
 
@@ -86,6 +88,12 @@ rayo_lang rayo_lang_from_environment(void)
     return RAYO_LANG_EN;
 }
 
+/* The decimal separator lang writes numbers with. */
+static char decimal_point(rayo_lang lang)
+{
+    return lang == RAYO_LANG_ES ? ',' : '.';
+}
+
 char *rayo_lang_decimal(rayo_lang lang, double value, int decimals,
                         char *buffer, size_t room)
 {
@@ -100,6 +108,18 @@ char *rayo_lang_decimal(rayo_lang lang, double value, int decimals,
     /* printf's separator is the C locale's '.' unless the program set
        another locale; either way it becomes the language's. */
     if ((point = strpbrk(buffer, ".,")) != NULL)
-        *point = lang == RAYO_LANG_ES ? ',' : '.';
+        *point = decimal_point(lang);
     return buffer;
+}
+
+void rayo_lang_vformat(rayo_lang lang, char *buffer, size_t room,
+                       const char *format, va_list args)
+{
+    if (room == 0)
+        return;
+    if (decimal_point(lang) != '.')
+        rayo_format_point(buffer, room, decimal_point(lang),
+                          rayo_gettext(lang, format), args);
+    else
+        vsnprintf(buffer, room, rayo_gettext(lang, format), args);
 }

@@ -1,13 +1,17 @@
 /*
  * status.c - the messages behind rayo_status and rayo_error.
  *
- * Kept apart so that every layer can report failures the same way without
- * depending on anything but the C library.
+ * Kept apart so that every layer can report failures the same way.  A
+ * message is written in its error's language: the English format of the
+ * call is looked up in the embedded catalogs and numbers get the
+ * language's decimal separator (rayo_lang_vformat); nothing above core/
+ * is reached, so every layer may report through here.
  */
 #include "rayo/status.h"
 
 #include <stdarg.h>
-#include <stdio.h>
+
+#include "rayo/lang.h"
 
 const char *rayo_status_string(rayo_status status)
 {
@@ -24,6 +28,22 @@ const char *rayo_status_string(rayo_status status)
     return "unknown status";
 }
 
+void rayo_error_init(rayo_error *err, rayo_lang lang)
+{
+    if (err != NULL) {
+        err->status = RAYO_OK;
+        err->lang = lang;
+        err->message[0] = '\0';
+    }
+}
+
+rayo_lang rayo_error_lang(const rayo_error *err)
+{
+    return err != NULL && (unsigned)err->lang < RAYO_LANG_COUNT
+               ? err->lang
+               : RAYO_LANG_EN;
+}
+
 rayo_status rayo_error_set(rayo_error *err, rayo_status status,
                            const char *format, ...)
 {
@@ -31,7 +51,8 @@ rayo_status rayo_error_set(rayo_error *err, rayo_status status,
         va_list args;
         err->status = status;
         va_start(args, format);
-        vsnprintf(err->message, sizeof err->message, format, args);
+        rayo_lang_vformat(rayo_error_lang(err), err->message,
+                          sizeof err->message, format, args);
         va_end(args);
     }
     return status;

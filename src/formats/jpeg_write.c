@@ -111,6 +111,7 @@ static rayo_status jpeg_open(rayo_writer *writer, rayo_error *err)
     if (s == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
     s->out = writer->out;
+    rayo_error_init(&s->error, rayo_error_lang(err));
     s->row = malloc((size_t)info->width * info->channels);
     if (s->row == NULL) {
         free(s);

@@ -396,6 +396,7 @@ rayo_status rayo_png_read(rayo_source *src, rayo_image *image,
                               src->name);
     r->src = src;
     r->image = image;
+    rayo_error_init(&r->error, rayo_error_lang(err));
     rayo_png_chunks_init(&r->chunks);
     r->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, r, on_png_error,
                                     on_png_warning);

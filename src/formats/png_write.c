@@ -91,6 +91,7 @@ static rayo_status png_open(rayo_writer *writer, rayo_error *err)
                                                   : 16;
     if (state == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "out of memory");
+    rayo_error_init(&state->error, rayo_error_lang(err));
     writer->state = state;
     state->out = writer->out;
     if (needs_scratch(info)) {

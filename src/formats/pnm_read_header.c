@@ -9,6 +9,7 @@
  */
 #include <stdio.h>
 
+#include "rayo/lang.h"
 #include "rayo/limits.h"
 #include "pnm_read_impl.h"
 
@@ -27,12 +28,19 @@ rayo_status pnm_found_error(const pnm_reader *r, rayo_status status, int c,
         offset--;
     if (c < 0 && r->src->read_errno != 0)
         return rayo_source_end_error(r->src, expected, err);
+    if (c < 0) /* a whole sentence, for its translation */
+        return rayo_error_set(err, status,
+                              "%s: byte %llu (line %llu): found the end of "
+                              "the file; expected %s",
+                              r->src->name, (unsigned long long)offset,
+                              (unsigned long long)r->line,
+                              rayo_gettext(rayo_error_lang(err), expected));
     return rayo_error_set(err, status,
                           "%s: byte %llu (line %llu): found %s; expected %s",
                           r->src->name, (unsigned long long)offset,
                           (unsigned long long)r->line,
                           rayo_source_describe(c, found, sizeof found),
-                          expected);
+                          rayo_gettext(rayo_error_lang(err), expected));
 }
 
 /* The next character with comments folded into the newline ending them. */

@@ -10,6 +10,7 @@
 
 #include "read_source.h"
 
+#include "rayo/lang.h"
 #include "rayo/limits.h"
 
 #include <errno.h>
@@ -212,7 +213,8 @@ rayo_status rayo_source_end_error(const rayo_source *src, const char *what,
                           "%s: byte %llu: found the end of the file; "
                           "expected %s",
                           src->name,
-                          (unsigned long long)rayo_source_offset(src), what);
+                          (unsigned long long)rayo_source_offset(src),
+                          rayo_gettext(rayo_error_lang(err), what));
 }
 
 const char *rayo_source_describe(int c, char *buffer, size_t size)

@@ -358,7 +358,7 @@ static rayo_status parse_camera(parser *p)
 {
     rayo_camera_spec *spec = &p->file->camera;
     rayo_camera camera;
-    rayo_error inner;
+    rayo_error inner = RAYO_ERROR_INIT(rayo_error_lang(p->lx.err));
     scene_word key;
     rayo_status status = once(p, &p->camera_line, "camera");
     if (status != RAYO_OK)
@@ -499,7 +499,7 @@ static rayo_status parse_light(parser *p)
 {
     rayo_light light;
     scene_word word;
-    rayo_error inner;
+    rayo_error inner = RAYO_ERROR_INIT(rayo_error_lang(p->lx.err));
     char text[WORD_SHOW + 32];
     rayo_status status =
         need_word(p, &word, "the kind of light (directional or point)");
@@ -668,7 +668,7 @@ static rayo_status parse_material(parser *p)
 {
     rayo_material m;
     scene_word name, key;
-    rayo_error inner;
+    rayo_error inner = RAYO_ERROR_INIT(rayo_error_lang(p->lx.err));
     material_name *known;
     unsigned id;
     char text[WORD_SHOW + 32];
@@ -742,7 +742,7 @@ static rayo_status parse_sphere(parser *p)
     double radius;
     size_t column = 0;
     unsigned material;
-    rayo_error inner;
+    rayo_error inner = RAYO_ERROR_INIT(rayo_error_lang(p->lx.err));
     rayo_status status = need_vector(p, "the sphere's centre", &center, NULL);
     if (status == RAYO_OK)
         status = need_number(p, "the sphere's radius", &radius, &column);
@@ -766,7 +766,7 @@ static rayo_status parse_plane(parser *p)
 {
     rayo_vec3 point, normal;
     unsigned material;
-    rayo_error inner;
+    rayo_error inner = RAYO_ERROR_INIT(rayo_error_lang(p->lx.err));
     rayo_status status = need_vector(p, "a point of the plane", &point, NULL);
     if (status == RAYO_OK)
         status = need_direction(p, "the plane's normal", &normal);
@@ -784,7 +784,7 @@ static rayo_status parse_triangle(parser *p)
 {
     rayo_vec3 a, b, c;
     unsigned material;
-    rayo_error inner;
+    rayo_error inner = RAYO_ERROR_INIT(rayo_error_lang(p->lx.err));
     rayo_triangle t;
     rayo_status status = need_vector(p, "the first corner", &a, NULL);
     if (status == RAYO_OK)
@@ -896,7 +896,7 @@ static rayo_status parse_mesh(parser *p)
     rayo_mesh_report report;
     unsigned material;
     size_t left_out = 0;
-    rayo_error inner;
+    rayo_error inner = RAYO_ERROR_INIT(rayo_error_lang(p->lx.err));
     char *path;
     rayo_status status = need_word(p, &word, "a mesh file (STL or OBJ)");
     if (status != RAYO_OK)

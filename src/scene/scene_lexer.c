@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "rayo/lang.h"
 #include "rayo/scene_file.h"
 
 void scene_lexer_init(scene_lexer *lx, const char *name, const char *text,
@@ -166,7 +167,8 @@ rayo_status scene_lexer_fail(const scene_lexer *lx, size_t column,
     char message[RAYO_ERROR_MESSAGE_SIZE];
     va_list args;
     va_start(args, format);
-    vsnprintf(message, sizeof message, format, args);
+    rayo_lang_vformat(rayo_error_lang(lx->err), message, sizeof message,
+                      format, args);
     va_end(args);
     return rayo_error_set(lx->err, status, "%s:%lu:%lu: %s", lx->name,
                           lx->line, (unsigned long)column, message);

@@ -54,7 +54,7 @@ static void fill_random(rayo_scene *s, uint64_t seed, size_t spheres,
                         size_t triangles, size_t planes)
 {
     rayo_lcg g;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_material m = {{0.5, 0.5, 0.5}, 0.1, 0.8, 0.2, 10, 0};
     unsigned mat;
     size_t i;
@@ -261,7 +261,7 @@ static void check_same(const char *name, uint64_t seed, size_t spheres,
                        size_t triangles, size_t planes, size_t rays)
 {
     rayo_scene *brute, *tree;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     tally t = {0, 0, 0, 0, 0, 0};
     rayo_scene_create(&brute, &err);
     rayo_scene_create(&tree, &err);
@@ -285,7 +285,7 @@ static void check_same(const char *name, uint64_t seed, size_t spheres,
 static void check_scaled(double scale, const char *name)
 {
     rayo_scene *brute, *tree;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_lcg g;
     tally t = {0, 0, 0, 0, 0, 0};
     rayo_ray packet[RAYO_SCENE_PACKET];
@@ -337,7 +337,7 @@ static size_t tree_depth(const rayo_scene *s)
 static void check_one_point(void)
 {
     rayo_scene *brute, *tree;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_hit h;
     rayo_ray r;
     tally t = {0, 0, 0, 0, 0, 0};
@@ -371,7 +371,7 @@ static void check_one_point(void)
 static void check_tiny_scenes(void)
 {
     rayo_scene *s;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_hit h;
     rayo_ray r;
     r.origin = rayo_vec3_make(0, 0, 0);
@@ -411,7 +411,7 @@ static double hit_only_zero(const void *context, uint32_t prim,
 static void check_bvh_alone(void)
 {
     rayo_bvh *bvh;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_box box = {{-1, -1, 1}, {1, 1, 3}};
     uint32_t id = 0;
     rayo_bvh_cost cost = {0, 0};
@@ -486,7 +486,7 @@ static void check_render_exact(void)
 {
     const unsigned w = 192, h = 108;
     rayo_scene *s;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_camera cam;
     rayo_render_options options;
     rayo_image image;
@@ -522,7 +522,7 @@ static void check_render_exact(void)
 static void check_cost(void)
 {
     rayo_scene *s;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_scene_stats st = {0, 0, 0};
     rayo_camera cam;
     rayo_hit h;
@@ -565,7 +565,7 @@ static int same_spheres(const rayo_scene *a, const rayo_scene *b)
 static void check_field(void)
 {
     rayo_scene *a, *b;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     size_t i, inside = 1;
     rayo_scene_create(&a, &err);
     rayo_scene_create(&b, &err);
@@ -607,7 +607,7 @@ static void check_field(void)
 static void check_cloud(void)
 {
     rayo_scene *a, *b;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_lcg g;
     size_t i, inside = 1;
     rayo_lcg_seed(&g, 1);
@@ -654,7 +654,7 @@ static void check_cloud(void)
 static void check_tangent(void)
 {
     rayo_scene *s;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_ray rays[RAYO_SCENE_PACKET];
     rayo_hit hits[RAYO_SCENE_PACKET];
     double lo[RAYO_SCENE_PACKET] = {0, 0, 0, 0};
@@ -716,7 +716,7 @@ static void check_walk(rayo_bvh_walk walk, int packets)
 static void check_packets_on(void)
 {
     rayo_scene *s;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_scene_create(&s, &err);
     rayo_scene_random_cloud(s, 1000, 3, &err);
     rayo_scene_prepare(s, &err);

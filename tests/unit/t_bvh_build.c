@@ -211,7 +211,7 @@ static void check_layout(const char *name, layout kind, size_t n)
     rayo_box *boxes = make_boxes(kind, n, 2026 + n);
     uint32_t *ids = malloc(n * sizeof *ids);
     rayo_bvh *first = NULL;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     size_t i, depth = 0;
     if (boxes == NULL || ids == NULL) {
         ok(0, "%s: memory", name);
@@ -309,7 +309,7 @@ static void check_rounding(void)
             unsigned threads;
             for (threads = 1; threads <= 2; threads++) {
                 rayo_bvh *bvh;
-                rayo_error err;
+                rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
                 if (rayo_bvh_build_threads(&bvh, boxes, ids, n, threads,
                                            &err) != RAYO_OK) {
                     good = 0;

@@ -174,7 +174,7 @@ static void test_layouts_and_sizes(void)
     rayo_image_info info = rayo_image_info_gray8(4, 1);
     rayo_compare_report r;
     rayo_compare_options bad;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     unsigned char *row;
     memset(&g, 0, sizeof g);
     rayo_image_create(&g, &info, NULL);

@@ -104,7 +104,7 @@ static void check(const char *what, const rayo_image *a, const rayo_image *b,
 {
     rayo_compare_options options;
     rayo_compare_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     brute want = brute_force(a, b, tolerance);
     rayo_compare_options_init(&options);
     options.tolerance = tolerance;

@@ -43,7 +43,7 @@ static rayo_compare_report compare(const rayo_image *ref,
 {
     rayo_compare_options o;
     rayo_compare_report r;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_compare_options_init(&o);
     o.levels = levels;
     o.course = RAYO_COMPARE_COURSE_NONE;

@@ -71,7 +71,7 @@ static void test_maps(void)
 {
     tone_image a = pattern(61, 47, 3, 1), b = copy(&a), c = copy(&a);
     tone_image d = copy(&a);
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_compare_release_cache();
     ok(!tone_cache_find_maps(&b, 2, 1), "an empty cache has no maps");
     ok(tone_image_find_edges(&a, 2, 1, &err) == RAYO_OK, "maps made");
@@ -93,7 +93,7 @@ static void test_maps(void)
 static void test_bounded(void)
 {
     tone_image t[6];
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     unsigned i, found = 0;
     rayo_compare_release_cache();
     for (i = 0; i < 6; i++) {

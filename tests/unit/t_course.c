@@ -255,7 +255,7 @@ static int render(rayo_course_exercise e, rayo_course_mistake m,
                   int literal, double focal, rayo_image *img)
 {
     rayo_course_options o;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_course_options_init(&o);
     o.mistake = m;
     o.literal_rows = literal;
@@ -272,7 +272,7 @@ static int render_model(rayo_course_exercise e, int literal,
                         rayo_image *img)
 {
     rayo_course_options o;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_course_options_init(&o);
     o.literal_rows = literal;
     if (rayo_course_render_student(e, &o, img, &err) != RAYO_OK) {
@@ -319,7 +319,7 @@ static int render_file(const char *name, rayo_image *img)
     rayo_scene_file file;
     rayo_camera camera;
     rayo_render_options options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     int good;
     snprintf(path, sizeof path, "%s/examples/%s", root ? root : ".", name);
@@ -394,7 +394,7 @@ static int render_small(rayo_course_exercise e, rayo_scene *scene,
     rayo_camera_spec spec;
     rayo_camera camera;
     rayo_render_options options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_camera_spec_init(&spec);
     spec.width = 64;
     spec.height = 48;
@@ -414,7 +414,7 @@ static void test_moved(void)
     double at[4 * 8];
     rayo_scene *scene = NULL;
     rayo_image plain, same, moved;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     size_t i;
     int good;
     ok(d->ball_count <= 8, "scene 2 has at most 8 spheres");
@@ -467,7 +467,7 @@ static void test_names(void)
     const char *ex[] = {"ej1", "ej2", "ej3"};
     int e, m, clean = 1, right = 1;
     rayo_image img;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_course_options o;
     for (e = 0; e < RAYO_COURSE_EXERCISES; e++) {
         is_int(rayo_course_find(ex[e]), e, "find %s", ex[e]);

@@ -21,7 +21,7 @@ static void check_ej2(void)
 {
     rayo_course_map m;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     const rayo_course_data *d = rayo_course_data_of(RAYO_COURSE_EJ2);
     uint32_t x, y;
     unsigned long bad_ball = 0, bad_level = 0, lit = 0, shadowed = 0;
@@ -64,7 +64,7 @@ static void check_ej3(void)
 {
     rayo_course_map m;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     const rayo_course_data *d = rayo_course_data_of(RAYO_COURSE_EJ3);
     uint32_t x, y;
     unsigned long bad_ball = 0, bad_colour = 0, core = 0, core_edge = 0;
@@ -131,7 +131,7 @@ static void check_ej3(void)
 int main(void)
 {
     rayo_course_map m;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     check_ej2();
     check_ej3();
     ok(rayo_course_map_make(RAYO_COURSE_EJ1, &m, &err) == RAYO_ERR_INVALID,

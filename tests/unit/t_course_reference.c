@@ -44,7 +44,7 @@ static void check(rayo_course_exercise e)
     const unsigned char *data = rayo_course_reference_png(e, &size);
     unsigned char *file;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     snprintf(path, sizeof path, "%s/data/course/referencia-catedra-%s.png",
              root ? root : ".", name);
     file = slurp(path, &file_size);

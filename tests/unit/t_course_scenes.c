@@ -268,7 +268,7 @@ static int render_example(const char *file, unsigned samples,
     rayo_scene_file scene;
     rayo_camera camera;
     rayo_render_options options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     int good;
     snprintf(path, sizeof path, "%s/examples/%s", root ? root : ".", file);
     if (rayo_scene_file_load(&scene, path, &err) != RAYO_OK) {

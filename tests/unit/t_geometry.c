@@ -134,7 +134,7 @@ static void expect_error(rayo_status got, rayo_status want,
 static void test_validation(void)
 {
     rayo_scene *s;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_material m;
     rayo_light l;
     unsigned id = 99;
@@ -235,7 +235,7 @@ static void test_validation(void)
 static rayo_scene *small_scene(void)
 {
     rayo_scene *s;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_material m = {{1, 0, 0}, 0.1, 0.9, 0, 0, 0};
     unsigned red;
     rayo_scene_create(&s, &err);
@@ -291,7 +291,7 @@ static void check_small_scene(rayo_scene *s, const char *how)
 static void test_scene_queries(void)
 {
     rayo_scene *s = small_scene();
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     is_int(rayo_scene_object_count(s), 4, "four objects");
     is_int(rayo_scene_sphere_count(s), 2, "two of them spheres");
     is_int(rayo_scene_object_kind(s, 1), RAYO_OBJECT_PLANE, "object 1 is "
@@ -314,7 +314,7 @@ static void test_scene_queries(void)
 static void test_ambient_background(void)
 {
     rayo_scene *s;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_vec3 v;
     rayo_scene_create(&s, &err);
     v = rayo_scene_ambient(s);

@@ -32,7 +32,7 @@ static void test_registry(void)
     const rayo_grade_exercise *all = rayo_grade_exercises(&count);
     const rayo_grade_exercise *ej1 = rayo_grade_exercise_find("ej1");
     rayo_image reference;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     uint32_t black = 0, x, y;
     ok(count >= 1 && all != NULL, "the registry has exercises");
     ok(ej1 != NULL, "ej1 is registered");
@@ -62,7 +62,7 @@ static void test_options(void)
 {
     rayo_grade_options o;
     rayo_grade_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_grade_options_init(&o);
     ok(o.exercise == rayo_grade_exercise_find("ej1"), "default: ej1");
     is_double(o.timeout, 10, 0, "default: 10 s wall clock");
@@ -83,7 +83,7 @@ static void test_sources(void)
     char path[512];
     char **list = NULL;
     size_t count = 0;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (mkdtemp(dir) == NULL) {
         ok(0, "mkdtemp");
         return;

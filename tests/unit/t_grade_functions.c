@@ -44,7 +44,7 @@ static void grade_fixture(rayo_course_exercise course, const char *name,
     char *absolute[1], *words[16], *save = NULL, *w;
     rayo_grade_options o;
     grade_context ctx;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     size_t n = 0;
     snprintf(path, sizeof path, "%s/tests/grade/functions/%s",
              root != NULL ? root : ".", name);

@@ -61,7 +61,7 @@ static double random_fov(void)
 
 static void random_camera(rayo_camera *camera)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     uint32_t w = 1 + below(below(4) == 0 ? 9 : 160);
     uint32_t h = 1 + below(below(4) == 0 ? 9 : 120);
     rayo_vec3 origin = below(3) == 0 ? rayo_vec3_make(0, 0, 0)
@@ -104,7 +104,7 @@ static int tangent_sphere(const rayo_camera *camera, rayo_vec3 *center,
 
 static void add_random_sphere(const rayo_camera *camera, rayo_scene *scene)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_vec3 c = rayo_vec3_add(camera->origin, random_point(4.0));
     double r = uniform(0.01, 2.0);
     switch (below(7)) {
@@ -262,7 +262,7 @@ static void random_scenes(int count, tally *t)
     for (n = 0; n < count; n++) {
         rayo_camera camera;
         rayo_scene *scene;
-        rayo_error err;
+        rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
         unsigned spheres = 1 + below(5), s;
         random_camera(&camera);
         if (rayo_scene_create(&scene, &err) != RAYO_OK)
@@ -306,7 +306,7 @@ static void fixed_scenes(tally *t)
     for (c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         rayo_camera camera;
         rayo_scene *scene;
-        rayo_error err;
+        rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
         if (rayo_camera_init(&camera, cases[c].w, cases[c].h, cases[c].fov,
                              rayo_vec3_make(0, 0, 0), &err) != RAYO_OK ||
             rayo_scene_create(&scene, &err) != RAYO_OK ||
@@ -327,7 +327,7 @@ static long render_differences(void)
     rayo_scene *scene;
     rayo_render_options options;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     long wrong = 0;
     uint32_t i, j;
     if (rayo_camera_init(&camera, 333, 211, 70, rayo_vec3_make(0, 0, 0),
@@ -358,7 +358,7 @@ static int declines_planes(void)
 {
     rayo_camera camera;
     rayo_scene *scene;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_hit_spans *plan;
     if (rayo_camera_init(&camera, 64, 4, 90, rayo_vec3_make(0, 0, 0),
                          &err) != RAYO_OK ||

@@ -61,7 +61,7 @@ static void test_gray_threshold(void)
     static const unsigned gray10[] = {4, 5, 10, 0};
     static const unsigned gray16[] = {32767, 32768, 0, 65535};
     rayo_image src, dst;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (!make_row(&src, 1, 255, gray8, 4))
         return;
     is_int(rayo_image_to_bit(&src, &dst, &err), RAYO_OK, "gray8 to bit");
@@ -96,7 +96,7 @@ static void test_rgb_threshold(void)
                                    128, 128, 128, 127, 127, 127,
                                    0,   217, 0,   0,   218, 0};
     rayo_image src, dst;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (!make_row(&src, 3, 255, rgb, 6))
         return;
     is_int(rayo_image_to_bit(&src, &dst, &err), RAYO_OK, "rgb to bit");
@@ -121,7 +121,7 @@ static void test_gray_rounding(void)
     static const unsigned rgb16[] = {1, 0, 0, 2, 0, 0, 0, 0, 5,
                                      65535, 65535, 65535};
     rayo_image src, dst;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (!make_row(&src, 3, 65535, rgb16, 4))
         return;
     is_int(rayo_image_to_gray(&src, &dst, &err), RAYO_OK, "rgb16 to gray");
@@ -138,7 +138,7 @@ static void test_bit_expansion(void)
 {
     rayo_image_info info = rayo_image_info_bit(3, 1);
     rayo_image src, gray, rgb, again;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (rayo_image_create(&src, &info, &err) != RAYO_OK)
         return;
     rayo_image_row(&src, 0)[0] = 0xA0; /* black, white, black */

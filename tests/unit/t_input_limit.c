@@ -41,7 +41,7 @@ static int open_piped(rayo_source *src, rayo_error *err)
 int main(void)
 {
     rayo_source src;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     uint64_t count = 0;
     rayo_status status;
 

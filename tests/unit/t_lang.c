@@ -66,7 +66,7 @@ int main(void)
     static const char sing[] = "'%.*s…' (%lu character)";
     static const char plur[] = "'%.*s…' (%lu characters)";
     rayo_lang lang = RAYO_LANG_EN;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     char number[RAYO_LANG_NUMBER_SIZE];
     const char *msgid = "render: out of memory";
     lookup a = {RAYO_LANG_ES, 0}, b = {RAYO_LANG_EN, 0};

@@ -65,7 +65,7 @@ static void test_binary(void)
     stl_file f = binary_stl(3, 3);
     rayo_mesh mesh;
     rayo_mesh_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     status = rayo_mesh_read_memory(f.bytes, f.size, "t.stl", &mesh, &report,
                                    &err);
@@ -133,7 +133,7 @@ static void test_ascii(void)
 {
     rayo_mesh mesh;
     rayo_mesh_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     const char *good = "solid thing\n"
                        "  facet normal 0 0 -1\n    outer loop\n"
                        "      vertex 0 0 5\n      vertex 1.5e0 0 5\n"
@@ -165,7 +165,7 @@ static void test_obj(void)
 {
     rayo_mesh mesh;
     rayo_mesh_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     const char *quad = "# a square and a triangle\n"
                        "o square\nv 0 0 5\nv 1 0 5\nv 1 1 5\nv 0 1 5\n"
                        "vn 0 0 -1\nvt 0 0\n"
@@ -208,7 +208,7 @@ static void test_scene(void)
     rayo_mesh mesh;
     rayo_scene *scene;
     rayo_mesh_placement placement;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_hit hit;
     rayo_ray ray;
     size_t left_out = 9;

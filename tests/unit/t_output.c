@@ -240,7 +240,7 @@ static void test_file(void)
     char path[] = "/tmp/rayo-t-output.XXXXXX";
     int fd = mkstemp(path), in_place = 0;
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     if (fd < 0) {
         ok(0, "a temporary file");
@@ -265,7 +265,7 @@ static void test_pipe(void)
     pipe_reader reader;
     pthread_t thread;
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     unsigned char *room;
     size_t available;
@@ -312,7 +312,7 @@ static void test_interrupted_pipe(void)
     pipe_reader reader;
     pthread_t thread;
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status = RAYO_ERR_IO;
     struct sigaction action, previous;
     struct itimerval every = {{0, 300}, {0, 300}}, off = {{0, 0}, {0, 0}};
@@ -349,7 +349,7 @@ static void test_full_device(void)
 {
     int fd = open("/dev/full", O_WRONLY), in_place;
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     if (fd < 0) {
         ok(1, "# SKIP no /dev/full");
@@ -372,7 +372,7 @@ static void test_lost_bytes(void)
 {
     int fd = open("/dev/full", O_WRONLY);
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     if (fd < 0) {
         ok(1, "# SKIP no /dev/full");
@@ -416,7 +416,7 @@ static void test_abandoned_image(void)
         int fd = mkstemp(path);
         rayo_output *out;
         rayo_writer *writer;
-        rayo_error err;
+        rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
         rayo_status status = RAYO_ERR_IO;
         if (fd >= 0) {
             close(fd);
@@ -450,7 +450,7 @@ static void test_closed_pipe(void)
 {
     int fds[2], in_place;
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     if (pipe(fds) != 0) {
         ok(0, "a pipe");
@@ -476,7 +476,7 @@ static void test_is_terminal(void)
                              ? NULL
                              : ptsname(master);
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     int opened;
     if (fd >= 0)
         close(fd);
@@ -580,7 +580,7 @@ static void test_renamed_directory(void)
 {
     char dir[64], moved[80], again[96], path[128], check[160];
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     const char *name;
     int dir_fd, found;
     struct stat st;
@@ -636,7 +636,7 @@ static void test_renamed_directory(void)
 static void test_keeps_mode(void)
 {
     char dir[64], path[96];
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     struct stat st;
     if (!make_dir(dir, sizeof dir, 0755)) {
         ok(0, "a directory");
@@ -661,7 +661,7 @@ static int replace_as_nobody(const char *path)
     pid_t pid = fork();
     int status;
     if (pid == 0) {
-        rayo_error err;
+        rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
         rayo_status s;
         if (setgroups(0, NULL) != 0 || setgid(NOBODY) != 0 ||
             setuid(NOBODY) != 0)
@@ -686,7 +686,7 @@ static void test_permissions(void)
 {
     char dir[64], path[96];
     struct stat st;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (geteuid() != 0) {
         ok(1, "# SKIP not root: no other user to be");
         return;
@@ -732,7 +732,7 @@ static void test_permissions(void)
 static int follows(mode_t dir_mode, uid_t dir_owner, uid_t link_owner)
 {
     char dir[64], target_dir[64], target[96], link[96];
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     struct stat st;
     int result = -1;
@@ -766,7 +766,7 @@ static int follows(mode_t dir_mode, uid_t dir_owner, uid_t link_owner)
 static void test_links(void)
 {
     char dir[64], link[96], target[96];
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (geteuid() != 0) {
         ok(1, "# SKIP not root: links of other users cannot be made");
         return;
@@ -802,7 +802,7 @@ static void test_link_to_pipe(void)
     char dir[64], link[96], target[64], got[8] = {0};
     int fds[2], dir_fd = 0;
     rayo_output *out;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     int opened;
     if (!make_dir(dir, sizeof dir, 0755) || pipe(fds) != 0) {
         ok(0, "a directory and a pipe");

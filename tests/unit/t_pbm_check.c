@@ -20,7 +20,7 @@ typedef struct outcome {
 
 static void check(const char *text, uint32_t w, uint32_t h, outcome *o)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     memset(o, 0, sizeof *o);
     o->status = rayo_pbm_check(text, strlen(text), w, h, &o->item, &o->image,
                                &err);
@@ -238,7 +238,7 @@ static void test_pnm_entry(void)
     size_t i, j;
     for (i = 0; i < sizeof inputs / sizeof inputs[0]; i++) {
         outcome a, b;
-        rayo_error err;
+        rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
         int same;
         check(inputs[i], 4, 2, &a);
         memset(&b, 0, sizeof b);

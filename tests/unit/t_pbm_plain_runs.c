@@ -138,7 +138,7 @@ int main(void)
         bits[n] = 0;
         for (layout = 0; layout < 5; layout++) {
             rayo_image image;
-            rayo_error err;
+            rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
             rayo_status s;
             size_t k;
             char want[96];

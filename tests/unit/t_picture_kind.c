@@ -20,7 +20,7 @@ static rayo_image make(rayo_image_info info, unsigned (*fill)(uint32_t,
                                                               unsigned))
 {
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     uint32_t x, y;
     unsigned c;
     memset(&image, 0, sizeof image);
@@ -91,7 +91,7 @@ int main(void)
     rayo_image_info info16 = rayo_image_info_gray8(8, 5);
     rayo_image gray16;
     rayo_compare_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     char text[4096];
 
     info16.sample = RAYO_SAMPLE_U16;

@@ -19,7 +19,7 @@ static int render_png(const char *path, const rayo_image *image)
 {
     rayo_output *out;
     rayo_write_options options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     options.format = RAYO_FORMAT_PNG;
     options.plain = 0;
     if (rayo_output_open(&out, path, &err) != RAYO_OK)

@@ -29,7 +29,7 @@ typedef struct outcome {
 static void check_n(const char *text, size_t size, char magic, uint32_t w,
                     uint32_t h, outcome *o)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     memset(o, 0, sizeof *o);
     o->status = rayo_pnm_check(text, size, magic, w, h, &o->item, &o->image,
                                &err);
@@ -321,7 +321,7 @@ static void test_text(void)
 static void test_magic(void)
 {
     outcome o;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     char got[256];
     check("P3\n4 2\n255\n0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n",
           '2', 4, 2, &o);
@@ -485,7 +485,7 @@ static void test_whole(const char *scene, char magic, const char *summary)
 {
     outcome o;
     rayo_image read;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     size_t size, i, header = 0, lines = 0;
     char *data = render(scene, &size);
     ok(size > 640 * 480 && data != NULL && data[0] == 'P' &&

@@ -167,7 +167,7 @@ int main(void)
     rayo_image_info gray = rayo_image_info_gray8(4, 2);
     rayo_image g;
     rayo_preview_options options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     unsigned wide = 0, lines = 0, x, y;
     char *t;
     size_t length;

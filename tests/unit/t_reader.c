@@ -261,7 +261,7 @@ static void check_png_case(const png_case *pc, uint32_t width,
     rayo_image image;
     rayo_image_info want;
     rayo_read_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     uint32_t x, y;
     unsigned c, mismatches = 0;
@@ -337,7 +337,7 @@ static void test_plain_pbm(void)
 {
     rayo_image image;
     rayo_read_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     /* Comments everywhere, tabs, CR, VT, FF, pixels with and without
        spaces between them, a comment inside the raster. */
     const char *text = "P1#magic\n# a comment\n\t11\r\n#between\n\v2\f"
@@ -370,7 +370,7 @@ static void test_raw_pbm_padding(void)
                                          'x', 'y'};
     rayo_image image;
     rayo_read_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status = rayo_image_read_memory(data, sizeof data, "p4",
                                                 &image, &report, &err);
     is_int(status, RAYO_OK, "raw PBM 10x2");
@@ -390,7 +390,7 @@ static void test_gray_and_colour(void)
 {
     rayo_image image;
     rayo_read_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     static const unsigned char p5[] = {'P', '5', ' ', '2', ' ', '1', ' ',
                                        '1', '0', '0', '0', '\n', 0x03,
                                        0xE8, 0x01, 0x02, '\n'};
@@ -462,7 +462,7 @@ static void test_trailing_samples(void)
 {
     rayo_image image;
     rayo_read_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status;
     char path[] = "/tmp/t_reader.XXXXXX";
     char *text = plain_pbm_rows(640, 480, 481);
@@ -633,7 +633,7 @@ static void test_errors(void)
     size_t i;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         rayo_image image;
-        rayo_error err;
+        rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
         rayo_status status = read_text(cases[i].text, &image, NULL, &err);
         is_int(status, cases[i].status, "error case %lu: status",
                (unsigned long)i);
@@ -650,7 +650,7 @@ static void test_errors(void)
 static void test_empty_memory(void)
 {
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status =
         rayo_image_read_memory(NULL, 0, "nothing", &image, NULL, &err);
     is_int(status, RAYO_ERR_FORMAT, "NULL, 0 is an empty input");
@@ -693,7 +693,7 @@ static void test_corpus_from_memory(void)
         const char *name = entry->d_name;
         size_t size;
         rayo_image image;
-        rayo_error err;
+        rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
         rayo_status status;
         if (name[0] == '.' || strstr(name, ".py"))
             continue;
@@ -725,7 +725,7 @@ static void test_clamp(void)
     rayo_read_options o;
     rayo_read_report rp;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     int fd = mkstemp(path);
     ok(fd >= 0 && write(fd, text, sizeof text - 1) == (ssize_t)(sizeof text - 1),
        "clamp: a P2 with 260, -3, 300 and -12 written");

@@ -53,7 +53,7 @@ static long differences(const view *v, const ball *balls, size_t n,
     rayo_scene *scene;
     rayo_render_options options;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     long wrong = 0;
     unsigned i, j;
     size_t k;

@@ -82,7 +82,7 @@ static void run_case(const render_case *rc, unsigned threads)
     rayo_camera camera;
     rayo_render_options options;
     rayo_image reference;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     poll_counter counter;
     row_check check;
     rayo_status status;

@@ -67,7 +67,7 @@ static written write_frame(const rayo_camera *camera, const rayo_scene *scene,
     rayo_write_options write_options = {RAYO_FORMAT_PBM, 1, 0};
     rayo_output *out;
     rayo_writer *writer;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     written result = {NULL, 0, 0, 0};
     off_t end;
     if (fd < 0)
@@ -144,7 +144,7 @@ static void who_takes_runs(void)
     for (k = 0; k < 3; k++) {
         rayo_output *out;
         rayo_writer *writer;
-        rayo_error err;
+        rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
         int takes;
         if (rayo_output_open(&out, "/dev/null", &err) != RAYO_OK ||
             rayo_writer_open(&writer, out, &info, &kinds[k], &err) !=
@@ -171,7 +171,7 @@ static void who_takes_runs(void)
 static rayo_scene *random_scene(void)
 {
     rayo_scene *scene;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     int spheres = 1 + (int)uniform(0, 6), s;
     if (rayo_scene_create(&scene, &err) != RAYO_OK)
         abort();
@@ -188,7 +188,7 @@ static rayo_scene *random_scene(void)
 static void random_camera(rayo_camera *camera, uint32_t width,
                           uint32_t height, int turned)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (rayo_camera_init(camera, width, height, uniform(20, 150),
                          rayo_vec3_make(uniform(-1, 1), uniform(-1, 1),
                                         uniform(-1, 1)),

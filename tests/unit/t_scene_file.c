@@ -30,7 +30,7 @@ static const char full[] =
 static void check_full(void)
 {
     rayo_scene_file f;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     const rayo_light *l;
     const rayo_material *m;
     rayo_ray ray;
@@ -92,7 +92,7 @@ static void check_full(void)
 static void check_defaults(void)
 {
     rayo_scene_file f;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (rayo_scene_file_parse(&f, "empty.scene", "", 0, &err) != RAYO_OK) {
         printf("# %s\n", err.message);
         ok(0, "empty scene parses");
@@ -116,7 +116,7 @@ static void check_error(const char *text, rayo_status want_status,
                         const char *want_prefix)
 {
     rayo_scene_file f;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status status =
         rayo_scene_file_parse(&f, "mem.scene", text, strlen(text), &err);
     is_int(status, want_status, "status for %s", want_prefix);

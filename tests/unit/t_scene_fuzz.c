@@ -67,7 +67,7 @@ static size_t mutate(char *text, size_t length)
 int main(void)
 {
     rayo_scene_file file;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     long good = 0, refused = 0, unnamed = 0, odd_status = 0;
     int round;
     for (round = 0; round < 3000; round++) {

@@ -165,7 +165,7 @@ static const unsigned thread_counts[] = {2, 3, 7};
 static void check_same(const char *name, const text *t)
 {
     rayo_scene_file one, many;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     size_t i;
     if (rayo_scene_file_parse_threads(&one, "big.scene", t->data, t->length,
                                       1, &err) != RAYO_OK) {
@@ -231,7 +231,7 @@ static text plant(const text *t, size_t at, const char *bad)
 static void check_error(const char *name, const text *t)
 {
     rayo_scene_file f;
-    rayo_error one, many;
+    rayo_error one = RAYO_ERROR_INIT(RAYO_LANG_EN), many = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status s1, s;
     size_t i;
     s1 = rayo_scene_file_parse_threads(&f, "big.scene", t->data, t->length, 1,
@@ -272,7 +272,7 @@ static void check_error(const char *name, const text *t)
 static void check_reserve(void)
 {
     rayo_scene *scene;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status s;
     size_t count, capacity;
     if (rayo_scene_create(&scene, &err) != RAYO_OK) {

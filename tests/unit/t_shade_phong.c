@@ -32,7 +32,7 @@ static rgb pixel(const char *text, rayo_shade_mode mode, unsigned depth,
     rayo_camera camera;
     rayo_render_options options;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     const unsigned char *p;
     if (rayo_scene_file_parse(&file, "test.scene", text, strlen(text),
                               &err) != RAYO_OK) {

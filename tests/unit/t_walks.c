@@ -42,7 +42,7 @@ static int render(const rayo_camera *camera, const rayo_scene *scene,
                   rayo_shade_mode shade, unsigned threads, rayo_image *image)
 {
     rayo_render_options options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_render_options_init(&options);
     options.shade = shade;
     options.threads = threads;
@@ -125,7 +125,7 @@ static void check_frame(const char *name, const rayo_camera *camera,
 static rayo_scene *bench_scene(int cloud, size_t count)
 {
     rayo_scene *scene;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_light sun = {RAYO_LIGHT_DIRECTIONAL, {0.4, 1.0, -0.5},
                       {0.7, 0.7, 0.7}};
     rayo_light lamp = {RAYO_LIGHT_POINT, {-10.0, 20.0, 20.0},
@@ -153,13 +153,13 @@ static rayo_scene *bench_scene(int cloud, size_t count)
 
 static void camera_level(rayo_camera *camera, uint32_t w, uint32_t h)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_camera_init(camera, w, h, 90.0, rayo_vec3_make(0, 0, 0), &err);
 }
 
 static void camera_above(rayo_camera *camera, uint32_t w, uint32_t h)
 {
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_camera_init(camera, w, h, 60.0, rayo_vec3_make(0, 5, -10), &err);
     rayo_camera_look_at(camera, rayo_vec3_make(0, -1, 35),
                         rayo_vec3_make(0, 1, 0), &err);
@@ -203,7 +203,7 @@ static void check_example(const char *file_name)
     char path[4096], name[128];
     rayo_scene_file file;
     rayo_camera camera;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     snprintf(path, sizeof path, "%s/examples/%s", root ? root : ".",
              file_name);
     if (rayo_scene_file_load(&file, path, &err) != RAYO_OK) {

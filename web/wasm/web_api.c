@@ -128,7 +128,7 @@ web_image *web_read(const unsigned char *data, size_t size, const char *name,
                     int clamp)
 {
     web_image *im = new_image();
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status s;
     last_was_png = 0;
     if (im == NULL)
@@ -208,7 +208,7 @@ web_image *web_from_png(const unsigned char *png, size_t png_size,
 {
     web_image *im = new_image();
     rayo_image_info info;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     int color, depth, trns;
     uint32_t x, y;
     if (web_size_check("the PNG", w, h) != 0)
@@ -346,7 +346,7 @@ const char *web_compare(const web_image *reference, const web_image *image,
 {
     rayo_compare_options options;
     rayo_output *out = NULL;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     free(compare_text);
     free(compare_diagnosis);
     free(compare_diff.data);
@@ -531,7 +531,7 @@ web_image *web_render(int scene_id, const double *cam, const double *spheres,
     rayo_camera camera;
     rayo_scene *scene = NULL;
     rayo_render_options options;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status s;
     if (im == NULL)
         return NULL;
@@ -574,7 +574,7 @@ int web_ray(const double *cam, const double *spheres, size_t count,
             double px, double py, double *out)
 {
     rayo_camera camera;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_ray ray;
     rayo_vec3 l;
     double nearest = INFINITY;

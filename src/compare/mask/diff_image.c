@@ -160,6 +160,7 @@ rayo_status rayo_compare_write_diff(const rayo_image *reference,
         return s;
     memset(&d, 0, sizeof d);
     d.out = out;
+    rayo_error_init(&d.error, rayo_error_lang(err));
     rows = malloc(4 * cmp_row_bytes(pair.ref.width));
     d.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &d, on_error,
                                     on_warning);

@@ -342,6 +342,7 @@ rayo_status cmp_measure(const cmp_mask *ref, const cmp_mask *image,
         bands[i].t = t;
         bands[i].exact = exact;
         bands[i].tolerance = tolerance;
+        rayo_error_init(&bands[i].err, rayo_error_lang(err));
         bands[i].y0 = (uint32_t)((uint64_t)ref->height * i / n);
         bands[i].y1 = (uint32_t)((uint64_t)ref->height * (i + 1) / n);
         if (outline != NULL && s == RAYO_OK)

@@ -120,7 +120,7 @@ static int sandbox_said(FILE *json, const char *key)
     char *text = NULL, *p;
     size_t size;
     int code = -1;
-    rayo_error ignored;
+    rayo_error ignored = RAYO_ERROR_INIT(RAYO_LANG_EN);
     if (read_capture(json, 65536, &text, &size, &ignored) != RAYO_OK ||
         text == NULL)
         return -1;
