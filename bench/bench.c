@@ -3,7 +3,7 @@
  * (figures, then targets with pass or FAIL) and writes it as JSON.
  *
  *   rayo-bench [--json FILE] [--repeat N]
- *              [--only seed|large|bvh|commands|compare|peers]
+ *              [--only seed|large|bvh|commands|compare|peers|meshes]
  *              [--rows FILE]
  *
  * $RAYO names the `rayo` command for the rows that run it (peak memory,
@@ -222,7 +222,7 @@ int main(int argc, char **argv)
             rows = argv[++i];
         else {
             fprintf(stderr, "usage: %s [--json FILE] [--repeat N] [--only "
-                            "seed|large|bvh|commands|compare|peers] "
+                            "seed|large|bvh|commands|compare|peers|meshes] "
                             "[--rows FILE]\n",
                     argv[0]);
             return 2;
@@ -247,6 +247,8 @@ int main(int argc, char **argv)
         bench_compare_noise(&table);
     if (wants(only, "peers") && rayo != NULL)
         bench_peers(&table);
+    if (wants(only, "meshes") && rayo != NULL)
+        bench_meshes(&table);
     print_targets(&table);
     if (json != NULL) {
         write_json(&table, json);

@@ -87,13 +87,14 @@ int bench_render_into(rayo_output *out, const rayo_camera *camera,
                       int plain);
 
 /* The rows: seed.c, large.c, bvh.c, commands.c, compare_noise.c,
- * peers.c. */
+ * peers.c, meshes.c. */
 void bench_seed(bench_table *table);
 void bench_large(bench_table *table, const char *rayo);
 void bench_bvh(bench_table *table);
 void bench_commands(bench_table *table, const char *rows_file);
 void bench_compare_noise(bench_table *table);
 void bench_peers(bench_table *table);
+void bench_meshes(bench_table *table);
 
 /* The median time a new thread takes to start running on an idle CPU
  * (thread_start.c), seconds; -1 when no thread could be created. */

@@ -5,9 +5,11 @@
  * `make bench` compares rayo with the state of the art in CPU ray
  * intersection on the same work.  This program reads the scene file that
  * bench/field_scene.py writes (scene.c: only that subset, the camera's
- * size, fov, origin, look-at and up, point lights, planes and spheres;
- * materials and settings are read past), puts the spheres into one Embree
- * RTC_GEOMETRY_TYPE_SPHERE_POINT geometry and each plane into a large
+ * size, fov, origin, look-at and up, point lights, planes, spheres and
+ * binary STL meshes; materials and settings are read past), puts the
+ * spheres into one Embree RTC_GEOMETRY_TYPE_SPHERE_POINT geometry, the
+ * meshes' triangles into one RTC_GEOMETRY_TYPE_TRIANGLE geometry (mesh.c)
+ * and each plane into a large
  * quad (PLANE_HALF_SIZE from the camera's foot on the plane), and casts
  * through it exactly the primary rays of rayo's camera (include/rayo/
  * camera.h: x = i - w/2, y = j - h/2, direction x right - y up + f
@@ -28,18 +30,20 @@
  * meets the ground is then one plane test); the default puts each plane
  * in Embree's scene with the spheres, the way Embree is meant to be used.
  * --threads sets Embree's device threads, which build the hierarchy
- * (0, the default: every CPU); --repeat N casts them N times (0: none,
- * setup alone) and reports the best pass.
+ * (0, the default: every CPU); --quality high builds with Embree's
+ * RTC_BUILD_QUALITY_HIGH (spatial splits) instead of its default; --repeat
+ * N casts them N times (0: none, setup alone) and reports the best pass.
  *
  *   embree-rays SCENE [--mode occlusion|shadow] [--packet 1|16]
  *               [--threads N] [--repeat N] [--planes bvh|first]
- *               [--pbm FILE]
+ *               [--quality default|high] [--pbm FILE]
  *
  * It prints "key value" lines: read_s, build_s, setup_s (wall seconds),
  * rays (cast in one pass), rays_s (processor seconds of the best pass),
  * ns_per_ray, and the checksums hits (primary rays that hit: the black
  * pixels of rayo's --shade hit PBM) and lit (shadow rays that reached the
- * light).  --pbm writes the hits as a raw PBM, for tests.  Errors: one
+ * light), and peak_rss_kib (getrusage's, which on Linux also counts what
+ * the process held before its exec).  --pbm writes the hits as a raw PBM, for tests.  Errors: one
  * line on stderr (with the line number for the scene), exit 2 (bad input)
  * or 1 (I/O, Embree).  This is a benchmark tool: rayo never links Embree.
  */
@@ -53,7 +57,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
+
+#include "mesh.h"
 
 #define PLANE_HALF_SIZE 1e5
 
@@ -70,10 +77,13 @@ static double wall_now(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+/* The calling thread's processor time: the rays are all cast on it, and
+ * Embree's own threads (the build's, when --threads is not 1) may still
+ * be spinning while they are. */
 static double cpu_now(void)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
@@ -128,10 +138,13 @@ static void embree_error(void *user, enum RTCError code, const char *text)
 }
 
 static RTCScene build(RTCDevice device, const scene *s, const camera *cam,
-                      int planes_first)
+                      int planes_first, int high_quality)
 {
     RTCScene es = rtcNewScene(device);
     size_t k;
+    if (high_quality)
+        rtcSetSceneBuildQuality(es, RTC_BUILD_QUALITY_HIGH);
+    attach_meshes(device, es, s);
     if (s->sphere_count > 0) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
         float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
@@ -524,14 +537,16 @@ static void usage(void)
 {
     fprintf(stderr, "usage: embree-rays SCENE [--mode occlusion|shadow] "
                     "[--packet 1|16] [--threads N] [--repeat N] "
-                    "[--planes bvh|first] [--pbm FILE]\n");
+                    "[--planes bvh|first] [--quality default|high] "
+                    "[--pbm FILE]\n");
     exit(2);
 }
 
 int main(int argc, char **argv)
 {
     const char *path = NULL, *pbm = NULL;
-    int threads = 0, repeat = 1, r, a;
+    int threads = 0, repeat = 1, high_quality = 0, r, a;
+    struct rusage resources;
     char config[64];
     scene s;
     job jb;
@@ -569,6 +584,12 @@ int main(int argc, char **argv)
                 jb.planes_first = 0;
             else
                 usage();
+        } else if (strcmp(argv[a], "--quality") == 0 && a + 1 < argc) {
+            a++;
+            if (strcmp(argv[a], "high") == 0)
+                high_quality = 1;
+            else if (strcmp(argv[a], "default") != 0)
+                usage();
         } else if (strcmp(argv[a], "--pbm") == 0 && a + 1 < argc) {
             pbm = argv[++a];
         } else if (argv[a][0] != '-' && path == NULL) {
@@ -604,7 +625,7 @@ int main(int argc, char **argv)
         jb.plane_n[a][2] = (float)n.z;
         jb.plane_d[a] = (float)rayo_vec3_dot(n, s.plane_point[a]);
     }
-    jb.es = build(device, &s, &jb.cam, jb.planes_first);
+    jb.es = build(device, &s, &jb.cam, jb.planes_first, high_quality);
     build_s = wall_now() - start;
     if (pbm != NULL) {
         jb.mask = calloc((size_t)s.width * s.height, 1);
@@ -628,12 +649,13 @@ int main(int argc, char **argv)
             best_s = t;
         best = p;
     }
-    printf("scene %s\nsize %ux%u\nspheres %lu\nplanes %lu\n", path, s.width,
-           s.height, (unsigned long)s.sphere_count,
-           (unsigned long)s.plane_count);
-    printf("mode %s\npacket %d\nthreads %d\nplanes %s\n",
+    printf("scene %s\nsize %ux%u\nspheres %lu\ntriangles %lu\nplanes %lu\n",
+           path, s.width, s.height, (unsigned long)s.sphere_count,
+           (unsigned long)s.triangle_count, (unsigned long)s.plane_count);
+    printf("mode %s\npacket %d\nthreads %d\nplanes %s\nquality %s\n",
            jb.shadow ? "shadow" : "occlusion", jb.packet, threads,
-           jb.planes_first ? "first" : "bvh");
+           jb.planes_first ? "first" : "bvh",
+           high_quality ? "high" : "default");
     printf("read_s %.6f\nbuild_s %.6f\nsetup_s %.6f\n", read_s, build_s,
            read_s + build_s);
     if (best_s < 0)
@@ -641,11 +663,14 @@ int main(int argc, char **argv)
     printf("rays %llu\nrays_s %.6f\nns_per_ray %.3f\n", best.rays, best_s,
            best.rays ? best_s * 1e9 / (double)best.rays : 0.0);
     printf("hits %llu\nlit %llu\n", best.hits, best.lit);
+    if (getrusage(RUSAGE_SELF, &resources) == 0)
+        printf("peak_rss_kib %ld\n", (long)resources.ru_maxrss);
     if (pbm != NULL)
         write_pbm(pbm, &s, jb.mask);
     free(jb.mask);
-    free(s.spheres);
     rtcReleaseScene(jb.es);
     rtcReleaseDevice(device);
+    free(s.spheres);
+    free(s.corners);
     return 0;
 }
