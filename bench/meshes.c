@@ -411,6 +411,11 @@ void bench_meshes(bench_table *table)
                  sizes[i]);
         add(table, key, label, row_median(occ, occ->ns), "ns",
             occ->available);
+        if (i == 1)
+            add(table, "mesh_1m_embree_occlusion_high_ns",
+                "meshes 1m: Embree occlusion, high quality, per ray",
+                row_median(&rows[M_E_OCC_HIGH], rows[M_E_OCC_HIGH].ns), "ns",
+                rows[M_E_OCC_HIGH].available);
         snprintf(key, sizeof key, "mesh_%s_rayo_phong_ns", sizes[i]);
         snprintf(label, sizeof label, "meshes %s: rayo phong, per ray",
                  sizes[i]);
