@@ -328,7 +328,8 @@ bench: $(RAYO) $(BENCH_BIN) $(BENCH_MESHES:%=$(BUILD)/bench/scan-%.scene) \
 	    $(EMBREE_RAYS); else rm -f $(EMBREE_RAYS); echo "bench: no" \
 	    "$(EMBREE_HEADER) (libembree-dev): the Embree rows say skipped"; fi
 	RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
-	RAYO_SOURCE=$(CURDIR) $(BENCH_BIN) --json $(BUILD)/bench.json \
+	RAYO_SOURCE=$(CURDIR) RAYO_BENCH_MESHES="$(BENCH_MESHES)" \
+	    $(BENCH_BIN) --json $(BUILD)/bench.json \
 	    $(BENCH_ARGS)
 
 # The command tests with every rayo run under valgrind memcheck.

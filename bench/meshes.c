@@ -20,8 +20,9 @@
  * around its rays.  The 10M mesh runs once a process: rayo's phong render
  * on every thread for its peak memory, Embree's two modes building on
  * every thread; its cost per ray against the 100k's is the growth target.
- * Without the Embree program, `povray` or a mesh (BENCH_MESHES), those
- * rows and targets say "skipped".
+ * Without the Embree program, `povray` or a mesh ($RAYO_BENCH_MESHES,
+ * from the Makefile's BENCH_MESHES), those rows and targets say
+ * "skipped".
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -173,10 +174,23 @@ static void target(bench_table *table, const char *label, double value,
         bench_target_skipped(table, label, limit, at_most);
 }
 
+/* The mesh's scene is there, and $RAYO_BENCH_MESHES (the Makefile's
+ * BENCH_MESHES: words such as 100k 1m 10m) names it, when it is set. */
 static int mesh_exists(const char *size)
 {
     const char *build = getenv("RAYO_BUILD");
+    const char *wanted = getenv("RAYO_BENCH_MESHES");
     char path[4096];
+    if (wanted != NULL) {
+        size_t n = strlen(size);
+        const char *p = wanted;
+        while ((p = strstr(p, size)) != NULL &&
+               !((p == wanted || p[-1] == ' ') &&
+                 (p[n] == '\0' || p[n] == ' ')))
+            p += n;
+        if (p == NULL)
+            return 0;
+    }
     snprintf(path, sizeof path, "%s/bench/scan-%s.scene",
              build != NULL ? build : "build", size);
     return access(path, R_OK) == 0;
