@@ -49,6 +49,20 @@ double bench_value(const bench_table *table, const char *key);
 /* The number of runs each figure takes the best of. */
 int bench_repeats(const bench_table *table);
 
+/* The rows against other programs (peer_rows.c): the value after "key "
+ * at the start of a line of text (-1 if none); a / b, or -1 unless both
+ * are positive; a figure (value < 0: "failed") or target that says
+ * "skipped" unless available. */
+double bench_output_value(const char *text, const char *key);
+double bench_ratio(double a, double b);
+void bench_add_peer(bench_table *table, const char *key, const char *label,
+                    double value, const char *unit, int available);
+void bench_target_peer(bench_table *table, const char *label, double value,
+                       double limit, int at_most, int available);
+
+/* The first number in the file at path (GNU time's -o), or -1. */
+double bench_read_number(const char *path);
+
 /* A pipe whose reading end a thread empties into nothing. */
 typedef struct bench_pipe bench_pipe;
 int bench_pipe_open(bench_pipe **pipe, int *write_fd);

@@ -70,8 +70,8 @@ enum {
 };
 
 #define TIMED "/usr/bin/time -f %M -o \"$BENCH_TMP/mesh-rss\" "
-#define RAYO_MESH TIMED "\"$RAYO\" render \"$RAYO_BUILD/bench/scan-{M}.scene\" " \
-                  "--raw "
+#define RAYO_MESH                                                            \
+    TIMED "\"$RAYO\" render \"$RAYO_BUILD/bench/scan-{M}.scene\" --raw "
 #define EMBREE_MESH TIMED "\"$RAYO_BUILD/bench/embree-rays\" " \
                     "\"$RAYO_BUILD/bench/scan-{M}.scene\" "
 
@@ -91,35 +91,12 @@ static double median(const double *values, int n)
     return n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
 }
 
-/* The value after "key " at the start of a line of text; -1 if none. */
-static double output_value(const char *text, const char *key)
-{
-    size_t n = strlen(key);
-    const char *p = text;
-    while (p != NULL && *p != '\0') {
-        if (strncmp(p, key, n) == 0 && p[n] == ' ')
-            return atof(p + n + 1);
-        p = strchr(p, '\n');
-        if (p != NULL)
-            p++;
-    }
-    return -1;
-}
-
 static double read_rss_kib(void)
 {
     const char *tmp = getenv("BENCH_TMP");
     char path[4096];
-    FILE *in;
-    double kib = -1;
     snprintf(path, sizeof path, "%s/mesh-rss", tmp != NULL ? tmp : ".");
-    in = fopen(path, "r");
-    if (in == NULL)
-        return -1;
-    if (fscanf(in, "%lf", &kib) != 1)
-        kib = -1;
-    fclose(in);
-    return kib;
+    return bench_read_number(path);
 }
 
 static void run_once(mrow *r)
@@ -131,17 +108,17 @@ static void run_once(mrow *r)
     wall = bench_run_measured(r->command, r->captures ? r->output : NULL,
                               sizeof r->output, &cpu);
     if (wall < 0 ||
-        (r->captures && output_value(r->output, "rays_s") < 0)) {
+        (r->captures && bench_output_value(r->output, "rays_s") < 0)) {
         r->failed = 1;
         return;
     }
     r->wall[r->n] = wall;
     r->cpu[r->n] = cpu;
     r->rss[r->n] = read_rss_kib();
-    r->ns[r->n] = output_value(r->output, "ns_per_ray");
-    r->setup[r->n] = output_value(r->output, "setup_s");
-    r->read[r->n] = output_value(r->output, "read_s");
-    r->build[r->n] = output_value(r->output, "build_s");
+    r->ns[r->n] = bench_output_value(r->output, "ns_per_ray");
+    r->setup[r->n] = bench_output_value(r->output, "setup_s");
+    r->read[r->n] = bench_output_value(r->output, "read_s");
+    r->build[r->n] = bench_output_value(r->output, "build_s");
     r->n++;
 }
 
@@ -149,29 +126,6 @@ static void run_once(mrow *r)
 static double row_median(const mrow *r, const double *series)
 {
     return r->available && !r->failed ? median(series, r->n) : -1;
-}
-
-static double ratio(double a, double b)
-{
-    return a > 0 && b > 0 ? a / b : -1;
-}
-
-static void add(bench_table *table, const char *key, const char *label,
-                double value, const char *unit, int available)
-{
-    if (!available)
-        bench_add(table, key, label, -1, "skipped");
-    else
-        bench_add(table, key, label, value, value < 0 ? "failed" : unit);
-}
-
-static void target(bench_table *table, const char *label, double value,
-                   double limit, int at_most, int available)
-{
-    if (available)
-        bench_target(table, label, value, limit, at_most);
-    else
-        bench_target_skipped(table, label, limit, at_most);
 }
 
 /* The mesh's scene is there, and $RAYO_BENCH_MESHES (the Makefile's
@@ -249,6 +203,131 @@ static int rayo_in_process(const char *size, int repeats, double *hit_s,
     return ok;
 }
 
+enum { CPU, WALL, RSS, SETUP, READ, BUILD };
+
+static double series_median(const mrow *r, int series)
+{
+    return row_median(r, series == CPU     ? r->cpu
+                         : series == WALL  ? r->wall
+                         : series == RSS   ? r->rss
+                         : series == SETUP ? r->setup
+                         : series == READ  ? r->read
+                                           : r->build);
+}
+
+/* The rows: which mesh, Embree's (captured) or not, at most how many runs
+ * (0: one a round), the command with {M} for the mesh. */
+typedef struct row_spec {
+    int row;
+    const char *mesh;
+    int captures, runs;
+    const char *command;
+} row_spec;
+
+static const row_spec specs[] = {
+    {M_HIT, "1m", 0, 0,
+     RAYO_MESH "--shade hit -j 1 --format pbm -o /dev/null"},
+    {M_PHONG, "1m", 0, 0,
+     RAYO_MESH "--shade phong -j 1 --format ppm -o /dev/null"},
+    {M_SETUP_1, "1m", 0, 0,
+     RAYO_MESH "-W 1 -H 1 -j 1 --format ppm -o /dev/null"},
+    {M_SETUP_2, "1m", 0, 0,
+     RAYO_MESH "-W 1 -H 1 -j 2 --format ppm -o /dev/null"},
+    {M_E_OCC, "1m", 1, 0, EMBREE_MESH "--mode occlusion --threads 1"},
+    {M_E_OCC_HIGH, "1m", 1, 0,
+     EMBREE_MESH "--mode occlusion --quality high --threads 1"},
+    {M_E_SHADOW, "1m", 1, 0, EMBREE_MESH "--mode shadow --threads 1"},
+    {M_E_SETUP, "1m", 1, 0, EMBREE_MESH "--threads 0 --repeat 0"},
+    {M_POVRAY, "1m", 0, 1,
+     TIMED "povray +I\"$BENCH_TMP/scan-{M}.pov\" "
+           "+O\"$BENCH_TMP/scan-pov.png\" +W1920 +H1080 -D +WT1 -A +FN "
+           "-GA File_Gamma=1.0 2>/dev/null"},
+    {T_RAYO, "10m", 0, 1, RAYO_MESH "--shade phong --format ppm -o /dev/null"},
+    {T_E_OCC, "10m", 1, 1, EMBREE_MESH "--mode occlusion --threads 0"},
+    {T_E_SHADOW, "10m", 1, 1, EMBREE_MESH "--mode shadow --threads 0"},
+    {K_E_OCC, "100k", 1, 0, EMBREE_MESH "--mode occlusion --threads 1"},
+    {K_E_SHADOW, "100k", 1, 0, EMBREE_MESH "--mode shadow --threads 1"},
+};
+
+/* A figure: a row's median of a series, times scale, in unit. */
+typedef struct figure_spec {
+    const char *key, *label;
+    int row, series;
+    double scale;
+    const char *unit;
+} figure_spec;
+
+#define MIB (1.0 / 1024)
+#define GIB (1.0 / 1048576)
+static const figure_spec figures[] = {
+    {"mesh_rayo_hit_s", "meshes 1M: rayo --shade hit, -j 1", M_HIT, CPU, 1e3,
+     "ms"},
+    {"mesh_embree_occlusion_s", "meshes 1M: Embree occlusion, 1 thread",
+     M_E_OCC, CPU, 1e3, "ms"},
+    {"mesh_embree_occlusion_high_s",
+     "meshes 1M: Embree occlusion, high quality, 1 thread", M_E_OCC_HIGH, CPU,
+     1e3, "ms"},
+    {"mesh_rayo_phong_s", "meshes 1M: rayo phong, -j 1", M_PHONG, CPU, 1e3,
+     "ms"},
+    {"mesh_embree_shadow_s", "meshes 1M: Embree primary + shadow, 1 thread",
+     M_E_SHADOW, CPU, 1e3, "ms"},
+    {"mesh_povray_s", "meshes 1M: POV-Ray, +WT1 (one run)", M_POVRAY, CPU,
+     1e3, "ms"},
+    {"mesh_rayo_setup_1_s", "meshes 1M: rayo setup, -j 1, wall", M_SETUP_1,
+     WALL, 1e3, "ms"},
+    {"mesh_rayo_setup_2_s", "meshes 1M: rayo setup, -j 2, wall", M_SETUP_2,
+     WALL, 1e3, "ms"},
+    {"mesh_rayo_setup_1_cpu_s", "meshes 1M: rayo setup, -j 1", M_SETUP_1, CPU,
+     1e3, "ms"},
+    {"mesh_rayo_setup_2_cpu_s", "meshes 1M: rayo setup, -j 2", M_SETUP_2, CPU,
+     1e3, "ms"},
+    {"mesh_embree_setup_s",
+     "meshes 1M: Embree read + build, all threads, wall",
+     M_E_SETUP, SETUP, 1e3, "ms"},
+    {"mesh_embree_read_s", "meshes 1M:   of which reading the STL", M_E_SETUP,
+     READ, 1e3, "ms"},
+    {"mesh_embree_build_1_s", "meshes 1M: Embree build, 1 thread, wall",
+     M_E_OCC, BUILD, 1e3, "ms"},
+    {"mesh_embree_build_high_1_s",
+     "meshes 1M: Embree build, high quality, 1 thread, wall", M_E_OCC_HIGH,
+     BUILD, 1e3, "ms"},
+    {"mesh_rayo_rss_mib", "meshes 1M: rayo phong -j 1, peak RSS", M_PHONG, RSS,
+     MIB, "MiB"},
+    {"mesh_embree_rss_mib", "meshes 1M: Embree primary + shadow, peak RSS",
+     M_E_SHADOW, RSS, MIB, "MiB"},
+    {"mesh_rayo_10m_rss_gib", "meshes 10M: rayo phong, peak RSS", T_RAYO, RSS,
+     GIB, "GiB"},
+    {"mesh_embree_10m_rss_gib",
+     "meshes 10M: Embree primary + shadow, peak RSS",
+     T_E_SHADOW, RSS, GIB, "GiB"},
+    {"mesh_rayo_10m_wall_s", "meshes 10M: rayo phong, all threads, wall",
+     T_RAYO, WALL, 1, "s"},
+};
+
+/* A target: a row's figure over another's, at most limit (the other
+ * row's availability decides whether it is judged). */
+typedef struct ratio_target {
+    const char *label;
+    int row, series, peer, peer_series;
+    double limit;
+} ratio_target;
+
+static const ratio_target ratios[] = {
+    {"meshes 1M: hit, rayo / Embree occlusion", M_HIT, CPU, M_E_OCC, CPU,
+     1.0},
+    {"meshes 1M: hit, rayo / Embree high quality", M_HIT, CPU, M_E_OCC_HIGH,
+     CPU, 1.0},
+    {"meshes 1M: phong, rayo / Embree primary + shadow", M_PHONG, CPU,
+     M_E_SHADOW, CPU, 1.0},
+    {"meshes 1M: setup -j 2, rayo / Embree (wall)", M_SETUP_2, WALL,
+     M_E_SETUP, SETUP, 1.0},
+    {"meshes 1M: peak RSS, rayo / Embree", M_PHONG, RSS, M_E_SHADOW, RSS,
+     1.0},
+    {"meshes 1M: phong, rayo / POV-Ray", M_PHONG, CPU, M_POVRAY, CPU, 0.1},
+    {"meshes 1M: setup, -j 2 / -j 1 (wall)", M_SETUP_2, WALL, M_SETUP_1,
+     WALL, 0.55},
+};
+
 /* The command: its template with each {M} replaced by the mesh's size. */
 static void set_row(mrow *r, int available, int captures, int runs,
                     const char *command, const char *size)
@@ -295,46 +374,22 @@ void bench_meshes(bench_table *table)
                                 "\"$BENCH_TMP/scan-1m.pov\"",
                                 NULL, 0, NULL) >= 0;
     memset(rows, 0, sizeof rows);
-    set_row(&rows[M_HIT], have_m, 0, 0,
-            RAYO_MESH "--shade hit -j 1 --format pbm -o /dev/null", "1m");
-    set_row(&rows[M_PHONG], have_m, 0, 0,
-            RAYO_MESH "--shade phong -j 1 --format ppm -o /dev/null", "1m");
-    set_row(&rows[M_SETUP_1], have_m, 0, 0,
-            RAYO_MESH "-W 1 -H 1 -j 1 --format ppm -o /dev/null", "1m");
-    set_row(&rows[M_SETUP_2], have_m, 0, 0,
-            RAYO_MESH "-W 1 -H 1 -j 2 --format ppm -o /dev/null", "1m");
-    set_row(&rows[M_E_OCC], have_m && embree, 1, 0,
-            EMBREE_MESH "--mode occlusion --threads 1", "1m");
-    set_row(&rows[M_E_OCC_HIGH], have_m && embree, 1, 0,
-            EMBREE_MESH "--mode occlusion --quality high --threads 1", "1m");
-    set_row(&rows[M_E_SHADOW], have_m && embree, 1, 0,
-            EMBREE_MESH "--mode shadow --threads 1", "1m");
-    set_row(&rows[M_E_SETUP], have_m && embree, 1, 0,
-            EMBREE_MESH "--threads 0 --repeat 0", "1m");
-    set_row(&rows[M_POVRAY], povray, 0, 1,
-            TIMED "povray +I\"$BENCH_TMP/scan-{M}.pov\" "
-                  "+O\"$BENCH_TMP/scan-pov.png\" +W1920 +H1080 -D +WT1 -A "
-                  "+FN -GA File_Gamma=1.0 2>/dev/null",
-            "1m");
-    set_row(&rows[T_RAYO], have_t, 0, 1,
-            RAYO_MESH "--shade phong --format ppm -o /dev/null", "10m");
-    set_row(&rows[T_E_OCC], have_t && embree, 1, 1,
-            EMBREE_MESH "--mode occlusion --threads 0", "10m");
-    set_row(&rows[T_E_SHADOW], have_t && embree, 1, 1,
-            EMBREE_MESH "--mode shadow --threads 0", "10m");
-    set_row(&rows[K_E_OCC], have_k && embree, 1, 0,
-            EMBREE_MESH "--mode occlusion --threads 1", "100k");
-    set_row(&rows[K_E_SHADOW], have_k && embree, 1, 0,
-            EMBREE_MESH "--mode shadow --threads 1", "100k");
+    for (i = 0; i < (int)(sizeof specs / sizeof specs[0]); i++) {
+        const row_spec *r = &specs[i];
+        int available = mesh_exists(r->mesh) && (!r->captures || embree) &&
+                        (r->row != M_POVRAY || povray);
+        set_row(&rows[r->row], available, r->captures, r->runs, r->command,
+                r->mesh);
+    }
     for (k = 0; k < repeats; k++)
         for (i = 0; i < ROW_COUNT; i++)
             run_once(&rows[i]);
 
     /* Per ray, rayo in process: hit over the pixels, phong over the rays
      * Embree counts for the same frame (primary and shadow). */
-    shadow_rays[0] = output_value(rows[K_E_SHADOW].output, "rays");
-    shadow_rays[1] = output_value(rows[M_E_SHADOW].output, "rays");
-    shadow_rays[2] = output_value(rows[T_E_SHADOW].output, "rays");
+    shadow_rays[0] = bench_output_value(rows[K_E_SHADOW].output, "rays");
+    shadow_rays[1] = bench_output_value(rows[M_E_SHADOW].output, "rays");
+    shadow_rays[2] = bench_output_value(rows[T_E_SHADOW].output, "rays");
     for (i = 0; i < 3; i++) {
         double hit_s = -1, phong_s = -1;
         int have = i == 0 ? have_k : i == 1 ? have_m : have_t;
@@ -347,69 +402,14 @@ void bench_meshes(bench_table *table)
         }
     }
 
-    add(table, "mesh_rayo_hit_s", "meshes 1M: rayo --shade hit, -j 1",
-        row_median(&rows[M_HIT], rows[M_HIT].cpu) * 1e3, "ms", have_m);
-    add(table, "mesh_embree_occlusion_s",
-        "meshes 1M: Embree occlusion, 1 thread",
-        row_median(&rows[M_E_OCC], rows[M_E_OCC].cpu) * 1e3, "ms",
-        rows[M_E_OCC].available);
-    add(table, "mesh_embree_occlusion_high_s",
-        "meshes 1M: Embree occlusion, high quality, 1 thread",
-        row_median(&rows[M_E_OCC_HIGH], rows[M_E_OCC_HIGH].cpu) * 1e3, "ms",
-        rows[M_E_OCC_HIGH].available);
-    add(table, "mesh_rayo_phong_s", "meshes 1M: rayo phong, -j 1",
-        row_median(&rows[M_PHONG], rows[M_PHONG].cpu) * 1e3, "ms", have_m);
-    add(table, "mesh_embree_shadow_s",
-        "meshes 1M: Embree primary + shadow, 1 thread",
-        row_median(&rows[M_E_SHADOW], rows[M_E_SHADOW].cpu) * 1e3, "ms",
-        rows[M_E_SHADOW].available);
-    add(table, "mesh_povray_s", "meshes 1M: POV-Ray, +WT1 (one run)",
-        row_median(&rows[M_POVRAY], rows[M_POVRAY].cpu) * 1e3, "ms",
-        povray);
-    add(table, "mesh_rayo_setup_1_s", "meshes 1M: rayo setup, -j 1, wall",
-        row_median(&rows[M_SETUP_1], rows[M_SETUP_1].wall) * 1e3, "ms",
-        have_m);
-    add(table, "mesh_rayo_setup_2_s", "meshes 1M: rayo setup, -j 2, wall",
-        row_median(&rows[M_SETUP_2], rows[M_SETUP_2].wall) * 1e3, "ms",
-        have_m);
-    add(table, "mesh_rayo_setup_1_cpu_s", "meshes 1M: rayo setup, -j 1",
-        row_median(&rows[M_SETUP_1], rows[M_SETUP_1].cpu) * 1e3, "ms",
-        have_m);
-    add(table, "mesh_rayo_setup_2_cpu_s", "meshes 1M: rayo setup, -j 2",
-        row_median(&rows[M_SETUP_2], rows[M_SETUP_2].cpu) * 1e3, "ms",
-        have_m);
-    add(table, "mesh_embree_setup_s",
-        "meshes 1M: Embree read + build, all threads, wall",
-        row_median(&rows[M_E_SETUP], rows[M_E_SETUP].setup) * 1e3, "ms",
-        rows[M_E_SETUP].available);
-    add(table, "mesh_embree_read_s", "meshes 1M:   of which reading the STL",
-        row_median(&rows[M_E_SETUP], rows[M_E_SETUP].read) * 1e3, "ms",
-        rows[M_E_SETUP].available);
-    add(table, "mesh_embree_build_1_s",
-        "meshes 1M: Embree build, 1 thread, wall",
-        row_median(&rows[M_E_OCC], rows[M_E_OCC].build) * 1e3, "ms",
-        rows[M_E_OCC].available);
-    add(table, "mesh_embree_build_high_1_s",
-        "meshes 1M: Embree build, high quality, 1 thread, wall",
-        row_median(&rows[M_E_OCC_HIGH], rows[M_E_OCC_HIGH].build) * 1e3,
-        "ms", rows[M_E_OCC_HIGH].available);
-    add(table, "mesh_rayo_rss_mib", "meshes 1M: rayo phong -j 1, peak RSS",
-        row_median(&rows[M_PHONG], rows[M_PHONG].rss) / 1024, "MiB",
-        have_m);
-    add(table, "mesh_embree_rss_mib",
-        "meshes 1M: Embree primary + shadow, peak RSS",
-        row_median(&rows[M_E_SHADOW], rows[M_E_SHADOW].rss) / 1024, "MiB",
-        rows[M_E_SHADOW].available);
-    add(table, "mesh_rayo_10m_rss_gib", "meshes 10M: rayo phong, peak RSS",
-        row_median(&rows[T_RAYO], rows[T_RAYO].rss) / 1048576, "GiB",
-        have_t);
-    add(table, "mesh_embree_10m_rss_gib",
-        "meshes 10M: Embree primary + shadow, peak RSS",
-        row_median(&rows[T_E_SHADOW], rows[T_E_SHADOW].rss) / 1048576, "GiB",
-        rows[T_E_SHADOW].available);
-    add(table, "mesh_rayo_10m_wall_s",
-        "meshes 10M: rayo phong, all threads, wall",
-        row_median(&rows[T_RAYO], rows[T_RAYO].wall), "s", have_t);
+    for (i = 0; i < (int)(sizeof figures / sizeof figures[0]); i++) {
+        const figure_spec *f = &figures[i];
+        const mrow *r = &rows[f->row];
+        double value = series_median(r, f->series);
+        bench_add_peer(table, f->key, f->label,
+                       value < 0 ? -1 : value * f->scale, f->unit,
+                       r->available);
+    }
     for (i = 0; i < 3; i++) {
         char key[64], label[128];
         int have = i == 0 ? have_k : i == 1 ? have_m : have_t;
@@ -419,77 +419,63 @@ void bench_meshes(bench_table *table)
         snprintf(key, sizeof key, "mesh_%s_rayo_hit_ns", sizes[i]);
         snprintf(label, sizeof label, "meshes %s: rayo hit, per ray",
                  sizes[i]);
-        add(table, key, label, ns[i][0], "ns", have);
+        bench_add_peer(table, key, label, ns[i][0], "ns", have);
         snprintf(key, sizeof key, "mesh_%s_embree_occlusion_ns", sizes[i]);
         snprintf(label, sizeof label, "meshes %s: Embree occlusion, per ray",
                  sizes[i]);
-        add(table, key, label, row_median(occ, occ->ns), "ns",
-            occ->available);
+        bench_add_peer(table, key, label, row_median(occ, occ->ns), "ns",
+                       occ->available);
         if (i == 1)
-            add(table, "mesh_1m_embree_occlusion_high_ns",
+            bench_add_peer(
+                table, "mesh_1m_embree_occlusion_high_ns",
                 "meshes 1m: Embree occlusion, high quality, per ray",
                 row_median(&rows[M_E_OCC_HIGH], rows[M_E_OCC_HIGH].ns), "ns",
                 rows[M_E_OCC_HIGH].available);
         snprintf(key, sizeof key, "mesh_%s_rayo_phong_ns", sizes[i]);
         snprintf(label, sizeof label, "meshes %s: rayo phong, per ray",
                  sizes[i]);
-        add(table, key, label, ns[i][1], "ns", have && shadow->available);
+        bench_add_peer(table, key, label, ns[i][1], "ns",
+                       have && shadow->available);
         snprintf(key, sizeof key, "mesh_%s_embree_shadow_ns", sizes[i]);
         snprintf(label, sizeof label,
                  "meshes %s: Embree primary + shadow, per ray", sizes[i]);
-        add(table, key, label, row_median(shadow, shadow->ns), "ns",
-            shadow->available);
+        bench_add_peer(table, key, label, row_median(shadow, shadow->ns),
+                       "ns", shadow->available);
     }
 
-    target(table, "meshes 1M: hit, rayo / Embree occlusion",
-           ratio(row_median(&rows[M_HIT], rows[M_HIT].cpu),
-                 row_median(&rows[M_E_OCC], rows[M_E_OCC].cpu)),
-           1.0, 1, rows[M_E_OCC].available);
-    target(table, "meshes 1M: hit, rayo / Embree high quality",
-           ratio(row_median(&rows[M_HIT], rows[M_HIT].cpu),
-                 row_median(&rows[M_E_OCC_HIGH], rows[M_E_OCC_HIGH].cpu)),
-           1.0, 1, rows[M_E_OCC_HIGH].available);
-    target(table, "meshes 1M: phong, rayo / Embree primary + shadow",
-           ratio(row_median(&rows[M_PHONG], rows[M_PHONG].cpu),
-                 row_median(&rows[M_E_SHADOW], rows[M_E_SHADOW].cpu)),
-           1.0, 1, rows[M_E_SHADOW].available);
-    target(table, "meshes 1M: setup -j 2, rayo / Embree (wall)",
-           ratio(row_median(&rows[M_SETUP_2], rows[M_SETUP_2].wall),
-                 row_median(&rows[M_E_SETUP], rows[M_E_SETUP].setup)),
-           1.0, 1, rows[M_E_SETUP].available);
-    target(table, "meshes 1M: peak RSS, rayo / Embree",
-           ratio(row_median(&rows[M_PHONG], rows[M_PHONG].rss),
-                 row_median(&rows[M_E_SHADOW], rows[M_E_SHADOW].rss)),
-           1.0, 1, rows[M_E_SHADOW].available);
-    target(table, "meshes 1M: phong, rayo / POV-Ray",
-           ratio(row_median(&rows[M_PHONG], rows[M_PHONG].cpu),
-                 row_median(&rows[M_POVRAY], rows[M_POVRAY].cpu)),
-           0.1, 1, povray);
-    target(table, "meshes 1M: setup, -j 2 / -j 1 (wall)",
-           ratio(row_median(&rows[M_SETUP_2], rows[M_SETUP_2].wall),
-                 row_median(&rows[M_SETUP_1], rows[M_SETUP_1].wall)),
-           0.55, 1, have_m);
-    target(table, "meshes 10M: rayo peak RSS (GiB)",
-           row_median(&rows[T_RAYO], rows[T_RAYO].rss) / 1048576, 24, 1,
-           have_t);
+    for (i = 0; i < (int)(sizeof ratios / sizeof ratios[0]); i++) {
+        const ratio_target *t = &ratios[i];
+        bench_target_peer(
+            table, t->label,
+            bench_ratio(series_median(&rows[t->row], t->series),
+                        series_median(&rows[t->peer], t->peer_series)),
+            t->limit, 1, rows[t->peer].available);
+    }
+    bench_target_peer(table, "meshes 10M: rayo peak RSS (GiB)",
+                      series_median(&rows[T_RAYO], RSS) * GIB, 24, 1,
+                      have_t);
     {
-        double e_occ = ratio(row_median(&rows[T_E_OCC], rows[T_E_OCC].ns),
-                             row_median(&rows[K_E_OCC], rows[K_E_OCC].ns));
+        double e_occ =
+            bench_ratio(row_median(&rows[T_E_OCC], rows[T_E_OCC].ns),
+                        row_median(&rows[K_E_OCC], rows[K_E_OCC].ns));
         double e_sh =
-            ratio(row_median(&rows[T_E_SHADOW], rows[T_E_SHADOW].ns),
-                  row_median(&rows[K_E_SHADOW], rows[K_E_SHADOW].ns));
-        int both = have_k && have_t && embree && e_occ > 0 && e_sh > 0;
-        add(table, "mesh_embree_growth_occlusion",
-            "meshes: Embree occlusion per ray, 10M / 100k", e_occ, "x",
-            have_k && have_t && embree);
-        add(table, "mesh_embree_growth_shadow",
-            "meshes: Embree primary + shadow per ray, 10M / 100k", e_sh, "x",
-            have_k && have_t && embree);
+            bench_ratio(row_median(&rows[T_E_SHADOW], rows[T_E_SHADOW].ns),
+                        row_median(&rows[K_E_SHADOW], rows[K_E_SHADOW].ns));
+        int peers = have_k && have_t && embree;
+        int both = peers && e_occ > 0 && e_sh > 0;
+        bench_add_peer(table, "mesh_embree_growth_occlusion",
+                       "meshes: Embree occlusion per ray, 10M / 100k", e_occ,
+                       "x", peers);
+        bench_add_peer(table, "mesh_embree_growth_shadow",
+                       "meshes: Embree primary + shadow per ray, 10M / 100k",
+                       e_sh, "x", peers);
         /* The limit is Embree's growth in this run; without it, the
          * issue's figures for Embree (skipped all the same). */
-        target(table, "meshes: rayo hit per ray, 10M / 100k",
-               ratio(ns[2][0], ns[0][0]), both ? e_occ : 1.88, 1, both);
-        target(table, "meshes: rayo phong per ray, 10M / 100k",
-               ratio(ns[2][1], ns[0][1]), both ? e_sh : 1.66, 1, both);
+        bench_target_peer(table, "meshes: rayo hit per ray, 10M / 100k",
+                          bench_ratio(ns[2][0], ns[0][0]),
+                          both ? e_occ : 1.88, 1, both);
+        bench_target_peer(table, "meshes: rayo phong per ray, 10M / 100k",
+                          bench_ratio(ns[2][1], ns[0][1]),
+                          both ? e_sh : 1.66, 1, both);
     }
 }

@@ -6,8 +6,9 @@
  * is, three corners a triangle, as rayo keeps it).  Its own reader, not
  * rayo's (the program links no rayo): 84 bytes of header and count, then
  * the 50-byte records read in large blocks (their floats copied as they
- * are: a little-endian machine's, like the file's), the count checked against the
- * file's size; ASCII STL and OBJ are refused (the bench writes binary).
+ * are: a little-endian machine's, like the file's), the count checked
+ * against the file's size; ASCII STL and OBJ are refused (the bench
+ * writes binary).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -44,7 +45,7 @@ void read_mesh(const char *path, scene *s)
     FILE *in = fopen(path, "rb");
     unsigned char head[84], *block;
     uint32_t count, done = 0;
-    long size;
+    long size = -1;
     float *grown;
     size_t total;
     if (in == NULL)

@@ -252,8 +252,8 @@ void read_scene(const char *path, scene *s)
                  strcmp(w, "ambient") != 0 && strcmp(w, "material") != 0 &&
                  strcmp(w, "samples") != 0 && strcmp(w, "depth") != 0)
             die_input(&r, "unknown keyword; expected camera, light, sphere, "
-                          "plane, mesh (or shade, background, ambient, material, "
-                          "samples, depth, which are read past)");
+                          "plane, mesh (or shade, background, ambient, "
+                          "material, samples, depth, which are read past)");
     }
     free(text);
 }

@@ -8,9 +8,9 @@
  * file's size before anything is allocated for it; bytes after the last
  * record are counted, not read.  The records are decoded where they lie in
  * the source's window, straight into the mesh's arrays (a file of
- * millions of triangles is mostly this loop).  ASCII: "solid NAME", then "facet normal
- * X Y Z / outer loop / vertex X Y Z (three) / endloop / endfacet" per
- * triangle, "endsolid [NAME]".
+ * millions of triangles is mostly this loop).  ASCII: "solid NAME", then
+ * "facet normal X Y Z / outer loop / vertex X Y Z (three) / endloop /
+ * endfacet" per triangle, "endsolid [NAME]".
  *
  * A corner that is not a finite number is an error; a normal that is
  * not (or is zero) is kept as (0, 0, 0) and counted, so the scene can

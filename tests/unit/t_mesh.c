@@ -140,12 +140,26 @@ static int write_file(const stl_file *f, char *path)
     return fclose(out) == 0 && written;
 }
 
+/* f written to path and read back: refused with "PATH: " message. */
+static void refused_at(const stl_file *f, char *path, const char *message,
+                       const char *what)
+{
+    char expected[256];
+    rayo_mesh mesh;
+    rayo_error err;
+    snprintf(expected, sizeof expected, "%s: %s", path, message);
+    ok(write_file(f, path), "the file written");
+    is_int(rayo_mesh_read_file(path, &mesh, NULL, &err), RAYO_ERR_FORMAT,
+           "%s", what);
+    is_string(err.message, expected, "  the byte, the triangle, the corner");
+}
+
 /* A file is read in 64 KiB windows: record 1310 (bytes 65534 to 65583)
    is cut by the first window's end, the rest are decoded in place. */
 static void test_binary_windows(void)
 {
     stl_file f = binary_stl(3000, 3000);
-    char path[] = "/tmp/rayo-t-mesh.XXXXXX", expected[256];
+    char path[] = "/tmp/rayo-t-mesh.XXXXXX";
     rayo_mesh mesh;
     rayo_mesh_report report;
     rayo_error err;
@@ -166,24 +180,17 @@ static void test_binary_windows(void)
 
     /* Not finite: in the cut record, and in one decoded in place. */
     put_float(f.bytes + 84 + 1309 * 50 + 12 + 4 * 4, NAN);
-    ok(write_file(&f, path), "the same with a NaN in the cut record");
-    is_int(rayo_mesh_read_file(path, &mesh, NULL, &err), RAYO_ERR_FORMAT,
-           "  refused");
-    snprintf(expected, sizeof expected,
-             "%s: byte 65562: found nan as coordinate 2 of triangle 1310's "
-             "corner 2; expected a finite number",
-             path);
-    is_string(err.message, expected, "  at byte 84 + 1309 x 50 + 28");
+    refused_at(&f, path,
+               "byte 65562: found nan as coordinate 2 of triangle 1310's "
+               "corner 2; expected a finite number",
+               "a NaN in the cut record: refused at byte 84 + 1309 x 50 + 28");
     put_float(f.bytes + 84 + 1309 * 50 + 12 + 4 * 4, 0);
     put_float(f.bytes + 84 + 2000 * 50 + 12 + 4 * 8, INFINITY);
-    ok(write_file(&f, path), "the same with an infinity in triangle 2001");
-    is_int(rayo_mesh_read_file(path, &mesh, NULL, &err), RAYO_ERR_FORMAT,
-           "  refused");
-    snprintf(expected, sizeof expected,
-             "%s: byte 100128: found an infinity as coordinate 3 of "
-             "triangle 2001's corner 3; expected a finite number",
-             path);
-    is_string(err.message, expected, "  at byte 84 + 2000 x 50 + 44");
+    refused_at(&f, path,
+               "byte 100128: found an infinity as coordinate 3 of triangle "
+               "2001's corner 3; expected a finite number",
+               "an infinity in triangle 2001: refused at byte 84 + 2000 x 50 "
+               "+ 44");
     unlink(path);
     free(f.bytes);
 }
