@@ -40,13 +40,14 @@
  *
  * It prints "key value" lines: read_s, build_s, setup_s (wall seconds),
  * setup_cpu_s (the processor time of reading and building, all threads),
- * rays (cast in one pass), rays_s (processor seconds of the best pass),
- * ns_per_ray, and the checksums hits (primary rays that hit: the black
- * pixels of rayo's --shade hit PBM) and lit (shadow rays that reached the
- * light), and peak_rss_kib (getrusage's, which on Linux also counts what
- * the process held before its exec).  --pbm writes the hits as a raw PBM, for tests.  Errors: one
- * line on stderr (with the line number for the scene), exit 2 (bad input)
- * or 1 (I/O, Embree).  This is a benchmark tool: rayo never links Embree.
+ * rays (cast in one pass), rays_s (the calling thread's processor
+ * seconds of the best pass), ns_per_ray, the checksums hits (primary rays
+ * that hit: the black pixels of rayo's --shade hit PBM) and lit (shadow
+ * rays that reached the light), and peak_rss_kib (getrusage's, which on
+ * Linux also counts what the process held before its exec).  --pbm
+ * writes the hits as a raw PBM, for tests.  Errors: one line on stderr
+ * (with the line number for the scene), exit 2 (bad input) or 1 (I/O,
+ * Embree).  This is a benchmark tool: rayo never links Embree.
  */
 #define _POSIX_C_SOURCE 200809L
 
