@@ -292,7 +292,8 @@ EMBREE_LIBS ?= -lembree3
 EMBREE_RAYS := $(BUILD)/bench/embree-rays
 EMBREE_SRC := $(sort $(wildcard bench/embree/*.c))
 
-$(EMBREE_RAYS): $(EMBREE_SRC) bench/embree/scene.h bench/embree/mesh.h include/rayo/vec3.h | $(BUILD)/.deps-build
+$(EMBREE_RAYS): $(EMBREE_SRC) bench/embree/scene.h bench/embree/mesh.h \
+    bench/embree/trace.h include/rayo/vec3.h | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(EMBREE_SRC) $(EMBREE_LIBS) -lm

@@ -1,10 +1,10 @@
 /*
  * scene.h - the Embree program's view of a scene file (bench/embree/):
- * the subset bench/field_scene.py writes, as the program needs it (the
- * camera's settings, the first point light, planes, the spheres as
- * Embree's float4 vertices, and the triangles of `mesh FILE` lines), in rayo's own double vectors (rayo/vec3.h,
- * all inline), so its camera is computed as rayo's is.  scene.c reads
- * it.
+ * the subset bench/field_scene.py and bench/scan/scan_mesh.c write, as
+ * the program needs it (the camera's settings, the first point light,
+ * planes, the spheres as Embree's float4 vertices, and the triangles of
+ * `mesh FILE` lines), in rayo's own double vectors (rayo/vec3.h, all
+ * inline), so its camera is computed as rayo's is.  scene.c reads it.
  */
 #ifndef EMBREE_RAYS_SCENE_H
 #define EMBREE_RAYS_SCENE_H
