@@ -8,8 +8,9 @@
  *
  * $RAYO names the `rayo` command for the rows that run it (peak memory,
  * bench/commands.tsv).  Every figure is the best of N runs (default 3;
- * the seed job, which takes about a millisecond, 4N), taken in this one
- * process, so the ratios hold on a machine others are using.
+ * the seed job, which takes about a millisecond, 4N; the mesh rows of
+ * meshes.c the median of N), taken in this one process, so the ratios
+ * hold on a machine others are using.
  *
  * Adding a row:
  *   - a shell command: one line in bench/commands.tsv (commands.c says
