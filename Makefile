@@ -293,7 +293,8 @@ EMBREE_LIBS ?= -lembree3
 EMBREE_RAYS := $(BUILD)/bench/embree-rays
 EMBREE_SRC := $(sort $(wildcard bench/embree/*.c))
 
-$(EMBREE_RAYS): $(EMBREE_SRC) bench/embree/scene.h include/rayo/vec3.h | $(BUILD)/.deps-build
+$(EMBREE_RAYS): $(EMBREE_SRC) bench/embree/scene.h bench/embree/mesh.h \
+    bench/embree/trace.h include/rayo/vec3.h | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $(EMBREE_SRC) $(EMBREE_LIBS) -lm
@@ -303,12 +304,34 @@ ifneq ($(wildcard $(EMBREE_HEADER)),)
 check check-valgrind: $(EMBREE_RAYS)
 endif
 
-bench: $(RAYO) $(BENCH_BIN) | $(BUILD)/.deps-bench
+# The meshes of the bench's mesh rows (bench/meshes.c): a scan-like
+# watertight STL and a scene framing it, written by bench/scan/scan_mesh.c
+# into the build folder once (about 5, 50 and 500 MB).  `make bench
+# BENCH_MESHES="100k 1m"` leaves the 10,000,000-triangle one out (its rows
+# then say skipped).
+SCAN_MESH := $(BUILD)/bench/scan-mesh
+BENCH_MESHES ?= 100k 1m 10m
+SCAN_COUNT_100k := 100000
+SCAN_COUNT_1m := 1000000
+SCAN_COUNT_10m := 10000000
+
+$(SCAN_MESH): bench/scan/scan_mesh.c
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $< -lm
+
+$(BUILD)/bench/scan-%.scene: $(SCAN_MESH)
+	$(call say,GEN,$@)
+	$(Q)$(SCAN_MESH) $(SCAN_COUNT_$*) $(BUILD)/bench/scan-$*.stl $@
+
+bench: $(RAYO) $(BENCH_BIN) $(BENCH_MESHES:%=$(BUILD)/bench/scan-%.scene) \
+    | $(BUILD)/.deps-bench
 	@if [ -f $(EMBREE_HEADER) ]; then $(MAKE) --no-print-directory \
 	    $(EMBREE_RAYS); else rm -f $(EMBREE_RAYS); echo "bench: no" \
 	    "$(EMBREE_HEADER) (libembree-dev): the Embree rows say skipped"; fi
 	RAYO=$(abspath $(RAYO)) RAYO_BUILD=$(abspath $(BUILD)) \
-	RAYO_SOURCE=$(CURDIR) $(BENCH_BIN) --json $(BUILD)/bench.json \
+	RAYO_SOURCE=$(CURDIR) RAYO_BENCH_MESHES="$(BENCH_MESHES)" \
+	    $(BENCH_BIN) --json $(BUILD)/bench.json \
 	    $(BENCH_ARGS)
 
 # The command tests with every rayo run under valgrind memcheck.

@@ -3,13 +3,14 @@
  * (figures, then targets with pass or FAIL) and writes it as JSON.
  *
  *   rayo-bench [--json FILE] [--repeat N]
- *              [--only seed|large|bvh|commands|compare|peers]
+ *              [--only seed|large|bvh|commands|compare|peers|meshes]
  *              [--rows FILE]
  *
  * $RAYO names the `rayo` command for the rows that run it (peak memory,
  * bench/commands.tsv).  Every figure is the best of N runs (default 3;
- * the seed job, which takes about a millisecond, 4N), taken in this one
- * process, so the ratios hold on a machine others are using.
+ * the seed job, which takes about a millisecond, 4N; the mesh rows of
+ * meshes.c the median of N), taken in this one process, so the ratios
+ * hold on a machine others are using.
  *
  * Adding a row:
  *   - a shell command: one line in bench/commands.tsv (commands.c says
@@ -222,7 +223,7 @@ int main(int argc, char **argv)
             rows = argv[++i];
         else {
             fprintf(stderr, "usage: %s [--json FILE] [--repeat N] [--only "
-                            "seed|large|bvh|commands|compare|peers] "
+                            "seed|large|bvh|commands|compare|peers|meshes] "
                             "[--rows FILE]\n",
                     argv[0]);
             return 2;
@@ -247,6 +248,8 @@ int main(int argc, char **argv)
         bench_compare_noise(&table);
     if (wants(only, "peers") && rayo != NULL)
         bench_peers(&table);
+    if (wants(only, "meshes") && rayo != NULL)
+        bench_meshes(&table);
     print_targets(&table);
     if (json != NULL) {
         write_json(&table, json);

@@ -49,6 +49,20 @@ double bench_value(const bench_table *table, const char *key);
 /* The number of runs each figure takes the best of. */
 int bench_repeats(const bench_table *table);
 
+/* The rows against other programs (peer_rows.c): the value after "key "
+ * at the start of a line of text (-1 if none); a / b, or -1 unless both
+ * are positive; a figure (value < 0: "failed") or target that says
+ * "skipped" unless available. */
+double bench_output_value(const char *text, const char *key);
+double bench_ratio(double a, double b);
+void bench_add_peer(bench_table *table, const char *key, const char *label,
+                    double value, const char *unit, int available);
+void bench_target_peer(bench_table *table, const char *label, double value,
+                       double limit, int at_most, int available);
+
+/* The first number in the file at path (GNU time's -o), or -1. */
+double bench_read_number(const char *path);
+
 /* A pipe whose reading end a thread empties into nothing. */
 typedef struct bench_pipe bench_pipe;
 int bench_pipe_open(bench_pipe **pipe, int *write_fd);
@@ -87,13 +101,14 @@ int bench_render_into(rayo_output *out, const rayo_camera *camera,
                       int plain);
 
 /* The rows: seed.c, large.c, bvh.c, commands.c, compare_noise.c,
- * peers.c. */
+ * peers.c, meshes.c. */
 void bench_seed(bench_table *table);
 void bench_large(bench_table *table, const char *rayo);
 void bench_bvh(bench_table *table);
 void bench_commands(bench_table *table, const char *rows_file);
 void bench_compare_noise(bench_table *table);
 void bench_peers(bench_table *table);
+void bench_meshes(bench_table *table);
 
 /* The median time a new thread takes to start running on an idle CPU
  * (thread_start.c), seconds; -1 when no thread could be created. */

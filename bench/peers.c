@@ -89,21 +89,6 @@ static const char *const commands[ROW_COUNT] = {
      "+W1920 +H1080 -D +WT1 -A +FN -GA File_Gamma=1.0 2>/dev/null"),
 };
 
-/* The value after "key " at the start of a line of text; -1 if none. */
-static double output_value(const char *text, const char *key)
-{
-    size_t n = strlen(key);
-    const char *p = text;
-    while (p != NULL && *p != '\0') {
-        if (strncmp(p, key, n) == 0 && p[n] == ' ')
-            return atof(p + n + 1);
-        p = strchr(p, '\n');
-        if (p != NULL)
-            p++;
-    }
-    return -1;
-}
-
 /* A row that failed once has no figures. */
 static void fail_row(row *r)
 {
@@ -126,8 +111,8 @@ static void run_once(row *r)
     r->wall = bench_best(r->wall, wall);
     r->cpu = bench_best(r->cpu, cpu);
     if (r->captures) {
-        double rays_s = output_value(output, "rays_s");
-        double setup_s = output_value(output, "setup_s");
+        double rays_s = bench_output_value(output, "rays_s");
+        double setup_s = bench_output_value(output, "setup_s");
         if (rays_s < 0 || setup_s < 0) {
             fail_row(r);
             return;
@@ -136,8 +121,10 @@ static void run_once(row *r)
             memcpy(r->output, output, sizeof output);
         r->rays_s = bench_best(r->rays_s, rays_s);
         r->setup_s = bench_best(r->setup_s, setup_s);
-        r->read_s = bench_best(r->read_s, output_value(output, "read_s"));
-        r->build_s = bench_best(r->build_s, output_value(output, "build_s"));
+        r->read_s =
+            bench_best(r->read_s, bench_output_value(output, "read_s"));
+        r->build_s =
+            bench_best(r->build_s, bench_output_value(output, "build_s"));
     }
 }
 
@@ -167,11 +154,6 @@ static long pbm_black(const char *path)
     return black;
 }
 
-static double ratio(double a, double b)
-{
-    return a > 0 && b > 0 ? a / b : -1;
-}
-
 /* A figure in ms (seconds given), or "skipped" / "failed". */
 static void add_ms(bench_table *table, const char *key, const char *label,
                    double seconds, int available)
@@ -184,24 +166,6 @@ static void add_ms(bench_table *table, const char *key, const char *label,
         bench_add(table, key, label, seconds * 1e3, "ms");
 }
 
-static void add_value(bench_table *table, const char *key, const char *label,
-                      double value, const char *unit, int available)
-{
-    if (!available)
-        bench_add(table, key, label, -1, "skipped");
-    else
-        bench_add(table, key, label, value, value < 0 ? "failed" : unit);
-}
-
-static void add_target(bench_table *table, const char *label, double value,
-                       double limit, int at_most, int available)
-{
-    if (available)
-        bench_target(table, label, value, limit, at_most);
-    else
-        bench_target_skipped(table, label, limit, at_most);
-}
-
 /* Nanoseconds per ray of rayo's render after setup (processor time). */
 static double rayo_ns_per_ray(const row *render, const row *setup, double rays)
 {
@@ -212,7 +176,7 @@ static double rayo_ns_per_ray(const row *render, const row *setup, double rays)
 
 static double embree_ns_per_ray(const row *r)
 {
-    return r->failed ? -1 : output_value(r->output, "ns_per_ray");
+    return r->failed ? -1 : bench_output_value(r->output, "ns_per_ray");
 }
 
 void bench_peers(bench_table *table)
@@ -302,59 +266,59 @@ void bench_peers(bench_table *table)
      * rays are counted as Embree counts them (rayo also reflects). */
     shadow_rays = rows[EMBREE_SHADOW].failed
                       ? -1
-                      : output_value(rows[EMBREE_SHADOW].output, "rays");
-    add_value(table, "peers_rayo_hit_ns",
+                      : bench_output_value(rows[EMBREE_SHADOW].output, "rays");
+    bench_add_peer(table, "peers_rayo_hit_ns",
               "peers: rayo hit, per ray after setup",
               rayo_ns_per_ray(&rows[RAYO_HIT], &rows[RAYO_SETUP_1], primary),
               "ns", 1);
-    add_value(table, "peers_embree_occlusion_ns",
+    bench_add_peer(table, "peers_embree_occlusion_ns",
               "peers: Embree occlusion, per ray",
               embree_ns_per_ray(&rows[EMBREE_OCCLUSION]), "ns", embree);
-    add_value(table, "peers_embree_occlusion16_ns",
+    bench_add_peer(table, "peers_embree_occlusion16_ns",
               "peers: Embree occlusion, 16-ray packets, per ray",
               embree_ns_per_ray(&rows[EMBREE_OCCLUSION_16]), "ns", embree);
-    add_value(
+    bench_add_peer(
         table, "peers_rayo_phong_ns", "peers: rayo phong, per ray after setup",
         rayo_ns_per_ray(&rows[RAYO_PHONG], &rows[RAYO_SETUP_1], shadow_rays),
         "ns", embree);
-    add_value(table, "peers_embree_shadow_ns",
+    bench_add_peer(table, "peers_embree_shadow_ns",
               "peers: Embree primary + shadow, per ray",
               embree_ns_per_ray(&rows[EMBREE_SHADOW]), "ns", embree);
-    add_value(table, "peers_embree_shadow16_ns",
+    bench_add_peer(table, "peers_embree_shadow16_ns",
               "peers: Embree primary + shadow, packets, per ray",
               embree_ns_per_ray(&rows[EMBREE_SHADOW_16]), "ns", embree);
     /* The same with the plane tested first, outside Embree (rayo's way). */
-    add_value(table, "peers_embree_first_occlusion_ns",
+    bench_add_peer(table, "peers_embree_first_occlusion_ns",
               "peers: Embree, plane first: occlusion, per ray",
               embree_ns_per_ray(&rows[EMBREE_FIRST_OCCLUSION]), "ns", embree);
-    add_value(table, "peers_embree_first_occlusion16_ns",
+    bench_add_peer(table, "peers_embree_first_occlusion16_ns",
               "peers: Embree, plane first: occlusion, packets",
               embree_ns_per_ray(&rows[EMBREE_FIRST_OCCLUSION_16]), "ns",
               embree);
-    add_value(table, "peers_embree_first_shadow_ns",
+    bench_add_peer(table, "peers_embree_first_shadow_ns",
               "peers: Embree, plane first: + shadow, per ray",
               embree_ns_per_ray(&rows[EMBREE_FIRST_SHADOW]), "ns", embree);
-    add_value(table, "peers_embree_first_shadow16_ns",
+    bench_add_peer(table, "peers_embree_first_shadow16_ns",
               "peers: Embree, plane first: + shadow, packets",
               embree_ns_per_ray(&rows[EMBREE_FIRST_SHADOW_16]), "ns", embree);
-    add_value(table, "peers_hit_per_ray_ratio",
+    bench_add_peer(table, "peers_hit_per_ray_ratio",
               "peers: per ray, rayo hit / Embree single rays",
-              ratio(bench_value(table, "peers_rayo_hit_ns"),
+              bench_ratio(bench_value(table, "peers_rayo_hit_ns"),
                     bench_value(table, "peers_embree_occlusion_ns")),
               "x", embree);
-    add_value(table, "peers_hit_per_ray_ratio16",
+    bench_add_peer(table, "peers_hit_per_ray_ratio16",
               "peers: per ray, rayo hit / Embree packets",
-              ratio(bench_value(table, "peers_rayo_hit_ns"),
+              bench_ratio(bench_value(table, "peers_rayo_hit_ns"),
                     bench_value(table, "peers_embree_occlusion16_ns")),
               "x", embree);
-    add_value(table, "peers_phong_per_ray_ratio",
+    bench_add_peer(table, "peers_phong_per_ray_ratio",
               "peers: per ray, rayo phong / Embree single rays",
-              ratio(bench_value(table, "peers_rayo_phong_ns"),
+              bench_ratio(bench_value(table, "peers_rayo_phong_ns"),
                     bench_value(table, "peers_embree_shadow_ns")),
               "x", embree);
-    add_value(table, "peers_phong_per_ray_ratio16",
+    bench_add_peer(table, "peers_phong_per_ray_ratio16",
               "peers: per ray, rayo phong / Embree packets",
-              ratio(bench_value(table, "peers_rayo_phong_ns"),
+              bench_ratio(bench_value(table, "peers_rayo_phong_ns"),
                     bench_value(table, "peers_embree_shadow16_ns")),
               "x", embree);
 
@@ -373,24 +337,28 @@ void bench_peers(bench_table *table)
                       "failed");
         else
             bench_add(table, "peers_hit_checksum", CHECKSUM_LABEL,
-                      output_value(rows[EMBREE_OCCLUSION].output, "hits") -
-                          (double)black,
+                      bench_output_value(rows[EMBREE_OCCLUSION].output,
+                                         "hits") - (double)black,
                       "px");
     }
 
-    add_target(table, "peers: hit, rayo / Embree occlusion",
-               ratio(rows[RAYO_HIT].cpu, rows[EMBREE_OCCLUSION].cpu), 1.0, 1,
-               embree);
-    add_target(table, "peers: phong, rayo / Embree primary + shadow",
-               ratio(rows[RAYO_PHONG].cpu, rows[EMBREE_SHADOW].cpu), 1.2, 1,
-               embree);
-    add_target(
+    bench_target_peer(
+        table, "peers: hit, rayo / Embree occlusion",
+        bench_ratio(rows[RAYO_HIT].cpu, rows[EMBREE_OCCLUSION].cpu), 1.0, 1,
+        embree);
+    bench_target_peer(
+        table, "peers: phong, rayo / Embree primary + shadow",
+        bench_ratio(rows[RAYO_PHONG].cpu, rows[EMBREE_SHADOW].cpu), 1.2, 1,
+        embree);
+    bench_target_peer(
         table, "peers: setup, rayo / Embree read + build (wall)",
-        ratio(rows[RAYO_SETUP_ALL].wall, rows[EMBREE_SETUP_ALL].setup_s), 1.0,
-        1, embree);
-    add_target(table, "peers: phong speed-up, -j 1 / -j 2 (wall)",
-               ratio(rows[RAYO_PHONG].wall, rows[RAYO_PHONG_J2].wall), 1.8, 0,
-               1);
-    add_target(table, "peers: rayo phong / POV-Ray",
-               ratio(rows[RAYO_PHONG].cpu, rows[POVRAY].cpu), 0.25, 1, povray);
+        bench_ratio(rows[RAYO_SETUP_ALL].wall, rows[EMBREE_SETUP_ALL].setup_s),
+        1.0, 1, embree);
+    bench_target_peer(
+        table, "peers: phong speed-up, -j 1 / -j 2 (wall)",
+        bench_ratio(rows[RAYO_PHONG].wall, rows[RAYO_PHONG_J2].wall), 1.8, 0,
+        1);
+    bench_target_peer(table, "peers: rayo phong / POV-Ray",
+                      bench_ratio(rows[RAYO_PHONG].cpu, rows[POVRAY].cpu),
+                      0.25, 1, povray);
 }

@@ -102,16 +102,16 @@ static void build_argv(char *const argv[], const char *command,
     out[n] = NULL;
 }
 
-static long read_rss(const char *rss_file)
+double bench_read_number(const char *path)
 {
-    FILE *in = fopen(rss_file, "r");
-    long kib = -1;
+    FILE *in = fopen(path, "r");
+    double value = -1;
     if (in == NULL)
         return -1;
-    if (fscanf(in, "%ld", &kib) != 1)
-        kib = -1;
+    if (fscanf(in, "%lf", &value) != 1)
+        value = -1;
     fclose(in);
-    return kib;
+    return value;
 }
 
 double bench_run_child(char *const argv[], const char *command,
@@ -144,7 +144,7 @@ double bench_run_child(char *const argv[], const char *command,
         return -1;
     seconds = bench_now() - start;
     if (max_rss_kib != NULL) {
-        *max_rss_kib = read_rss(rss_file);
+        *max_rss_kib = (long)bench_read_number(rss_file);
         unlink(rss_file);
     }
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)

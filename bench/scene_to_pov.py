@@ -5,7 +5,11 @@ The benchmark times POV-Ray on the scene rayo renders (issue 17), so the
 translation keeps what decides the work: the same spheres and plane, one
 ray per pixel through the same points of the image plane, the point
 light with shadows, and finishes that cast the same rays (phong highlights,
-mirror reflection where rayo reflects).
+mirror reflection where rayo reflects).  A `mesh FILE` line's binary STL
+(bench/scan/scan_mesh.c's) becomes a `mesh2`: its corners shared where the
+file repeats them bit for bit, each triangle flat (the STL's facet normal
+is its corners' own, as rayo shades it); ASCII STL, OBJ and the mesh
+line's placement words are refused.
 
 The camera.  rayo's ray through column i, row j of a w x h image has
 direction (i - floor(w/2)) right - (j - floor(h/2)) up + f forward, with
@@ -27,6 +31,8 @@ usage: scene_to_pov.py SCENE > scene.pov
 Errors in the scene: one line on stderr with the line number, exit 2.
 """
 import math
+import os
+import struct
 import sys
 
 
@@ -128,7 +134,7 @@ def read(path):
              "look_at": None, "up": (0.0, 1.0, 0.0),
              "background": (0.0, 0.0, 0.0), "ambient": (0.0, 0.0, 0.0),
              "depth": 5, "lights": [], "materials": {}, "order": [],
-             "spheres": [], "planes": []}
+             "spheres": [], "planes": [], "meshes": []}
     with open(path) as f:
         for number, line in enumerate(f, 1):
             words = line.split("#", 1)[0].split()
@@ -190,6 +196,10 @@ def read(path):
                 if dot(n, n) == 0:
                     fail(path, number, "expected a non-zero normal")
                 scene["planes"].append((p, n, material_of(r)))
+            elif key == "mesh":
+                name = r.word("a mesh file")
+                stl = os.path.join(os.path.dirname(path), name)
+                scene["meshes"].append((stl, material_of(r)))
             elif key == "background":
                 scene["background"] = r.colour()
             elif key == "ambient":
@@ -200,8 +210,8 @@ def read(path):
                 pass
             else:
                 fail(path, number, "unknown keyword '%s'; expected camera, "
-                     "light, material, sphere, plane, background, ambient, "
-                     "depth, shade or samples" % key[:40])
+                     "light, material, sphere, plane, mesh, background, "
+                     "ambient, depth, shade or samples" % key[:40])
     return scene
 
 
@@ -232,6 +242,29 @@ def texture(m):
             "%r phong %r phong_size %r reflection %r } }" %
             (vec(m["color"]), m["ka"], m["kd"], m["ks"], m["shininess"],
              m["reflect"]))
+
+
+def mesh2(path, texture_name):
+    """A binary STL as POV-Ray's mesh2: shared vertices, indexed faces."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if len(data) < 84 or len(data) != 84 + 50 * struct.unpack_from(
+            "<I", data, 80)[0]:
+        sys.stderr.write("scene_to_pov.py: %s: expected a binary STL (84 "
+                         "+ 50 x its count bytes)\n" % path)
+        sys.exit(2)
+    index, faces = {}, []
+    for record in struct.iter_unpack("<12x9f2x", data[84:]):
+        face = []
+        for k in (0, 3, 6):
+            corner = record[k:k + 3]
+            face.append(index.setdefault(corner, len(index)))
+        faces.append("<%d,%d,%d>" % tuple(face))
+    vertices = ["<%r,%r,%r>" % v for v in index]
+    return ("mesh2 {\n  vertex_vectors { %d,\n%s\n  }\n"
+            "  face_indices { %d,\n%s\n  }\n  texture { %s }\n}\n" %
+            (len(vertices), ",\n".join(vertices), len(faces),
+             ",\n".join(faces), texture_name))
 
 
 def main():
@@ -266,6 +299,8 @@ def main():
     out.write("".join("sphere { %s, %r texture { %s } }\n" %
                       (vec(c), radius, texture_name(material))
                       for c, radius, material in scene["spheres"]))
+    for stl, material in scene["meshes"]:
+        out.write(mesh2(stl, texture_name(material)))
 
 
 if __name__ == "__main__":

@@ -9,7 +9,7 @@
 #                           (perl), jq and python3, which read their
 #                           JSON, and bubblewrap, grade's sandbox
 #   scripts/deps.sh bench   build's, and for `make bench`'s rows against
-#                           Embree and POV-Ray (bench/peers.c) python3,
+#                           Embree and POV-Ray (bench/peers.c, meshes.c) python3,
 #                           libembree-dev and povray: optional, so
 #                           without them (not root, no such package)
 #                           it says so and succeeds, and those rows say

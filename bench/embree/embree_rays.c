@@ -5,9 +5,11 @@
  * `make bench` compares rayo with the state of the art in CPU ray
  * intersection on the same work.  This program reads the scene file that
  * bench/field_scene.py writes (scene.c: only that subset, the camera's
- * size, fov, origin, look-at and up, point lights, planes and spheres;
- * materials and settings are read past), puts the spheres into one Embree
- * RTC_GEOMETRY_TYPE_SPHERE_POINT geometry and each plane into a large
+ * size, fov, origin, look-at and up, point lights, planes, spheres and
+ * binary STL meshes; materials and settings are read past), puts the
+ * spheres into one Embree RTC_GEOMETRY_TYPE_SPHERE_POINT geometry, the
+ * meshes' triangles into one RTC_GEOMETRY_TYPE_TRIANGLE geometry (mesh.c)
+ * and each plane into a large
  * quad (PLANE_HALF_SIZE from the camera's foot on the plane), and casts
  * through it exactly the primary rays of rayo's camera (include/rayo/
  * camera.h: x = i - w/2, y = j - h/2, direction x right - y up + f
@@ -20,28 +22,32 @@
  *              point light, one shadow ray towards it: the rays of a
  *              phong render with shadows, shading nothing (rayo also
  *              follows mirror reflections; this does not).
- * Rays go one at a time (rtcIntersect1/rtcOccluded1) or in 16-ray
- * packets of 4x4 pixels (--packet 16), always on the calling thread;
+ * Rays (trace.c) go one at a time (rtcIntersect1/rtcOccluded1) or in
+ * 16-ray packets of 4x4 pixels (--packet 16), always on the calling thread;
  * --planes first tests the planes in the program, before Embree's
  * hierarchy and without it (rayo keeps its unbounded planes outside its
  * hierarchy and tests them first: a primary ray's occlusion query that
  * meets the ground is then one plane test); the default puts each plane
  * in Embree's scene with the spheres, the way Embree is meant to be used.
  * --threads sets Embree's device threads, which build the hierarchy
- * (0, the default: every CPU); --repeat N casts them N times (0: none,
- * setup alone) and reports the best pass.
+ * (0, the default: every CPU); --quality high builds with Embree's
+ * RTC_BUILD_QUALITY_HIGH (spatial splits) instead of its default; --repeat
+ * N casts them N times (0: none, setup alone) and reports the best pass.
  *
  *   embree-rays SCENE [--mode occlusion|shadow] [--packet 1|16]
  *               [--threads N] [--repeat N] [--planes bvh|first]
- *               [--pbm FILE]
+ *               [--quality default|high] [--pbm FILE]
  *
  * It prints "key value" lines: read_s, build_s, setup_s (wall seconds),
- * rays (cast in one pass), rays_s (processor seconds of the best pass),
- * ns_per_ray, and the checksums hits (primary rays that hit: the black
- * pixels of rayo's --shade hit PBM) and lit (shadow rays that reached the
- * light).  --pbm writes the hits as a raw PBM, for tests.  Errors: one
- * line on stderr (with the line number for the scene), exit 2 (bad input)
- * or 1 (I/O, Embree).  This is a benchmark tool: rayo never links Embree.
+ * setup_cpu_s (the processor time of reading and building, all threads),
+ * rays (cast in one pass), rays_s (the calling thread's processor
+ * seconds of the best pass), ns_per_ray, the checksums hits (primary rays
+ * that hit: the black pixels of rayo's --shade hit PBM) and lit (shadow
+ * rays that reached the light), and peak_rss_kib (getrusage's, which on
+ * Linux also counts what the process held before its exec).  --pbm
+ * writes the hits as a raw PBM, for tests.  Errors: one line on stderr
+ * (with the line number for the scene), exit 2 (bad input) or 1 (I/O,
+ * Embree).  This is a benchmark tool: rayo never links Embree.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -53,15 +59,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
+
+#include "mesh.h"
+#include "trace.h"
 
 #define PLANE_HALF_SIZE 1e5
 
-/* The camera of camera.h: focal distance and orthonormal basis. */
-typedef struct camera {
-    rayo_vec3 origin, right, up, forward;
-    double focal;
-} camera;
 
 static double wall_now(void)
 {
@@ -70,10 +75,20 @@ static double wall_now(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-static double cpu_now(void)
+/* The calling thread's processor time: the rays are all cast on it, and
+ * Embree's own threads (the build's, when --threads is not 1) may still
+ * be spinning while they are. */
+static double process_cpu_now(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
@@ -107,16 +122,6 @@ static camera make_camera(const scene *s)
     return c;
 }
 
-/* rayo_camera_ray: the direction through pixel (i, j). */
-static rayo_vec3 pixel_direction(const camera *c, const scene *s, unsigned i,
-                            unsigned j)
-{
-    double x = (double)i - (double)(s->width / 2);
-    double y = (double)j - (double)(s->height / 2);
-    return rayo_vec3_normalize(rayo_vec3_add(rayo_vec3_add(rayo_vec3_scale(c->right, x), rayo_vec3_scale(c->up, -y)),
-                         rayo_vec3_scale(c->forward, c->focal)));
-}
-
 /* ---- Embree ---- */
 
 static void embree_error(void *user, enum RTCError code, const char *text)
@@ -128,10 +133,13 @@ static void embree_error(void *user, enum RTCError code, const char *text)
 }
 
 static RTCScene build(RTCDevice device, const scene *s, const camera *cam,
-                      int planes_first)
+                      int planes_first, int high_quality)
 {
     RTCScene es = rtcNewScene(device);
     size_t k;
+    if (high_quality)
+        rtcSetSceneBuildQuality(es, RTC_BUILD_QUALITY_HIGH);
+    attach_meshes(device, es, s);
     if (s->sphere_count > 0) {
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
         float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
@@ -185,313 +193,6 @@ static RTCScene build(RTCDevice device, const scene *s, const camera *cam,
     return es;
 }
 
-typedef struct pass {
-    unsigned long long rays, hits, lit;
-} pass;
-
-typedef struct job {
-    const scene *s;
-    camera cam;
-    RTCScene es;
-    int shadow, packet, planes_first;
-    float plane_n[MAX_PLANES][3], plane_d[MAX_PLANES]; /* n.x = d */
-    unsigned char *mask; /* w x h, 1 where the primary ray hit; or NULL */
-} job;
-
-/* The shadow ray's start past the hit point, against self-hits: rayo
- * skips the object hit itself; with floats, an offset relative to the
- * point's size does that. */
-static float shadow_offset(float x, float y, float z)
-{
-    float m = fabsf(x);
-    if (fabsf(y) > m)
-        m = fabsf(y);
-    if (fabsf(z) > m)
-        m = fabsf(z);
-    return 1e-4f * (1.0f + m);
-}
-
-/* --planes first: the nearest plane along the ray within (tnear, tfar),
- * tested before Embree's hierarchy, as rayo tests its unbounded planes
- * before its own: 1 with *t and *k, or 0. */
-static int nearest_plane(const job *jb, const float o[3], const float d[3],
-                         float tnear, float tfar, float *t, size_t *k)
-{
-    size_t i;
-    int found = 0;
-    for (i = 0; i < jb->s->plane_count; i++) {
-        const float *n = jb->plane_n[i];
-        float den = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
-        float ti =
-            (jb->plane_d[i] - (n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) / den;
-        if (den != 0 && ti > tnear && ti < tfar) {
-            tfar = ti;
-            *t = ti;
-            *k = i;
-            found = 1;
-        }
-    }
-    return found;
-}
-
-/* Where a hit (primary direction d, geometric normal ng, point p) sends a
- * shadow ray: 1 and the ray's direction and length, or 0 when the lit
- * side faces away (rayo's Li.N <= 0 test). */
-static int shadow_ray(const job *jb, const float p[3], const float d[3],
-                      const float ng[3], float dir[3], float *length)
-{
-    float n[3], l[3], len, facing;
-    int c;
-    facing = ng[0] * d[0] + ng[1] * d[1] + ng[2] * d[2];
-    for (c = 0; c < 3; c++)
-        n[c] = facing > 0 ? -ng[c] : ng[c];
-    l[0] = (float)jb->s->light.x - p[0];
-    l[1] = (float)jb->s->light.y - p[1];
-    l[2] = (float)jb->s->light.z - p[2];
-    len = sqrtf(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-    if (!(len > 0))
-        return 0;
-    for (c = 0; c < 3; c++)
-        dir[c] = l[c] / len;
-    if (!(dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2] > 0))
-        return 0;
-    *length = len;
-    return 1;
-}
-
-static void trace_single(const job *jb, pass *out)
-{
-    const scene *s = jb->s;
-    struct RTCIntersectContext context;
-    unsigned i, j;
-    rtcInitIntersectContext(&context);
-    for (j = 0; j < s->height; j++)
-        for (i = 0; i < s->width; i++) {
-            rayo_vec3 d = pixel_direction(&jb->cam, s, i, j);
-            struct RTCRayHit rh;
-            int hit, plane;
-            float plane_t = 0;
-            size_t plane_k = 0;
-            rh.ray.org_x = (float)jb->cam.origin.x;
-            rh.ray.org_y = (float)jb->cam.origin.y;
-            rh.ray.org_z = (float)jb->cam.origin.z;
-            rh.ray.dir_x = (float)d.x;
-            rh.ray.dir_y = (float)d.y;
-            rh.ray.dir_z = (float)d.z;
-            rh.ray.tnear = 0.0f;
-            rh.ray.tfar = INFINITY;
-            rh.ray.time = 0.0f;
-            rh.ray.mask = 0xFFFFFFFFu;
-            rh.ray.id = 0;
-            rh.ray.flags = 0;
-            out->rays++;
-            plane = 0;
-            if (jb->planes_first) {
-                float o[3], dd[3];
-                o[0] = rh.ray.org_x;
-                o[1] = rh.ray.org_y;
-                o[2] = rh.ray.org_z;
-                dd[0] = rh.ray.dir_x;
-                dd[1] = rh.ray.dir_y;
-                dd[2] = rh.ray.dir_z;
-                plane = nearest_plane(jb, o, dd, 0.0f, INFINITY, &plane_t,
-                                      &plane_k);
-                if (plane)
-                    rh.ray.tfar = plane_t;
-            }
-            if (!jb->shadow) {
-                if (plane) {
-                    hit = 1;
-                } else {
-                    rtcOccluded1(jb->es, &context, &rh.ray);
-                    hit = rh.ray.tfar < 0;
-                }
-            } else {
-                rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-                rtcIntersect1(jb->es, &context, &rh);
-                hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-                if (!hit && plane) {
-                    hit = 1;
-                    rh.hit.Ng_x = jb->plane_n[plane_k][0];
-                    rh.hit.Ng_y = jb->plane_n[plane_k][1];
-                    rh.hit.Ng_z = jb->plane_n[plane_k][2];
-                }
-            }
-            if (jb->mask != NULL)
-                jb->mask[(size_t)j * s->width + i] = (unsigned char)hit;
-            if (!hit)
-                continue;
-            out->hits++;
-            if (jb->shadow && jb->s->has_light) {
-                float p[3], dir[3], ng[3], len;
-                float dd[3];
-                dd[0] = rh.ray.dir_x;
-                dd[1] = rh.ray.dir_y;
-                dd[2] = rh.ray.dir_z;
-                p[0] = rh.ray.org_x + rh.ray.tfar * dd[0];
-                p[1] = rh.ray.org_y + rh.ray.tfar * dd[1];
-                p[2] = rh.ray.org_z + rh.ray.tfar * dd[2];
-                ng[0] = rh.hit.Ng_x;
-                ng[1] = rh.hit.Ng_y;
-                ng[2] = rh.hit.Ng_z;
-                if (shadow_ray(jb, p, dd, ng, dir, &len)) {
-                    struct RTCRay sr;
-                    sr.org_x = p[0];
-                    sr.org_y = p[1];
-                    sr.org_z = p[2];
-                    sr.dir_x = dir[0];
-                    sr.dir_y = dir[1];
-                    sr.dir_z = dir[2];
-                    sr.tnear = shadow_offset(p[0], p[1], p[2]);
-                    sr.tfar = len;
-                    sr.time = 0.0f;
-                    sr.mask = 0xFFFFFFFFu;
-                    sr.id = 0;
-                    sr.flags = 0;
-                    out->rays++;
-                    if (jb->planes_first &&
-                        nearest_plane(jb, p, dir, sr.tnear, sr.tfar, &plane_t,
-                                      &plane_k))
-                        continue;
-                    rtcOccluded1(jb->es, &context, &sr);
-                    if (sr.tfar >= 0)
-                        out->lit++;
-                }
-            }
-        }
-}
-
-/* 4x4 tiles of pixels, one 16-ray packet each (lanes off past the edge). */
-static void trace_packets(const job *jb, pass *out)
-{
-    const scene *s = jb->s;
-    struct RTCIntersectContext coherent, incoherent;
-    unsigned ti, tj;
-    rtcInitIntersectContext(&coherent);
-    coherent.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    rtcInitIntersectContext(&incoherent);
-    for (tj = 0; tj < s->height; tj += 4)
-        for (ti = 0; ti < s->width; ti += 4) {
-            struct RTCRayHit16 rh;
-            struct RTCRay16 sr;
-            /* The valid masks must be aligned like the packets. */
-            _Alignas(64) int valid[16];
-            _Alignas(64) int svalid[16];
-            _Alignas(64) int query[16];
-            int k, any_shadow = 0, any_query = 0, plane[16];
-            size_t plane_k[16];
-            float plane_t = 0;
-            for (k = 0; k < 16; k++) {
-                unsigned i = ti + (unsigned)(k & 3),
-                         j = tj + (unsigned)(k >> 2);
-                rayo_vec3 d;
-                valid[k] = i < s->width && j < s->height ? -1 : 0;
-                d = valid[k] ? pixel_direction(&jb->cam, s, i, j)
-                             : rayo_vec3_make(0, 0, 1);
-                rh.ray.org_x[k] = (float)jb->cam.origin.x;
-                rh.ray.org_y[k] = (float)jb->cam.origin.y;
-                rh.ray.org_z[k] = (float)jb->cam.origin.z;
-                rh.ray.dir_x[k] = (float)d.x;
-                rh.ray.dir_y[k] = (float)d.y;
-                rh.ray.dir_z[k] = (float)d.z;
-                rh.ray.tnear[k] = 0.0f;
-                rh.ray.tfar[k] = INFINITY;
-                rh.ray.time[k] = 0.0f;
-                rh.ray.mask[k] = 0xFFFFFFFFu;
-                rh.ray.id[k] = (unsigned)k;
-                rh.ray.flags[k] = 0;
-                rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-                rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-                if (valid[k])
-                    out->rays++;
-                plane[k] = 0;
-                query[k] = valid[k];
-                if (valid[k] && jb->planes_first) {
-                    float o[3], dd[3];
-                    o[0] = rh.ray.org_x[k];
-                    o[1] = rh.ray.org_y[k];
-                    o[2] = rh.ray.org_z[k];
-                    dd[0] = rh.ray.dir_x[k];
-                    dd[1] = rh.ray.dir_y[k];
-                    dd[2] = rh.ray.dir_z[k];
-                    plane[k] = nearest_plane(jb, o, dd, 0.0f, INFINITY,
-                                             &plane_t, &plane_k[k]);
-                    if (plane[k]) {
-                        rh.ray.tfar[k] = plane_t;
-                        if (!jb->shadow)
-                            query[k] = 0;
-                    }
-                }
-                any_query |= query[k];
-            }
-            if (any_query && !jb->shadow)
-                rtcOccluded16(query, jb->es, &coherent, &rh.ray);
-            else if (any_query)
-                rtcIntersect16(query, jb->es, &coherent, &rh);
-            for (k = 0; k < 16; k++) {
-                int hit;
-                svalid[k] = 0;
-                if (!valid[k])
-                    continue;
-                hit = jb->shadow ? rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID
-                                 : rh.ray.tfar[k] < 0;
-                if (!hit && plane[k]) {
-                    hit = 1;
-                    rh.hit.Ng_x[k] = jb->plane_n[plane_k[k]][0];
-                    rh.hit.Ng_y[k] = jb->plane_n[plane_k[k]][1];
-                    rh.hit.Ng_z[k] = jb->plane_n[plane_k[k]][2];
-                }
-                if (jb->mask != NULL)
-                    jb->mask[(size_t)(tj + (unsigned)(k >> 2)) * s->width +
-                             ti + (unsigned)(k & 3)] = (unsigned char)hit;
-                if (!hit)
-                    continue;
-                out->hits++;
-                if (jb->shadow && s->has_light) {
-                    float p[3], dd[3], ng[3], dir[3], len;
-                    dd[0] = rh.ray.dir_x[k];
-                    dd[1] = rh.ray.dir_y[k];
-                    dd[2] = rh.ray.dir_z[k];
-                    p[0] = rh.ray.org_x[k] + rh.ray.tfar[k] * dd[0];
-                    p[1] = rh.ray.org_y[k] + rh.ray.tfar[k] * dd[1];
-                    p[2] = rh.ray.org_z[k] + rh.ray.tfar[k] * dd[2];
-                    ng[0] = rh.hit.Ng_x[k];
-                    ng[1] = rh.hit.Ng_y[k];
-                    ng[2] = rh.hit.Ng_z[k];
-                    if (shadow_ray(jb, p, dd, ng, dir, &len)) {
-                        svalid[k] = -1;
-                        sr.org_x[k] = p[0];
-                        sr.org_y[k] = p[1];
-                        sr.org_z[k] = p[2];
-                        sr.dir_x[k] = dir[0];
-                        sr.dir_y[k] = dir[1];
-                        sr.dir_z[k] = dir[2];
-                        sr.tnear[k] = shadow_offset(p[0], p[1], p[2]);
-                        sr.tfar[k] = len;
-                        sr.time[k] = 0.0f;
-                        sr.mask[k] = 0xFFFFFFFFu;
-                        sr.id[k] = (unsigned)k;
-                        sr.flags[k] = 0;
-                        out->rays++;
-                        if (jb->planes_first &&
-                            nearest_plane(jb, p, dir, sr.tnear[k], len,
-                                          &plane_t, &plane_k[k])) {
-                            svalid[k] = 0; /* in the plane's shadow */
-                            continue;
-                        }
-                        any_shadow = 1;
-                    }
-                }
-            }
-            if (!any_shadow)
-                continue;
-            rtcOccluded16(svalid, jb->es, &incoherent, &sr);
-            for (k = 0; k < 16; k++)
-                if (svalid[k] && sr.tfar[k] >= 0)
-                    out->lit++;
-        }
-}
 
 static void write_pbm(const char *path, const scene *s,
                       const unsigned char *mask)
@@ -524,19 +225,21 @@ static void usage(void)
 {
     fprintf(stderr, "usage: embree-rays SCENE [--mode occlusion|shadow] "
                     "[--packet 1|16] [--threads N] [--repeat N] "
-                    "[--planes bvh|first] [--pbm FILE]\n");
+                    "[--planes bvh|first] [--quality default|high] "
+                    "[--pbm FILE]\n");
     exit(2);
 }
 
 int main(int argc, char **argv)
 {
     const char *path = NULL, *pbm = NULL;
-    int threads = 0, repeat = 1, r, a;
+    int threads = 0, repeat = 1, high_quality = 0, r, a;
+    struct rusage resources;
     char config[64];
     scene s;
     job jb;
     pass best;
-    double start, read_s, build_s, best_s = -1;
+    double start, read_s, build_s, setup_cpu_s, best_s = -1;
     RTCDevice device;
     memset(&jb, 0, sizeof jb);
     jb.packet = 1;
@@ -569,6 +272,12 @@ int main(int argc, char **argv)
                 jb.planes_first = 0;
             else
                 usage();
+        } else if (strcmp(argv[a], "--quality") == 0 && a + 1 < argc) {
+            a++;
+            if (strcmp(argv[a], "high") == 0)
+                high_quality = 1;
+            else if (strcmp(argv[a], "default") != 0)
+                usage();
         } else if (strcmp(argv[a], "--pbm") == 0 && a + 1 < argc) {
             pbm = argv[++a];
         } else if (argv[a][0] != '-' && path == NULL) {
@@ -584,6 +293,7 @@ int main(int argc, char **argv)
     else
         config[0] = '\0';
 
+    setup_cpu_s = process_cpu_now();
     start = wall_now();
     read_scene(path, &s);
     read_s = wall_now() - start;
@@ -604,8 +314,9 @@ int main(int argc, char **argv)
         jb.plane_n[a][2] = (float)n.z;
         jb.plane_d[a] = (float)rayo_vec3_dot(n, s.plane_point[a]);
     }
-    jb.es = build(device, &s, &jb.cam, jb.planes_first);
+    jb.es = build(device, &s, &jb.cam, jb.planes_first, high_quality);
     build_s = wall_now() - start;
+    setup_cpu_s = process_cpu_now() - setup_cpu_s;
     if (pbm != NULL) {
         jb.mask = calloc((size_t)s.width * s.height, 1);
         if (jb.mask == NULL) {
@@ -628,12 +339,14 @@ int main(int argc, char **argv)
             best_s = t;
         best = p;
     }
-    printf("scene %s\nsize %ux%u\nspheres %lu\nplanes %lu\n", path, s.width,
-           s.height, (unsigned long)s.sphere_count,
-           (unsigned long)s.plane_count);
-    printf("mode %s\npacket %d\nthreads %d\nplanes %s\n",
+    printf("scene %s\nsize %ux%u\nspheres %lu\ntriangles %lu\nplanes %lu\n",
+           path, s.width, s.height, (unsigned long)s.sphere_count,
+           (unsigned long)s.triangle_count, (unsigned long)s.plane_count);
+    printf("mode %s\npacket %d\nthreads %d\nplanes %s\nquality %s\n",
            jb.shadow ? "shadow" : "occlusion", jb.packet, threads,
-           jb.planes_first ? "first" : "bvh");
+           jb.planes_first ? "first" : "bvh",
+           high_quality ? "high" : "default");
+    printf("setup_cpu_s %.6f\n", setup_cpu_s);
     printf("read_s %.6f\nbuild_s %.6f\nsetup_s %.6f\n", read_s, build_s,
            read_s + build_s);
     if (best_s < 0)
@@ -641,11 +354,14 @@ int main(int argc, char **argv)
     printf("rays %llu\nrays_s %.6f\nns_per_ray %.3f\n", best.rays, best_s,
            best.rays ? best_s * 1e9 / (double)best.rays : 0.0);
     printf("hits %llu\nlit %llu\n", best.hits, best.lit);
+    if (getrusage(RUSAGE_SELF, &resources) == 0)
+        printf("peak_rss_kib %ld\n", (long)resources.ru_maxrss);
     if (pbm != NULL)
         write_pbm(pbm, &s, jb.mask);
     free(jb.mask);
-    free(s.spheres);
     rtcReleaseScene(jb.es);
     rtcReleaseDevice(device);
+    free(s.spheres);
+    free(s.corners);
     return 0;
 }

@@ -1,14 +1,15 @@
 /*
  * scene.c - reads the subset of the scene format that bench/field_scene.py
- * writes (scene.h), for the Embree program.  Its own small reader, not
- * rayo's: the program must not link rayo's library, and its time to read
- * the file is Embree's side of the setup figure.  Keywords it does not
+ * and bench/scan/scan_mesh.c write (scene.h), for the Embree program; a
+ * `mesh` line's STL is read by mesh.c.  Its own small reader, not rayo's:
+ * the program must not link rayo's library, and its time to read the
+ * file is Embree's side of the setup figure.  Keywords it does not
  * need (shade, background, ambient, material, samples, depth) are read
  * past; anything else is an error with its line number.
  */
 #define _POSIX_C_SOURCE 200809L
 
-#include "scene.h"
+#include "mesh.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -152,6 +153,22 @@ static void plane_line(reader *r, scene *s)
     s->plane_normal[s->plane_count++] = rayo_vec3_normalize(n);
 }
 
+/* `mesh FILE [material NAME]`: FILE relative to the scene's folder. */
+static void mesh_line(reader *r, scene *s)
+{
+    char *file = word(r), path[4096];
+    const char *slash = strrchr(r->path, '/');
+    if (file == NULL)
+        die_input(r, "expected a mesh file");
+    trailing_material(r);
+    if (file[0] == '/' || slash == NULL)
+        snprintf(path, sizeof path, "%s", file);
+    else
+        snprintf(path, sizeof path, "%.*s/%s", (int)(slash - r->path),
+                 r->path, file);
+    read_mesh(path, s);
+}
+
 static void light_line(reader *r, scene *s)
 {
     char *w = word(r);
@@ -229,12 +246,14 @@ void read_scene(const char *path, scene *s)
             plane_line(&r, s);
         else if (strcmp(w, "light") == 0)
             light_line(&r, s);
+        else if (strcmp(w, "mesh") == 0)
+            mesh_line(&r, s);
         else if (strcmp(w, "shade") != 0 && strcmp(w, "background") != 0 &&
                  strcmp(w, "ambient") != 0 && strcmp(w, "material") != 0 &&
                  strcmp(w, "samples") != 0 && strcmp(w, "depth") != 0)
             die_input(&r, "unknown keyword; expected camera, light, sphere, "
-                          "plane (or shade, background, ambient, material, "
-                          "samples, depth, which are read past)");
+                          "plane, mesh (or shade, background, ambient, "
+                          "material, samples, depth, which are read past)");
     }
     free(text);
 }

@@ -6,9 +6,11 @@
  * the facet's normal and its three corners as little-endian IEEE-754
  * floats, and a uint16 (ignored).  The count is checked against the
  * file's size before anything is allocated for it; bytes after the last
- * record are counted, not read.  ASCII: "solid NAME", then "facet normal
- * X Y Z / outer loop / vertex X Y Z (three) / endloop / endfacet" per
- * triangle, "endsolid [NAME]".
+ * record are counted, not read.  The records are decoded where they lie in
+ * the source's window, straight into the mesh's arrays (a file of
+ * millions of triangles is mostly this loop).  ASCII: "solid NAME", then
+ * "facet normal X Y Z / outer loop / vertex X Y Z (three) / endloop /
+ * endfacet" per triangle, "endsolid [NAME]".
  *
  * A corner that is not a finite number is an error; a normal that is
  * not (or is zero) is kept as (0, 0, 0) and counted, so the scene can
@@ -41,6 +43,37 @@ static void take_normal(float normal[3], rayo_mesh_report *report)
     }
 }
 
+/*
+ * Record i (of count) at rec, at byte at of the file, decoded straight
+ * into the mesh's next slot (room reserved), which it then takes.
+ */
+static rayo_status take_record(mesh_builder *b, const unsigned char *rec,
+                               uint64_t at, uint64_t i,
+                               rayo_mesh_report *report, const char *name,
+                               rayo_error *err)
+{
+    rayo_mesh *m = b->mesh;
+    float *corners = m->corners + m->count * 9;
+    float *normal = m->normals + m->count * 3;
+    int k;
+    for (k = 0; k < 9; k++) {
+        corners[k] = float_at(rec + 12 + 4 * k);
+        if (!isfinite(corners[k]))
+            return rayo_error_set(
+                err, RAYO_ERR_FORMAT,
+                "%s: byte %llu: found %s as coordinate %d of triangle "
+                "%llu's corner %d; expected a finite number",
+                name, (unsigned long long)(at + 12 + 4 * k),
+                isnan(corners[k]) ? "nan" : "an infinity", k % 3 + 1,
+                (unsigned long long)i + 1, k / 3 + 1);
+    }
+    for (k = 0; k < 3; k++)
+        normal[k] = float_at(rec + 4 * k);
+    take_normal(normal, report);
+    m->count++;
+    return RAYO_OK;
+}
+
 rayo_status rayo_mesh_read_stl_binary(rayo_source *src,
                                       const unsigned char head[84],
                                       mesh_builder *b,
@@ -49,7 +82,7 @@ rayo_status rayo_mesh_read_stl_binary(rayo_source *src,
 {
     uint32_t count = (uint32_t)head[80] | ((uint32_t)head[81] << 8) |
                      ((uint32_t)head[82] << 16) | ((uint32_t)head[83] << 24);
-    uint64_t remaining = 0, need = (uint64_t)count * 50, i;
+    uint64_t remaining = 0, need = (uint64_t)count * 50, i = 0;
     int size_known = rayo_source_remaining(src, &remaining);
     rayo_status status;
     if (count > RAYO_MAX_OBJECTS)
@@ -74,34 +107,36 @@ rayo_status rayo_mesh_read_stl_binary(rayo_source *src,
     status = mesh_reserve(b, size_known ? count : (count < 65536 ? count
                                                                  : 65536),
                           src->name, err);
-    for (i = 0; status == RAYO_OK && i < count; i++) {
-        unsigned char record[50];
-        float corners[9], normal[3];
-        size_t got;
-        int k;
+    while (status == RAYO_OK && i < count) {
+        /* The whole records in the source's window, decoded where they
+         * lie; a record cut by the window's end is copied out whole. */
+        size_t whole = (size_t)(src->end - src->next) / 50, r;
         uint64_t at = rayo_source_offset(src);
-        rayo_source_read(src, record, sizeof record, &got);
-        if (got != sizeof record) {
-            char what[64];
-            snprintf(what, sizeof what, "the rest of triangle %llu of %lu",
-                     (unsigned long long)i + 1, (unsigned long)count);
-            return rayo_source_end_error(src, what, err);
+        if (whole > count - i)
+            whole = (size_t)(count - i);
+        if (whole > 0) {
+            status = mesh_reserve(b, whole, src->name, err);
+            for (r = 0; status == RAYO_OK && r < whole; r++, i++)
+                status = take_record(b, src->next + 50 * r, at + 50 * r, i,
+                                     report, src->name, err);
+            src->next += 50 * r;
+        } else {
+            unsigned char record[50];
+            size_t got;
+            rayo_source_read(src, record, sizeof record, &got);
+            if (got != sizeof record) {
+                char what[64];
+                snprintf(what, sizeof what,
+                         "the rest of triangle %llu of %lu",
+                         (unsigned long long)i + 1, (unsigned long)count);
+                return rayo_source_end_error(src, what, err);
+            }
+            status = mesh_reserve(b, 1, src->name, err);
+            if (status == RAYO_OK)
+                status = take_record(b, record, at, i, report, src->name,
+                                     err);
+            i++;
         }
-        for (k = 0; k < 3; k++)
-            normal[k] = float_at(record + 4 * k);
-        for (k = 0; k < 9; k++) {
-            corners[k] = float_at(record + 12 + 4 * k);
-            if (!isfinite(corners[k]))
-                return rayo_error_set(
-                    err, RAYO_ERR_FORMAT,
-                    "%s: byte %llu: found %s as coordinate %d of triangle "
-                    "%llu's corner %d; expected a finite number",
-                    src->name, (unsigned long long)(at + 12 + 4 * k),
-                    isnan(corners[k]) ? "nan" : "an infinity", k % 3 + 1,
-                    (unsigned long long)i + 1, k / 3 + 1);
-        }
-        take_normal(normal, report);
-        status = mesh_push(b, corners, normal, src->name, err);
     }
     if (status == RAYO_OK && size_known)
         report->trailing_bytes = remaining - need;

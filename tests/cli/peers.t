@@ -4,7 +4,8 @@
 # --shade hit PBM of the same scene, single rays and packets, the plane
 # in Embree's scene or tested first; its lit count is a brute-force
 # count in Python's doubles), and POV-Ray accepts bench/scene_to_pov.py's
-# translation and renders rayo's phong image.  Each part is skipped
+# translation and renders rayo's phong image; the same for a triangle
+# mesh from a binary STL (issue 28, bench/meshes.c).  Each part is skipped
 # where its tool is missing: $RAYO_BUILD/bench/embree-rays (built by
 # make check where libembree-dev is installed) and povray.
 . "$(dirname "$0")/lib.sh"
@@ -43,6 +44,44 @@ w, h = int(w), int(h)
 row = (w + 7) // 8
 print(sum((bits[j * row + i // 8] >> (7 - i % 8)) & 1
           for j in range(h) for i in range(w)))' "$1"
+}
+
+# mesh_scene SCENE STL: a sphere of radius 1 at (0.13, 0.07, 3) as 288
+# flat triangles (an octahedron's faces cut 6 x 6, corners on the
+# sphere, facing out) in a binary STL, and a 64x48 scene of it on a
+# floor.  Off the axes, so that no ray runs along an edge of it, where
+# two renderers may fairly pick either triangle.
+mesh_scene() {
+    python3 - "$2" <<'EOF'
+import math, struct, sys
+n, out = 6, bytearray(80) + struct.pack("<I", 288)
+def corner(a, b, c):
+    s = math.sqrt(a * a + b * b + c * c)
+    return (a / s + 0.13, b / s + 0.07, c / s + 3.0)
+def facet(p, q, r):
+    global out
+    e, f = [q[k] - p[k] for k in range(3)], [r[k] - p[k] for k in range(3)]
+    m = (e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2],
+         e[0] * f[1] - e[1] * f[0])
+    s = math.sqrt(sum(x * x for x in m))
+    out += struct.pack("<12fH", *[x / s for x in m], *p, *q, *r, 0)
+for sx in (1, -1):
+    for sy in (1, -1):
+        for sz in (1, -1):
+            at = lambda i, j: corner(sx * i, sy * j, sz * (n - i - j))
+            flip = sx * sy * sz < 0
+            for i in range(n):
+                for j in range(n - i):
+                    a, b, c = at(i, j), at(i + 1, j), at(i, j + 1)
+                    facet(a, *((c, b) if flip else (b, c)))
+                    if i + j + 2 <= n:
+                        d = at(i + 1, j + 1)
+                        facet(b, *((d, c) if flip else (c, d)))
+open(sys.argv[1], "wb").write(out)
+EOF
+    printf '%s\n' 'camera size 64 48 fov 60' 'light point -3 4 0' \
+        'ambient 0.1' 'material clay color 0.8 0.6 0.4 ks 0.3' \
+        'plane 0 -1 0  0 1 0' "mesh $(basename "$2") material clay" >"$1"
 }
 
 value() { # value KEY FILE: the value on the "KEY value" line
@@ -162,6 +201,36 @@ EOF
 
     # Bad input: the file, the line, what was expected; exit 2.
     printf 'camera size 8 8\nsphere 0 0 x 1\n' >"$TMP/bad.scene"
+    # A mesh (issue 28): a sphere of 288 flat triangles from a binary
+    # STL, on the floor; the same rays as rayo's, at both build
+    # qualities, single rays and packets, hits and shadow rays.
+    mesh_scene "$TMP/mesh.scene" "$TMP/ball.stl"
+    rayo render "$TMP/mesh.scene" --shade hit --raw --format pbm \
+        -o "$TMP/mesh.pbm"
+    want=$(black "$TMP/mesh.pbm")
+    for args in "--packet 1" "--packet 16" "--quality high" \
+        "--mode shadow" "--mode shadow --packet 16 --quality high"; do
+        # shellcheck disable=SC2086 # options, one word each
+        "$embree" "$TMP/mesh.scene" $args --threads 1 --pbm "$TMP/e.pbm" \
+            >"$TMP/e.out" 2>"$TMP/err"
+        status=$?
+        got=$(value hits "$TMP/e.out")
+        d=$(differing "$TMP/mesh.pbm" "$TMP/e.pbm")
+        [ "$status" = 0 ] && [ "$d" != sizes ] && [ "$d" -le 2 ] &&
+            [ "$(value triangles "$TMP/e.out")" = 288 ] &&
+            [ "$got" -ge $((want - 2)) ] && [ "$got" -le $((want + 2)) ]
+        ok $? "mesh, $args: 288 triangles, hits $got, rayo's black pixels $want, $d differ"
+    done
+    # Not a trivial frame: the ball, the floor and the sky are all there.
+    [ "$want" -gt 500 ] && [ "$want" -lt 3000 ]
+    ok $? "mesh: $want of 3072 pixels hit"
+    printf 'solid x\nendsolid x\n' >"$TMP/ascii.stl"
+    printf 'camera size 8 8\nmesh ascii.stl\n' >"$TMP/ascii.scene"
+    "$embree" "$TMP/ascii.scene" >"$TMP/out" 2>"$TMP/err"
+    is "$?:$(cat "$TMP/err")" \
+        "2:embree-rays: $TMP/ascii.stl: expected a binary STL (84 bytes of header and count, then 50 a triangle)" \
+        "an ASCII STL: refused, exit 2"
+
     "$embree" "$TMP/bad.scene" >"$TMP/out" 2>"$TMP/err"
     is "$?:$(cat "$TMP/err")" \
         "2:embree-rays: $TMP/bad.scene:2: expected the centre's coordinates, found 'x'" \
@@ -188,7 +257,8 @@ is "$?:$(cat "$TMP/err")" \
     "2:scene_to_pov.py: $TMP/bad.scene:2: expected a radius, found the end of the line" \
     "scene_to_pov.py: a sphere without its radius, its line, exit 2"
 if command -v povray >/dev/null 2>&1; then
-    for scene in level above; do
+    [ -f "$TMP/mesh.scene" ] || mesh_scene "$TMP/mesh.scene" "$TMP/ball.stl"
+    for scene in level above mesh; do
         python3 "$RAYO_SOURCE/bench/scene_to_pov.py" "$TMP/$scene.scene" \
             >"$TMP/$scene.pov"
         (cd "$TMP" && povray +I"$scene.pov" +O"$scene-pov.png" +W64 +H48 -D \

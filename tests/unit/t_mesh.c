@@ -5,10 +5,13 @@
  * each must yield is written out by hand, and every hostile file is
  * refused with the line or byte it names.
  */
+#define _POSIX_C_SOURCE 200809L
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "rayo/limits.h"
 #include "rayo/mesh.h"
@@ -119,6 +122,76 @@ static void test_binary(void)
     status = rayo_mesh_read_memory(f.bytes, f.size, "t.stl", &mesh, NULL,
                                    &err);
     is_int(status, RAYO_ERR_FORMAT, "a truncated record: refused");
+    free(f.bytes);
+}
+
+/* f written to path, a new file made from it first when it ends in
+   XXXXXX (mkstemp); 0 on failure. */
+static int write_file(const stl_file *f, char *path)
+{
+    size_t n = strlen(path);
+    int fd = n >= 6 && strcmp(path + n - 6, "XXXXXX") == 0 ? mkstemp(path)
+                                                           : -1;
+    FILE *out = fd >= 0 ? fdopen(fd, "wb") : fopen(path, "wb");
+    int written;
+    if (out == NULL)
+        return 0;
+    written = fwrite(f->bytes, 1, f->size, out) == f->size;
+    return fclose(out) == 0 && written;
+}
+
+/* f written to path and read back: refused with "PATH: " message. */
+static void refused_at(const stl_file *f, char *path, const char *message,
+                       const char *what)
+{
+    char expected[256];
+    rayo_mesh mesh;
+    rayo_error err;
+    snprintf(expected, sizeof expected, "%s: %s", path, message);
+    ok(write_file(f, path), "the file written");
+    is_int(rayo_mesh_read_file(path, &mesh, NULL, &err), RAYO_ERR_FORMAT,
+           "%s", what);
+    is_string(err.message, expected, "  the byte, the triangle, the corner");
+}
+
+/* A file is read in 64 KiB windows: record 1310 (bytes 65534 to 65583)
+   is cut by the first window's end, the rest are decoded in place. */
+static void test_binary_windows(void)
+{
+    stl_file f = binary_stl(3000, 3000);
+    char path[] = "/tmp/rayo-t-mesh.XXXXXX";
+    rayo_mesh mesh;
+    rayo_mesh_report report;
+    rayo_error err;
+    int fine;
+    size_t i;
+    ok(write_file(&f, path), "a 150,084-byte binary STL written");
+    is_int(rayo_mesh_read_file(path, &mesh, &report, &err), RAYO_OK,
+           "read from the file, window by window");
+    is_int((int)mesh.count, 3000, "  all 3000 triangles");
+    for (i = 0, fine = 1; i < mesh.count; i++)
+        fine &= mesh.corners[9 * i] == (float)i &&
+                mesh.corners[9 * i + 3] == (float)i + 1 &&
+                mesh.corners[9 * i + 7] == 1 && mesh.corners[9 * i + 8] == 5 &&
+                mesh.normals[3 * i + 2] == (i % 2 ? 0.0f : -1.0f);
+    ok(fine, "  each one's corners and normal, the cut record's too");
+    is_int((int)report.zero_normals, 1500, "  1500 zero normals counted");
+    rayo_mesh_free(&mesh);
+
+    /* Not finite: in the cut record, and in one decoded in place. */
+    put_float(f.bytes + 84 + 1309 * 50 + 12 + 4 * 4, NAN);
+    refused_at(&f, path,
+               "byte 65562: found nan as coordinate 2 of triangle 1310's "
+               "corner 2; expected a finite number",
+               "a NaN in the cut record: refused at byte 84 + 1309 x 50 + 28");
+    put_float(f.bytes + 84 + 1309 * 50 + 12 + 4 * 4, 0);
+    put_float(f.bytes + 84 + 2000 * 50 + 12 + 4 * 8, INFINITY);
+    refused_at(&f, path,
+               "byte 100128: found an infinity as coordinate 3 of triangle "
+               "2001's corner 3; expected a finite number",
+               "an infinity in triangle 2001: refused at byte 84 + 2000 x 50 "
+               "+ 44");
+    unlink(path);
     free(f.bytes);
 }
 
@@ -266,6 +339,7 @@ static void test_scene(void)
 int main(void)
 {
     test_binary();
+    test_binary_windows();
     test_ascii();
     test_obj();
     test_scene();
