@@ -23,8 +23,24 @@
  * png_chunks.c, which checks CRCs but inflates nothing, so a zlib bomb
  * after the image costs no more than reading it.  Not a writer
  * (png_write.c) and not a colour manager: gamma and ICC chunks are
- * ignored.
+ * ignored.  Built with RAYO_NO_PNG_READ (the page, whose browser decodes
+ * PNG), a PNG is recognised and refused.
  */
+#ifdef RAYO_NO_PNG_READ
+#include "reader_impl.h"
+
+rayo_status rayo_png_read(rayo_source *src, rayo_image *image,
+                          rayo_error *err)
+{
+    (void)image;
+    return rayo_error_set(err, RAYO_ERR_FORMAT,
+                          "%s: a PNG, which this build of rayo does not "
+                          "read (it was built without libpng's reader, "
+                          "RAYO_NO_PNG_READ)",
+                          src->name);
+}
+
+#else
 #include <png.h>
 #include <setjmp.h>
 #include <stdlib.h>
@@ -414,3 +430,5 @@ rayo_status rayo_png_read(rayo_source *src, rayo_image *image,
     free(r);
     return status;
 }
+
+#endif
