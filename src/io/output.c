@@ -40,8 +40,6 @@
 #include <sys/uio.h>
 #include <unistd.h>
 
-#define OUTPUT_PIPE_BUFFER (64u * 1024u)    /* Linux's default pipe size */
-#define OUTPUT_FILE_BUFFER (1024u * 1024u)  /* regular files */
 #define OUTPUT_DIRECT_WRITE (64u * 1024u)
 
 /* A write smaller than OUTPUT_DIRECT_WRITE must fit an empty buffer. */
@@ -249,10 +247,8 @@ static rayo_status flush(rayo_output *out, rayo_error *err)
 /* Allocates the buffer, its size fitted to out->fd. */
 static rayo_status make_buffer(rayo_output *out, rayo_error *err)
 {
-    struct stat st;
-    size_t capacity = OUTPUT_PIPE_BUFFER;
-    if (!out->in_memory && fstat(out->fd, &st) == 0 && S_ISREG(st.st_mode))
-        capacity = OUTPUT_FILE_BUFFER;
+    size_t capacity = out->in_memory ? OUTPUT_PIPE_BUFFER
+                                     : rayo_io_output_buffer_size(out);
     out->buffer = malloc(capacity);
     if (out->buffer == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "%s: out of memory",
@@ -357,24 +353,8 @@ rayo_status rayo_output_commit(rayo_output *out, rayo_error *err)
                                 out->display);
     else
         status = flush(out, err);
-    if (status == RAYO_OK && out->temp != NULL) {
-        int failed = fsync(out->fd) != 0, code = errno;
-        if (close(out->fd) != 0 && !failed) {
-            failed = 1;
-            code = errno;
-        }
-        out->fd = -1;
-        if (failed) {
-            status = rayo_io_output_error(out, code, err);
-        } else {
-            if (renameat(out->dir_fd, out->temp, out->dir_fd, out->name) != 0)
-                status = rayo_io_output_error(out, errno, err);
-            else {
-                free(out->temp);
-                out->temp = NULL;
-            }
-        }
-    }
+    if (status == RAYO_OK && out->temp != NULL)
+        status = rayo_io_output_file_finish(out, err);
     if (status != RAYO_OK) {
         rayo_output_abort(out);
         return status;
@@ -393,7 +373,7 @@ void rayo_output_abort(rayo_output *out)
     if (out == NULL)
         return;
     if (out->temp != NULL)
-        unlinkat(out->dir_fd, out->temp, 0);
+        rayo_io_output_file_remove(out);
     rayo_io_output_free(out);
 }
 

@@ -7,9 +7,10 @@
  * directory renamed mid-way still gets its file.  What it replaces is
  * respected as a shell's `>` would (output_target.c): a file we may not
  * write is refused, a replaced file keeps its mode (and, for root, its
- * owner), a link is followed where protected_symlinks allows.  Built
- * with RAYO_NO_FILE_OUTPUT (a host without files: the page's
- * WebAssembly), only a refusal of every path but "-" is compiled.
+ * owner), a link is followed where protected_symlinks allows.  It also
+ * sizes a descriptor's buffer (fstat).  Built with RAYO_NO_FILE_OUTPUT
+ * (a host without files: the page's WebAssembly), only a refusal of
+ * every path but "-" is compiled, and no file system call is made.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE
@@ -24,6 +25,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -187,6 +189,36 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
     *result = out;
     return RAYO_OK;
 }
+
+size_t rayo_io_output_buffer_size(const rayo_output *out)
+{
+    struct stat st;
+    if (fstat(out->fd, &st) == 0 && S_ISREG(st.st_mode))
+        return OUTPUT_FILE_BUFFER;
+    return OUTPUT_PIPE_BUFFER;
+}
+
+rayo_status rayo_io_output_file_finish(rayo_output *out, rayo_error *err)
+{
+    int failed = fsync(out->fd) != 0, code = errno;
+    if (close(out->fd) != 0 && !failed) {
+        failed = 1;
+        code = errno;
+    }
+    out->fd = -1;
+    if (failed)
+        return rayo_io_output_error(out, code, err);
+    if (renameat(out->dir_fd, out->temp, out->dir_fd, out->name) != 0)
+        return rayo_io_output_error(out, errno, err);
+    free(out->temp);
+    out->temp = NULL;
+    return RAYO_OK;
+}
+
+void rayo_io_output_file_remove(rayo_output *out)
+{
+    unlinkat(out->dir_fd, out->temp, 0);
+}
 #else
 rayo_status rayo_output_open(rayo_output **result, const char *path,
                              rayo_error *err)
@@ -200,4 +232,19 @@ rayo_status rayo_output_open(rayo_output **result, const char *path,
                           "built with RAYO_NO_FILE_OUTPUT)",
                           path);
 }
+
+size_t rayo_io_output_buffer_size(const rayo_output *out)
+{
+    (void)out;
+    return OUTPUT_PIPE_BUFFER;
+}
+
+/* No file is ever opened: out->temp stays NULL, and these go uncalled. */
+rayo_status rayo_io_output_file_finish(rayo_output *out, rayo_error *err)
+{
+    (void)out, (void)err;
+    return RAYO_OK;
+}
+
+void rayo_io_output_file_remove(rayo_output *out) { (void)out; }
 #endif

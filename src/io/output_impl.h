@@ -10,6 +10,9 @@
 
 #include "rayo/output.h"
 
+#define OUTPUT_PIPE_BUFFER (64u * 1024u)    /* Linux's default pipe size */
+#define OUTPUT_FILE_BUFFER (1024u * 1024u)  /* regular files */
+
 /* References held between two writes, at most (a writev gathers twice
  * as many pieces and one, far below any system's IOV_MAX). */
 #define OUTPUT_REFERENCES 64
@@ -58,5 +61,21 @@ void rayo_io_output_free(rayo_output *out);
  * RAYO_ERR_IO, "NAME: the system's reason". */
 rayo_status rayo_io_output_error(const rayo_output *out, int code,
                                  rayo_error *err);
+
+/*
+ * What output_file.c does for output.c, a build without files
+ * (RAYO_NO_FILE_OUTPUT) doing none of it:
+ *
+ * the buffer's size for out's descriptor: OUTPUT_FILE_BUFFER for a
+ * regular file, else (and in a build without files) OUTPUT_PIPE_BUFFER;
+ */
+size_t rayo_io_output_buffer_size(const rayo_output *out);
+
+/* once out->temp holds everything: syncs and closes it, and renames it
+ * over the target; */
+rayo_status rayo_io_output_file_finish(rayo_output *out, rayo_error *err);
+
+/* removes out->temp (an output aborted or failed). */
+void rayo_io_output_file_remove(rayo_output *out);
 
 #endif
