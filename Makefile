@@ -365,20 +365,21 @@ clean:
 # clang's wasm32-wasi target (Debian: clang, lld, wasi-libc,
 # libclang-rt-*-dev-wasm32) into $(BUILD)/web/, a static site.  libpng,
 # threads and files are the browser's business there: the library's
-# sources build unchanged against web/wasm/include (pthread.h, png.h),
-# with src/formats/png_read.c, jpeg_read.c and jpeg_write.c, and
-# src/io/output.c (and output_target.c, its replacing of files) replaced
-# by web/wasm/ files, and src/grade/
-# (which runs compilers) left out.  `make
+# sources build against web/wasm/include (pthread.h, png.h: libpng's
+# writing calls, web/wasm/png_shim.c) in a configuration of their own,
+# without files, libjpeg or libpng's reader (WASM_SWITCHES; the page
+# uses rayo_output_open_memory and rayo_image_read_memory_with), and
+# src/grade/ (which runs compilers) and output_target.c (the files'
+# replacing) left out.  `make
 # check-web` drives Chromium with Playwright (tests/web/); it skips when
 # either is missing, and `make check` runs it when Chromium is installed.
 WASM_CC ?= clang
 # (wasi-libc's S_ISREG is a statement expression, which -pedantic flags.)
+WASM_SWITCHES := -DRAYO_NO_FILE_OUTPUT -DRAYO_NO_JPEG -DRAYO_NO_PNG_READ
 WASM_CFLAGS = --target=wasm32-wasi -std=c11 -O2 $(WARNINGS) \
               -Wno-gnu-statement-expression -Iweb/wasm/include -Iinclude \
-              -MMD -MP
-WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/formats/jpeg_%.c \
-                 src/io/output.c src/io/output_target.c src/grade/% \
+              $(WASM_SWITCHES) -MMD -MP
+WASM_LIB_SRC := $(filter-out src/io/output_target.c src/grade/% \
                  src/course/course_reference.c,$(LIB_SRC))
 WASM_SRC := $(WASM_LIB_SRC) $(sort $(wildcard web/wasm/*.c))
 WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o) $(BUILD)/wasm/gen/catalogs.o
