@@ -232,13 +232,16 @@ check-sanitize:
 # `make fuzz` links them with libFuzzer, ASan and UBSan (clang) as
 # $(BUILD)-fuzz/fuzz/fuzz-NAME (fuzz/run.sh runs them); `make check`
 # links them with fuzz/replay.c as $(BUILD)/fuzz/replay-NAME and replays
-# fuzz/corpus/NAME and fuzz/regression/NAME.
+# fuzz/corpus/NAME and fuzz/regression/NAME.  They reach the library
+# through its public headers and the command through its own (-Icli:
+# cli_parse.h, zip_read.h), linked with the command's objects but main.o.
 FUZZ_NAMES := $(patsubst fuzz/fuzz_%.c,%,$(sort $(wildcard fuzz/fuzz_*.c)))
 FUZZ_SUPPORT_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(filter-out \
     fuzz/fuzz_%.c fuzz/replay.c,$(sort $(wildcard fuzz/*.c)))) \
-    $(filter-out $(BUILD)/obj/cli/main.o $(BUILD)/obj/cli/cmd_%.o,$(CLI_OBJ))
+    $(filter-out $(BUILD)/obj/cli/main.o,$(CLI_OBJ))
 FUZZ_REPLAY := $(FUZZ_NAMES:%=$(BUILD)/fuzz/replay-%)
 .SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard fuzz/*.c))
+$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard fuzz/*.c)): ALL_CFLAGS += -Icli
 # Defined after the check rules read their prerequisites, so named here.
 check check-valgrind: $(FUZZ_REPLAY)
 

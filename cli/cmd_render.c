@@ -19,6 +19,7 @@
 #include <sys/stat.h>
 
 #include "cli.h"
+#include "cli_parse.h"
 #include "interrupt.h"
 #include "progress.h"
 #include "render_preview.h"
@@ -580,4 +581,25 @@ int cli_render(int argc, char **argv)
     if (cli_interrupted() != 0)
         return cli_interrupt_exit();
     return cli_report(&err);
+}
+
+/* cli_parse.h: the options parsed as `rayo render` parses them, nothing
+ * run. */
+int cli_parse_render(int argc, char **argv)
+{
+    render_request *req = calloc(1, sizeof *req);
+    rayo_format format;
+    int status;
+    if (req == NULL)
+        return CLI_EXIT_FAILURE;
+    req->width = RAYO_SEED_WIDTH;
+    req->height = RAYO_SEED_HEIGHT;
+    req->fov = RAYO_SEED_FOV;
+    req->origin = rayo_vec3_make(0, 0, 0);
+    req->output = "-";
+    status = parse_request(argc, argv, req);
+    if (status == CLI_EXIT_OK)
+        status = choose_format(req, &format);
+    free(req);
+    return status < 0 ? CLI_EXIT_OK : status;
 }
