@@ -130,6 +130,17 @@ static void print_help(void)
           "unreadable, a directory, malformed).\n"));
 }
 
+/* What a request holds before its options: the seed's picture, to
+ * standard output. */
+static void request_defaults(render_request *req)
+{
+    req->width = RAYO_SEED_WIDTH;
+    req->height = RAYO_SEED_HEIGHT;
+    req->fov = RAYO_SEED_FOV;
+    req->origin = rayo_vec3_make(0, 0, 0);
+    req->output = "-";
+}
+
 static int parse_request(int argc, char **argv, render_request *req)
 {
     static const struct option options[] = {
@@ -499,11 +510,7 @@ int cli_render(int argc, char **argv)
         cli_say(_("render: out of memory"));
         return CLI_EXIT_NOMEM;
     }
-    req->width = RAYO_SEED_WIDTH;
-    req->height = RAYO_SEED_HEIGHT;
-    req->fov = RAYO_SEED_FOV;
-    req->origin = rayo_vec3_make(0, 0, 0);
-    req->output = "-";
+    request_defaults(req);
     rayo_error_clear(&err);
     exit_status = parse_request(argc, argv, req);
     if (exit_status == CLI_EXIT_OK && req->scene_path != NULL &&
@@ -592,11 +599,7 @@ int cli_parse_render(int argc, char **argv)
     int status;
     if (req == NULL)
         return CLI_EXIT_FAILURE;
-    req->width = RAYO_SEED_WIDTH;
-    req->height = RAYO_SEED_HEIGHT;
-    req->fov = RAYO_SEED_FOV;
-    req->origin = rayo_vec3_make(0, 0, 0);
-    req->output = "-";
+    request_defaults(req);
     status = parse_request(argc, argv, req);
     if (status == CLI_EXIT_OK)
         status = choose_format(req, &format);
