@@ -30,13 +30,9 @@
 #include "output_reserve.h"
 
 #include <errno.h>
-#include <fcntl.h>
-#include <limits.h>
 #include <stdint.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <sys/uio.h>
 #include <unistd.h>
 
@@ -46,7 +42,6 @@
 _Static_assert(OUTPUT_DIRECT_WRITE <= OUTPUT_PIPE_BUFFER &&
                    OUTPUT_DIRECT_WRITE <= OUTPUT_FILE_BUFFER,
                "small writes must fit every buffer");
-
 
 rayo_status rayo_io_output_error(const rayo_output *out, int code,
                                   rayo_error *err)
