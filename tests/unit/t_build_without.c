@@ -13,6 +13,8 @@
 #define RAYO_NO_JPEG
 #define RAYO_NO_PNG_READ
 
+#include <string.h>
+
 #include "../../src/io/output_file.c"
 #include "../../src/formats/jpeg_read.c"
 #include "../../src/formats/jpeg_write.c"
@@ -35,6 +37,7 @@ int main(void)
     rayo_error err;
     unsigned char *data = NULL;
     size_t size = 0;
+    memset(&err, 0, sizeof err); /* no failure yet; English */
 
     is_int(rayo_image_read_memory(jpeg, sizeof jpeg, "photo.jpg", &image,
                                   &report, &err),

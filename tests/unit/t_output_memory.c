@@ -68,6 +68,7 @@ int main(void)
     rayo_status s;
     if (stream == NULL)
         return 1;
+    memset(&err, 0, sizeof err); /* no failure yet; English */
     for (i = 0; i < total; i++)
         stream[i] = stream_byte(i);
 

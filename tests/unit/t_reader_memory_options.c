@@ -21,6 +21,7 @@ int main(void)
     rayo_image image;
     rayo_error err;
     memset(&o, 0, sizeof o);
+    memset(&err, 0, sizeof err); /* no failure yet; English */
     is_int(rayo_image_read_memory(text, sizeof text - 1, "t.pgm", &image,
                                   NULL, &err),
            RAYO_ERR_FORMAT, "without options: 260 is refused");
