@@ -13,8 +13,6 @@
 #define RAYO_NO_JPEG
 #define RAYO_NO_PNG_READ
 
-#include <string.h>
-
 #include "../../src/io/output_file.c"
 #include "../../src/formats/jpeg_read.c"
 #include "../../src/formats/jpeg_write.c"
