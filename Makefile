@@ -233,13 +233,16 @@ check-sanitize:
 # `make fuzz` links them with libFuzzer, ASan and UBSan (clang) as
 # $(BUILD)-fuzz/fuzz/fuzz-NAME (fuzz/run.sh runs them); `make check`
 # links them with fuzz/replay.c as $(BUILD)/fuzz/replay-NAME and replays
-# fuzz/corpus/NAME and fuzz/regression/NAME.
+# fuzz/corpus/NAME and fuzz/regression/NAME.  They reach the library
+# through its public headers and the command through its own (-Icli:
+# cli_parse.h, zip_read.h), linked with the command's objects but main.o.
 FUZZ_NAMES := $(patsubst fuzz/fuzz_%.c,%,$(sort $(wildcard fuzz/fuzz_*.c)))
 FUZZ_SUPPORT_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(filter-out \
     fuzz/fuzz_%.c fuzz/replay.c,$(sort $(wildcard fuzz/*.c)))) \
-    $(filter-out $(BUILD)/obj/cli/main.o $(BUILD)/obj/cli/cmd_%.o,$(CLI_OBJ))
+    $(filter-out $(BUILD)/obj/cli/main.o,$(CLI_OBJ))
 FUZZ_REPLAY := $(FUZZ_NAMES:%=$(BUILD)/fuzz/replay-%)
 .SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard fuzz/*.c))
+$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard fuzz/*.c)): ALL_CFLAGS += -Icli
 # Defined after the check rules read their prerequisites, so named here.
 check check-valgrind: $(FUZZ_REPLAY)
 
@@ -391,20 +394,21 @@ clean:
 # clang's wasm32-wasi target (Debian: clang, lld, wasi-libc,
 # libclang-rt-*-dev-wasm32) into $(BUILD)/web/, a static site.  libpng,
 # threads and files are the browser's business there: the library's
-# sources build unchanged against web/wasm/include (pthread.h, png.h),
-# with src/formats/png_read.c, jpeg_read.c and jpeg_write.c, and
-# src/io/output.c (and output_target.c, its replacing of files) replaced
-# by web/wasm/ files, and src/grade/
-# (which runs compilers) left out.  `make
+# sources build against web/wasm/include (pthread.h, png.h: libpng's
+# writing calls, web/wasm/png_shim.c) in a configuration of their own,
+# without files, libjpeg or libpng's reader (WASM_SWITCHES; the page
+# uses rayo_output_open_memory and rayo_image_read_memory_with), and
+# src/grade/ (which runs compilers) and output_target.c (the files'
+# replacing) left out.  `make
 # check-web` drives Chromium with Playwright (tests/web/); it skips when
 # either is missing, and `make check` runs it when Chromium is installed.
 WASM_CC ?= clang
 # (wasi-libc's S_ISREG is a statement expression, which -pedantic flags.)
+WASM_SWITCHES := -DRAYO_NO_FILE_OUTPUT -DRAYO_NO_JPEG -DRAYO_NO_PNG_READ
 WASM_CFLAGS = --target=wasm32-wasi -std=c11 -O2 $(WARNINGS) \
               -Wno-gnu-statement-expression -Iweb/wasm/include -Iinclude \
-              -MMD -MP
-WASM_LIB_SRC := $(filter-out src/formats/png_read.c src/formats/jpeg_%.c \
-                 src/io/output.c src/io/output_target.c src/grade/% \
+              $(WASM_SWITCHES) -MMD -MP
+WASM_LIB_SRC := $(filter-out src/io/output_target.c src/grade/% \
                  src/course/course_reference.c,$(LIB_SRC))
 WASM_SRC := $(WASM_LIB_SRC) $(sort $(wildcard web/wasm/*.c))
 WASM_OBJ := $(WASM_SRC:%.c=$(BUILD)/wasm/%.o) $(BUILD)/wasm/gen/catalogs.o

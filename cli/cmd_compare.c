@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cli_parse.h"
 #include "output_guard.h"
 
 typedef struct compare_request {
@@ -370,4 +371,16 @@ int cli_compare(int argc, char **argv)
     rayo_image_free(&reference.image);
     rayo_image_free(&image.image);
     return status;
+}
+
+/* cli_parse.h: the options parsed as `rayo compare` parses them, nothing
+ * run. */
+int cli_parse_compare(int argc, char **argv)
+{
+    compare_request req;
+    int status;
+    memset(&req, 0, sizeof req);
+    rayo_compare_options_init(&req.options);
+    status = parse_request(argc, argv, &req);
+    return status < 0 ? CLI_EXIT_OK : status;
 }

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cli_parse.h"
 #include "output_guard.h"
 #include "render_preview.h"
 
@@ -345,4 +346,19 @@ int cli_convert(int argc, char **argv)
     if (exit_status != CLI_EXIT_OK)
         return exit_status < 0 ? CLI_EXIT_OK : exit_status;
     return convert(&req);
+}
+
+/* cli_parse.h: the options parsed as `rayo convert` parses them, nothing
+ * run. */
+int cli_parse_convert(int argc, char **argv)
+{
+    convert_request req;
+    rayo_format format;
+    int status;
+    memset(&req, 0, sizeof req);
+    status = parse_request(argc, argv, &req);
+    if (status == CLI_EXIT_OK &&
+        (req.format != NULL || strcmp(req.output, "-") != 0))
+        status = choose_format(&req, NULL, &format);
+    return status < 0 ? CLI_EXIT_OK : status;
 }

@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cli_parse.h"
 #include "grade_export.h"
 #include "grade_print.h"
 #include "grade_request.h"
@@ -415,4 +416,16 @@ int cli_grade(int argc, char **argv)
     if (cli_interrupted() != 0)
         return cli_interrupt_exit();
     return status;
+}
+
+/* cli_parse.h: the options parsed as `rayo grade` parses them, nothing
+ * run. */
+int cli_parse_grade(int argc, char **argv)
+{
+    grade_request req;
+    int status;
+    memset(&req, 0, sizeof req);
+    rayo_grade_options_init(&req.options);
+    status = parse_request(argc, argv, &req);
+    return status < 0 ? CLI_EXIT_OK : status;
 }

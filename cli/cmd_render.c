@@ -19,6 +19,7 @@
 #include <sys/stat.h>
 
 #include "cli.h"
+#include "cli_parse.h"
 #include "interrupt.h"
 #include "progress.h"
 #include "render_preview.h"
@@ -127,6 +128,17 @@ static void print_help(void)
           "exit status: 0 success, 1 the output could not be written, 2 bad "
           "options or an\ninput that cannot be read (SCENE missing, "
           "unreadable, a directory, malformed).\n"));
+}
+
+/* What a request holds before its options: the seed's picture, to
+ * standard output. */
+static void request_defaults(render_request *req)
+{
+    req->width = RAYO_SEED_WIDTH;
+    req->height = RAYO_SEED_HEIGHT;
+    req->fov = RAYO_SEED_FOV;
+    req->origin = rayo_vec3_make(0, 0, 0);
+    req->output = "-";
 }
 
 static int parse_request(int argc, char **argv, render_request *req)
@@ -498,11 +510,7 @@ int cli_render(int argc, char **argv)
         cli_say(_("render: out of memory"));
         return CLI_EXIT_NOMEM;
     }
-    req->width = RAYO_SEED_WIDTH;
-    req->height = RAYO_SEED_HEIGHT;
-    req->fov = RAYO_SEED_FOV;
-    req->origin = rayo_vec3_make(0, 0, 0);
-    req->output = "-";
+    request_defaults(req);
     rayo_error_clear(&err);
     exit_status = parse_request(argc, argv, req);
     if (exit_status == CLI_EXIT_OK && req->scene_path != NULL &&
@@ -580,4 +588,21 @@ int cli_render(int argc, char **argv)
     if (cli_interrupted() != 0)
         return cli_interrupt_exit();
     return cli_report(&err);
+}
+
+/* cli_parse.h: the options parsed as `rayo render` parses them, nothing
+ * run. */
+int cli_parse_render(int argc, char **argv)
+{
+    render_request *req = calloc(1, sizeof *req);
+    rayo_format format;
+    int status;
+    if (req == NULL)
+        return CLI_EXIT_FAILURE;
+    request_defaults(req);
+    status = parse_request(argc, argv, req);
+    if (status == CLI_EXIT_OK)
+        status = choose_format(req, &format);
+    free(req);
+    return status < 0 ? CLI_EXIT_OK : status;
 }

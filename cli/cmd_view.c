@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_parse.h"
 #include "render_preview.h"
 
 static void print_help(void)
@@ -197,4 +198,17 @@ int cli_view(int argc, char **argv)
     status = cli_print_preview(&image, &options, stdout);
     rayo_image_free(&image);
     return status;
+}
+
+/* cli_parse.h: the options parsed as `rayo view` parses them, nothing
+ * run. */
+int cli_parse_view(int argc, char **argv)
+{
+    rayo_preview_options options;
+    const char *file = NULL;
+    int status;
+    rayo_preview_options_init(&options);
+    options.columns = 80;
+    status = parse_options(argc, argv, &options, &file);
+    return status < 0 ? CLI_EXIT_OK : status;
 }

@@ -3,7 +3,8 @@
  *
  * The first byte picks the subcommand (render, convert, compare, view,
  * grade); the rest, split at NUL bytes, are its arguments.  The
- * subcommand's own parser runs on them (cli_parse.h: nothing is read,
+ * subcommand's own parser runs on them (cli/cli_parse.h, the command's
+ * seam, found through the fuzz rules' -Icli: nothing is read,
  * rendered or written) and must return an exit status the command
  * documents: 0 to go on (or after --help), 2 for a usage error.  Run the
  * fuzzer with -close_fd_mask=3: the parsers print their messages.
@@ -23,9 +24,9 @@ typedef struct subcommand {
 } subcommand;
 
 static const subcommand subcommands[] = {
-    {"render", fuzz_parse_render},   {"convert", fuzz_parse_convert},
-    {"compare", fuzz_parse_compare}, {"view", fuzz_parse_view},
-    {"grade", fuzz_parse_grade},
+    {"render", cli_parse_render},   {"convert", cli_parse_convert},
+    {"compare", cli_parse_compare}, {"view", cli_parse_view},
+    {"grade", cli_parse_grade},
 };
 #define SUBCOMMAND_COUNT (sizeof subcommands / sizeof subcommands[0])
 

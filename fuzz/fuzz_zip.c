@@ -1,6 +1,7 @@
 /*
  * fuzz_zip.c - fuzz target: the zip reader of `rayo grade --each`
- * (cli/zip_read.c), which reads students' zip files.
+ * (cli/zip_read.c, reached through its header, cli/zip_read.h, with the
+ * fuzz rules' -Icli), which reads students' zip files.
  *
  * The input is written to a temporary file and its sources copied out
  * into a fresh temporary folder.  A refusal must be one line; on success
@@ -19,7 +20,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "../cli/zip_read.h"
+#include "zip_read.h"
 #include "fuzz.h"
 
 static void check_name(const char *dest, const char *name)

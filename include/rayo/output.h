@@ -36,13 +36,28 @@ extern "C" {
 
 typedef struct rayo_output rayo_output;
 
-/* Opens path for writing; "-" is standard output. */
+/* Opens path for writing; "-" is standard output.  A build of rayo
+ * without files (RAYO_NO_FILE_OUTPUT, docs/architecture.md) refuses any
+ * other path with RAYO_ERR_IO. */
 RAYO_API rayo_status rayo_output_open(rayo_output **out, const char *path,
                                       rayo_error *err);
 
 /* Wraps an open descriptor (not closed by rayo); name is for messages. */
 RAYO_API rayo_status rayo_output_open_fd(rayo_output **out, int fd,
                                          const char *name, rayo_error *err);
+
+/*
+ * An output into memory, for a program without files (a web page, a
+ * test): what is written collects in a buffer that grows as needed, and
+ * a successful rayo_output_commit hands it over as *data (allocated with
+ * malloc, the caller's to free; NULL when nothing was written) and
+ * *size.  Until then, and when the commit fails or the output is
+ * aborted, *data and *size are not touched.  name is for messages.
+ */
+RAYO_API rayo_status rayo_output_open_memory(rayo_output **out,
+                                             const char *name,
+                                             unsigned char **data,
+                                             size_t *size, rayo_error *err);
 
 RAYO_API rayo_status rayo_output_write(rayo_output *out, const void *data,
                                        size_t size, rayo_error *err);

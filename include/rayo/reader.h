@@ -47,6 +47,11 @@
  * PNG costs the image's memory and about 2 MiB more, and time in
  * proportion to its size and the image's.
  *
+ * A build of rayo without libpng's reader or without libjpeg
+ * (RAYO_NO_PNG_READ, RAYO_NO_JPEG: the page, docs/architecture.md) still
+ * recognises those files, and refuses them with RAYO_ERR_FORMAT: "FILE:
+ * a PNG, which this build of rayo does not read (...)".
+ *
  * Limits (limits.h) are checked before any pixel memory is requested:
  * width and height, total pixels, and, for a regular file or memory, that
  * there are enough bytes left for the raster the header promises.
@@ -126,8 +131,8 @@ typedef struct rayo_read_report {
     int bmp_unpadded;
 } rayo_read_report;
 
-/* How to read (rayo_image_read_file_with); zeroed: as
-   rayo_image_read_file. */
+/* How to read (rayo_image_read_file_with, rayo_image_read_memory_with);
+   zeroed: as rayo_image_read_file. */
 typedef struct rayo_read_options {
     /* Plain PGM/PPM samples above maxval, or negative, are clamped into
        range and counted in the report instead of refused: a program that
@@ -155,6 +160,13 @@ RAYO_API rayo_status rayo_image_read_memory(const void *data, size_t size,
                                             rayo_image *image,
                                             rayo_read_report *report,
                                             rayo_error *err);
+
+/* rayo_image_read_memory with options (NULL: none), for a program
+   without files (the page reads what it checks with clamp). */
+RAYO_API rayo_status rayo_image_read_memory_with(
+    const void *data, size_t size, const char *name,
+    const rayo_read_options *options, rayo_image *image,
+    rayo_read_report *report, rayo_error *err);
 
 #ifdef __cplusplus
 }

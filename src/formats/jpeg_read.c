@@ -12,7 +12,25 @@
  * would pad with gray), into one rayo_error naming the file.  JPEG is
  * lossy: what is read is what the encoder kept, not what was drawn;
  * compare knows it (docs/compare.md).  Not the writer (jpeg_write.c).
+ * Built with RAYO_NO_JPEG (no libjpeg: the page), a JPEG is refused.
  */
+#ifdef RAYO_NO_JPEG
+#include "reader_impl.h"
+
+rayo_status rayo_jpeg_read(rayo_source *src, const unsigned char magic[2],
+                           rayo_image *image, rayo_error *err)
+{
+    (void)magic;
+    (void)image;
+    return rayo_error_set(err, RAYO_ERR_FORMAT,
+                          "%s: a JPEG, which this build of rayo does not "
+                          "read (it was built without libjpeg, "
+                          "RAYO_NO_JPEG); save the image as PNG, BMP or "
+                          "PBM/PGM/PPM",
+                          src->name);
+}
+
+#else
 #include <setjmp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -185,3 +203,5 @@ rayo_status rayo_jpeg_read(rayo_source *src, const unsigned char magic[2],
     free(r);
     return status;
 }
+
+#endif

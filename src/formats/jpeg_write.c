@@ -9,8 +9,34 @@
  * libjpeg's default 4:2:0 chroma subsampling.  JPEG is lossy: a bilevel
  * image comes back with gray fringes at its edges, which is why PNG is
  * the format to hand in.  Errors (libjpeg's or the output's) end in one
- * rayo_error.  Not the reader (jpeg_read.c).
+ * rayo_error.  Not the reader (jpeg_read.c).  Built with RAYO_NO_JPEG
+ * (no libjpeg: the page), writing JPEG is refused.
  */
+#ifdef RAYO_NO_JPEG
+#include "writer_impl.h"
+
+static rayo_status refuse_open(rayo_writer *writer, rayo_error *err)
+{
+    return rayo_error_set(err, RAYO_ERR_INVALID,
+                          "%s: this build of rayo does not write JPEG (it "
+                          "was built without libjpeg, RAYO_NO_JPEG)",
+                          rayo_output_name(writer->out));
+}
+
+/* Never called: no writer opens. */
+static rayo_status refuse_rows(rayo_writer *writer, const unsigned char *rows,
+                               size_t stride, uint32_t count, rayo_error *err)
+{
+    (void)rows, (void)stride, (void)count;
+    return refuse_open(writer, err);
+}
+
+static void discard_nothing(rayo_writer *writer) { (void)writer; }
+
+const rayo_writer_ops rayo_jpeg_writer_ops = {
+    refuse_open, refuse_rows, NULL, refuse_open, discard_nothing};
+
+#else
 #include <setjmp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -192,3 +218,5 @@ static rayo_status jpeg_finish(rayo_writer *writer, rayo_error *err)
 
 const rayo_writer_ops rayo_jpeg_writer_ops = {jpeg_open, jpeg_rows, NULL,
                                               jpeg_finish, jpeg_discard};
+
+#endif

@@ -9,8 +9,24 @@
  * longjmp errors into one rayo_error naming the file and the byte where
  * reading stopped.  Hostile files cost no more than their image (below).
  * Not a writer (png_write.c) and not a colour manager: gamma and ICC
- * chunks are ignored.
+ * chunks are ignored.  Built with RAYO_NO_PNG_READ (the page, whose
+ * browser decodes PNG), a PNG is recognised and refused.
  */
+#ifdef RAYO_NO_PNG_READ
+#include "reader_impl.h"
+
+rayo_status rayo_png_read(rayo_source *src, rayo_image *image,
+                          rayo_error *err)
+{
+    (void)image;
+    return rayo_error_set(err, RAYO_ERR_FORMAT,
+                          "%s: a PNG, which this build of rayo does not "
+                          "read (it was built without libpng's reader, "
+                          "RAYO_NO_PNG_READ)",
+                          src->name);
+}
+
+#else
 #include <png.h>
 #include <setjmp.h>
 #include <stdlib.h>
@@ -418,3 +434,5 @@ rayo_status rayo_png_read(rayo_source *src, rayo_image *image,
     free(r);
     return status;
 }
+
+#endif /* RAYO_NO_PNG_READ */

@@ -128,12 +128,24 @@ rayo_status rayo_image_read_file(const char *path, rayo_image *image,
     return rayo_image_read_file_with(path, NULL, image, report, err);
 }
 
+rayo_status rayo_image_read_memory_with(const void *data, size_t size,
+                                        const char *name,
+                                        const rayo_read_options *options,
+                                        rayo_image *image,
+                                        rayo_read_report *report,
+                                        rayo_error *err)
+{
+    rayo_source src;
+    rayo_source_open_memory(&src, data, size, name ? name : "memory");
+    return read_from(&src, options != NULL && options->clamp, image, report,
+                     err);
+}
+
 rayo_status rayo_image_read_memory(const void *data, size_t size,
                                    const char *name, rayo_image *image,
                                    rayo_read_report *report,
                                    rayo_error *err)
 {
-    rayo_source src;
-    rayo_source_open_memory(&src, data, size, name ? name : "memory");
-    return read_from(&src, 0, image, report, err);
+    return rayo_image_read_memory_with(data, size, name, NULL, image, report,
+                                       err);
 }

@@ -1,8 +1,8 @@
 /*
- * web.h - what the page's WebAssembly glue shares between its files:
- * bytes the library wrote into memory (output_memory.c), and the image
- * the page holds and the functions web_api.c exports to the script.  Not
- * part of the library's interface.
+ * web.h - what the page's WebAssembly glue declares: bytes the library
+ * wrote into memory (rayo_output_open_memory), the image the page holds
+ * and the functions web_api.c exports to the script.  Not part of the
+ * library's interface.
  */
 #ifndef RAYO_WEB_H
 #define RAYO_WEB_H
@@ -10,20 +10,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "rayo/output.h"
-#include "rayo/status.h"
-
 #define WEB_EXPORT(name) __attribute__((export_name(name)))
 
 typedef struct web_bytes {
     unsigned char *data; /* malloc'd; NULL when empty */
     size_t size;
 } web_bytes;
-
-/* An output into memory: on commit, its bytes go to *result (which owns
- * them from then on, replacing what it held). */
-rayo_status web_output_open(rayo_output **out, const char *name,
-                            web_bytes *result, rayo_error *err);
 
 /* What web_api.c exports to the script (docs/web.md): each function's
  * comment is at its definition. */

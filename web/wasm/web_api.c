@@ -9,7 +9,9 @@
  * Failures leave one line, as the command would print it ("rayo: ..."),
  * for web_error.  Images the script holds are web_image pointers, freed
  * with web_image_free.  One thread, no files: reading is from memory,
- * writing into memory (output_memory.c).
+ * writing into memory (rayo_output_open_memory), through the library's
+ * public headers only, built without files, libjpeg or libpng's reader
+ * (the Makefile's RAYO_NO_* switches; the browser decodes PNG).
  *
  * Sizes: size_t is 32 bits here, and the module's memory at most 4 GiB,
  * so every image the page takes in is first held to WEB_MAX_PIXELS
@@ -27,13 +29,13 @@
 #include "rayo/course/course.h"
 #include "rayo/course/course_scene.h"
 #include "rayo/limits.h"
+#include "rayo/output.h"
 #include "rayo/reader.h"
 #include "rayo/render.h"
 #include "rayo/scene.h"
 #include "rayo/seed.h"
 #include "rayo/sphere.h"
 
-#include "../../src/formats/reader_impl.h"
 #include "web.h"
 
 struct web_image {
@@ -128,35 +130,28 @@ web_image *web_read(const unsigned char *data, size_t size, const char *name,
                     int clamp)
 {
     web_image *im = new_image();
+    rayo_read_options options;
     rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status s;
     last_was_png = 0;
     if (im == NULL)
         return NULL;
     rayo_error_clear(&err);
-    if (clamp && size >= 2 && data[0] == 'P' && data[1] >= '1' &&
-        data[1] <= '6') {
-        /* rayo_image_read_memory's path with the reader's clamp option,
-           which only rayo_image_read_file_with offers. */
-        rayo_source src;
-        uint64_t rest = 0;
-        unsigned char magic[2];
-        size_t got;
-        rayo_source_open_memory(&src, data, size, name);
-        rayo_source_read(&src, magic, 2, &got);
-        s = rayo_pnm_read(&src, data[1], 1, &im->image, &im->read, &err);
-        if (s == RAYO_OK)
-            s = rayo_source_count_rest(&src, &rest, &err);
-        if (s == RAYO_OK)
-            im->read.trailing_bytes += rest;
-    } else {
-        s = rayo_image_read_memory(data, size, name, &im->image, &im->read,
-                                   &err);
-    }
+    memset(&options, 0, sizeof options);
+    options.clamp = clamp;
+    s = rayo_image_read_memory_with(data, size, name, &options, &im->image,
+                                    &im->read, &err);
     if (s != RAYO_OK) {
         last_was_png = im->read.format == RAYO_FORMAT_PNG && size >= 8 &&
                        data[0] == 0x89;
         keep_error(&err);
+        /* This build reads no JPEG (RAYO_NO_JPEG): said in the page's
+           words rather than the build's. */
+        if (im->read.format == RAYO_FORMAT_JPEG)
+            snprintf(last_error, sizeof last_error,
+                     "rayo: %s: a JPEG, which the page does not read; save "
+                     "the image as PNG or PBM/PGM/PPM",
+                     name);
         web_image_free(im);
         return NULL;
     }
@@ -372,7 +367,8 @@ const char *web_compare(const web_image *reference, const web_image *image,
                                     reference_course < RAYO_COURSE_EXERCISES
                                 ? (rayo_course_exercise)reference_course
                                 : RAYO_COURSE_EXERCISES);
-    if (web_output_open(&out, "diff.png", &compare_diff, &err) == RAYO_OK) {
+    if (rayo_output_open_memory(&out, "diff.png", &compare_diff.data,
+                                &compare_diff.size, &err) == RAYO_OK) {
         if (rayo_compare_write_diff(&reference->image, &image->image,
                                     &options, out, &err) == RAYO_OK)
             rayo_output_commit(out, &err);

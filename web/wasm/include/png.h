@@ -9,7 +9,7 @@
  * the same pixels in a PNG the browser can show.  Errors are reported to
  * the error callback, which jumps (png_longjmp): the module traps there,
  * which the page shows as an error.  Writes go to rayo's memory output
- * (output_memory.c), which fails only when memory does.
+ * (rayo_output_open_memory), which fails only when memory does.
  */
 #ifndef RAYO_WEB_PNG_H
 #define RAYO_WEB_PNG_H
