@@ -23,9 +23,12 @@
 #include "rayo/limits.h"
 #include "scene_file_impl.h"
 #include "scene_file_split.h"
-#include "scene_impl.h"
 #include "scene_lexer.h"
 #include "../core/decimal.h"
+
+/* Spheres added at once: enough that a batch costs little per sphere,
+ * few enough that the batch stays in the first-level cache. */
+#define SPHERE_BATCH 256
 
 typedef struct material_name {
     char text[RAYO_SCENE_MAX_NAME + 1];
@@ -46,6 +49,11 @@ typedef struct parser {
     unsigned long base; /* lines before the window the lexer reads */
     unsigned parts;     /* threads a long window is read on */
     split_set split;    /* its parts, kept for the next window */
+    /* Spheres read ahead, consecutive lines of a part, waiting to be
+       added together (rayo_scene_add_spheres). */
+    rayo_sphere batch[SPHERE_BATCH];
+    unsigned batch_material[SPHERE_BATCH];
+    size_t batch_count;
 } parser;
 
 #define WORD_SHOW 48
@@ -1025,34 +1033,62 @@ static int read_material(const parser *p, split_part *part,
 }
 
 /*
+ * Adds the batch, the spheres of the part's lines from `first` on; when
+ * the scene refuses it (the object limit, memory), nothing is added and
+ * those lines are read one at a time as parse_all reads them, which says
+ * which line fails.
+ */
+static rayo_status add_batch(parser *p, const split_part *part, size_t first)
+{
+    size_t j, count = p->batch_count;
+    rayo_status status = RAYO_OK;
+    p->batch_count = 0;
+    if (count == 0 ||
+        rayo_scene_add_spheres(p->file->scene, p->batch, p->batch_material,
+                               count, NULL) == RAYO_OK)
+        return RAYO_OK;
+    for (j = first; j < first + count && status == RAYO_OK; j++)
+        status = parse_line_at(p, part->lines[j].offset,
+                               p->base + part->lines[j].line);
+    return status;
+}
+
+/*
  * Every line of the window's parts, in order, numbered from p->base: a
- * sphere read ahead is put straight into room made for the window's
- * lines (scene_reserve_spheres), in file order; any other line is read
- * as parse_all reads it.  When the room cannot be made (the object
- * limit, memory), every line is read as parse_all reads it, which says
- * where the limit is passed.
+ * sphere read ahead joins the batch, added when full and before any
+ * other line, which is read as parse_all reads it; so the objects come
+ * in file order.
  */
 static rayo_status take_parts(parser *p)
 {
-    size_t i, j, lines = 0;
-    int room;
-    for (i = 0; i < p->split.count; i++)
-        lines += p->split.parts[i].count;
-    room = scene_reserve_spheres(p->file->scene, lines, NULL) == RAYO_OK;
+    size_t i, j;
     for (i = 0; i < p->split.count; i++) {
         split_part *part = &p->split.parts[i];
-        for (j = 0; j < part->count; j++) {
+        size_t first = 0;
+        rayo_status status = RAYO_OK;
+        for (j = 0; j < part->count && status == RAYO_OK; j++) {
             const split_line *l = &part->lines[j];
             unsigned id;
-            if (room && l->sphere && read_material(p, part, l, &id)) {
-                scene_put_sphere(p->file->scene, l->center, l->radius, id);
+            if (l->sphere && read_material(p, part, l, &id)) {
+                rayo_sphere *s = &p->batch[p->batch_count];
+                if (p->batch_count == 0)
+                    first = j;
+                s->center = rayo_vec3_make(l->center[0], l->center[1],
+                                           l->center[2]);
+                s->radius = l->radius;
+                p->batch_material[p->batch_count++] = id;
+                if (p->batch_count == SPHERE_BATCH)
+                    status = add_batch(p, part, first);
             } else {
-                rayo_status status =
-                    parse_line_at(p, l->offset, p->base + l->line);
-                if (status != RAYO_OK)
-                    return status;
+                status = add_batch(p, part, first);
+                if (status == RAYO_OK)
+                    status = parse_line_at(p, l->offset, p->base + l->line);
             }
         }
+        if (status == RAYO_OK)
+            status = add_batch(p, part, first);
+        if (status != RAYO_OK)
+            return status;
         p->base += part->line_count;
     }
     return RAYO_OK;
