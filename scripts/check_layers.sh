@@ -56,7 +56,11 @@ for file in $(find src include/rayo web/wasm fuzz -name '*.[ch]' | sort); do
             to=$(home "$(basename "$target" .h)")
             folder=public ;;
         */src/* | ../*)
-            folder=$(echo "$target" | sed 's|.*\.\./||; s|^src/||' | cut -d/ -f1)
+            # the path from the root, each "dir/.." taken out, so that a
+            # subfolder's "../x.h" is its own folder's
+            path=$(echo "${file%/*}/$target" |
+                sed -e ':a' -e 's|[^/][^/]*/\.\./||' -e 'ta' -e 's|^src/||')
+            folder=$(echo "$path" | cut -d/ -f1)
             to=$folder ;;
         *)
             continue ;; # its own folder
