@@ -13,7 +13,7 @@
  * the union of its primitives' boxes, rounded outward), a ray that the
  * binary walk would let into a leaf is let in by the wide walk too, and
  * both then take the smallest (t, object) over the same candidates: the
- * answers are the same bit for bit (bvh_wide_walk.h says why the lanes'
+ * answers are the same bit for bit (simd/bvh_wide_walk.h says why the lanes'
  * arithmetic is the scalar one).
  *
  * On several threads (rayo_bvh_widen_threads) the copy is the same
@@ -29,7 +29,7 @@
  */
 #include "bvh_packet.h"
 #include "bvh_wide_impl.h"
-#include "bvh_wide_isa.h"
+#include "simd/bvh_wide_isa.h"
 
 #include "../core/thread_start.h"
 
@@ -162,7 +162,7 @@ static uint16_t leaf_count_of(const widener *w, const bvh_node *leaf)
 {
     uint16_t count = (uint16_t)leaf->count;
     uint32_t k;
-    /* The lanes test at most 2 x 4 spheres a leaf (bvh_wide_walk.h);
+    /* The lanes test at most 2 x 4 spheres a leaf (simd/bvh_wide_walk.h);
      * a builder making bigger leaves gets the callback for them. */
     if (leaf->count > 2 * BVH_WIDE_LANES)
         return (uint16_t)(BVH_WIDE_MIXED |
