@@ -122,6 +122,20 @@ RAYO_API rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,
                                                     rayo_error *err);
 
 /*
+ * Adds count spheres in order, as count calls of
+ * rayo_scene_add_sphere_material would (spheres[i] with materials[i], or
+ * material 0 for all when materials is NULL), but all or none: when one
+ * would be refused, or would pass RAYO_MAX_OBJECTS, nothing is added and
+ * the status and message are those rayo_scene_add_sphere_material gives
+ * for the first refused.  Room is made once for the whole batch: what a
+ * reader of large scene files uses.
+ */
+RAYO_API rayo_status rayo_scene_add_spheres(rayo_scene *scene,
+                                            const rayo_sphere *spheres,
+                                            const unsigned *materials,
+                                            size_t count, rayo_error *err);
+
+/*
  * Adds the plane through point with the given normal (any non-zero
  * finite length; stored normalised).
  */

@@ -7,7 +7,7 @@
  * Neighbouring pixels' rays, and their shadow rays towards one light,
  * mostly cross the same nodes, so a packet loads and tests each node once
  * for four rays.  Each ray still gets exactly its own answer (see
- * bvh_packet_avx2.c).  The packet walks exist where the processor has
+ * simd/bvh_packet_avx2.c).  The packet walks exist where the processor has
  * AVX2 and the scene has the wide copy; elsewhere, or when turned off
  * (RAYO_PACKETS=0, or rayo_bvh_packets_set), the callers ask one ray at a
  * time, with the same answers.

@@ -1,35 +1,31 @@
 /*
  * bvh_wide.c - the hierarchy's 4-wide copy (bvh_wide.h): made from the
  * binary tree once it is built, and the one setting that says which walk
- * the queries take.
- *
- * The copy collapses the binary tree: a wide node starts from a binary
- * interior node's two children and, while it has fewer than four,
- * replaces its interior child of largest surface area by that child's
- * two children.  Every box of the copy is a box of the binary tree,
- * float for float, and every leaf is a binary leaf; only the interior
- * boxes skipped by the collapse are no longer tested.  Since a binary
- * child's box lies inside its parent's (the builder bounds each node by
- * the union of its primitives' boxes, rounded outward), a ray that the
- * binary walk would let into a leaf is let in by the wide walk too, and
- * both then take the smallest (t, object) over the same candidates: the
- * answers are the same bit for bit (bvh_wide_walk.h says why the lanes'
- * arithmetic is the scalar one).
- *
- * On several threads (rayo_bvh_widen_threads) the copy is the same
- * bytes: the top levels are made by the caller, the subtrees below into
- * the blocks of the array one thread would have given them.
- *
- * The walk is chosen once per process, from RAYO_WALK (binary, sse2,
- * avx2), else the fastest one the processor runs: AVX2 (with packets,
- * bvh_packet.h) where __builtin_cpu_supports says so (the processor and
- * the system's saving of its registers), else the binary walk (the SSE2
- * wide walk, which any x86-64 runs, measured no faster than it: it stays
- * for RAYO_WALK=sse2, the tests and the bench).
+ * the queries take.  The walks that read the copy are in simd/, one file
+ * per instruction set; the binary walk (bvh.c) stays the reference they
+ * answer exactly as.  On several threads (rayo_bvh_widen_threads) the
+ * copy is the same bytes: the top levels are made by the caller, the
+ * subtrees below into the blocks of the array one thread would have
+ * given them.
+ */
+/*
+ * Why the answers are the same.  The copy collapses the binary tree: a
+ * wide node starts from a binary interior node's two children and, while
+ * it has fewer than four, replaces its interior child of largest surface
+ * area by that child's two children.  Every box of the copy is a box of
+ * the binary tree, float for float, and every leaf is a binary leaf; only
+ * the interior boxes skipped by the collapse are no longer tested.  Since
+ * a binary child's box lies inside its parent's (the builder bounds each
+ * node by the union of its primitives' boxes, rounded outward), a ray
+ * that the binary walk would let into a leaf is let in by the wide walk
+ * too, and both then take the smallest (t, object) over the same
+ * candidates: the answers are the same bit for bit
+ * (simd/bvh_wide_walk.h says why the lanes' arithmetic is the scalar
+ * one).
  */
 #include "bvh_packet.h"
 #include "bvh_wide_impl.h"
-#include "bvh_wide_isa.h"
+#include "simd/bvh_wide_isa.h"
 
 #include "../core/thread_start.h"
 
@@ -38,8 +34,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* -1 until the environment is read.  Threads that read it at once all
- * store the same values; queries load them relaxed (a plain load). */
+/*
+ * The walk is chosen once per process, from RAYO_WALK (binary, sse2,
+ * avx2), else the fastest one the processor runs: AVX2 (with packets,
+ * bvh_packet.h) where __builtin_cpu_supports says so (the processor and
+ * the system's saving of its registers), else the binary walk (the SSE2
+ * wide walk, which any x86-64 runs, measured no faster than it: it stays
+ * for RAYO_WALK=sse2, the tests and the bench).
+ *
+ * -1 until the environment is read.  Threads that read it at once all
+ * store the same values; queries load them relaxed (a plain load).
+ */
 static atomic_int walk_in_use = -1;
 static atomic_int packets_wanted = -1;
 
@@ -162,7 +167,7 @@ static uint16_t leaf_count_of(const widener *w, const bvh_node *leaf)
 {
     uint16_t count = (uint16_t)leaf->count;
     uint32_t k;
-    /* The lanes test at most 2 x 4 spheres a leaf (bvh_wide_walk.h);
+    /* The lanes test at most 2 x 4 spheres a leaf (simd/bvh_wide_walk.h);
      * a builder making bigger leaves gets the callback for them. */
     if (leaf->count > 2 * BVH_WIDE_LANES)
         return (uint16_t)(BVH_WIDE_MIXED |

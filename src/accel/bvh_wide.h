@@ -26,8 +26,9 @@ struct bvh_wide; /* bvh_wide_impl.h */
 
 typedef enum rayo_bvh_walk {
     RAYO_BVH_WALK_BINARY, /* bvh.c: the reference, one box at a time */
-    RAYO_BVH_WALK_SSE2,   /* bvh_wide_sse2.c: 4-wide, two lanes of doubles */
-    RAYO_BVH_WALK_AVX2    /* bvh_wide_avx2.c: 4-wide, four lanes */
+    RAYO_BVH_WALK_SSE2,   /* simd/bvh_wide_sse2.c: 4-wide, two lanes of
+                             doubles */
+    RAYO_BVH_WALK_AVX2    /* simd/bvh_wide_avx2.c: 4-wide, four lanes */
 } rayo_bvh_walk;
 
 /* The walk in use (RAYO_WALK, read once, or the last rayo_bvh_walk_set). */

@@ -1,8 +1,8 @@
 /*
  * bvh_wide_impl.h - the layout of the hierarchy's 4-wide copy, shared by
  * the file that makes it (bvh_wide.c) and the walks that read it
- * (bvh_wide_sse2.c, bvh_wide_avx2.c, through bvh_wide_walk.h); internal
- * to src/accel.
+ * (simd/bvh_wide_sse2.c, simd/bvh_wide_avx2.c, through
+ * simd/bvh_wide_walk.h); internal to src/accel.
  *
  * A wide node holds the boxes of up to four children as floats, the very
  * floats of the binary nodes they come from, laid out by side, axis and

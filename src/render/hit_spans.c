@@ -3,9 +3,12 @@
  * row its hits begin and end, so that only the pixels near those two ends
  * are traced.  It exists for speed (the seed job, huge frames); it is not
  * a renderer of its own and must give, bit for bit, what row.c's
- * per-pixel loop gives.  Scenes with planes or triangles, and cameras
- * outside the range below, go back to that loop.
- *
+ * per-pixel loop gives (tests/unit/t_hit_spans.c), for the reasons
+ * below.  Scenes with planes or triangles, and cameras outside the range
+ * the bounds cover, go back to that loop (hit_spans_plan.c decides, once
+ * a frame).
+ */
+/*
  * The geometry.  Pixel x of row y has direction d(x) = x a + b, with
  * a = right and b = -y up + f forward (camera.h).  With l = C - O, the
  * exact ray test asks for h(x) = l.d(x) / |d(x)| (the assignment's beta)
@@ -37,85 +40,18 @@
  * look: a wrong hint costs time, never a bit.  When the camera is within
  * a few E of a sphere's surface, or x* cannot be located, that sphere is
  * tested at every pixel of the row.
- *
- * The cost.  What a sphere's rows share (C - O, the error bounds, l.a)
- * is worked out once a frame (rayo_hit_spans_plan).  On most rows the
- * roots of the quadratic, rounded inwards, are the first and last hit,
- * and four classified pixels prove it (quick_span): a row then costs a
- * square root, two divisions and four estimates.  Rendered in bands
- * (rayo_hit_spans_render_rows, as render.c does), a row starts from the
- * span of the row before and moves each end while the same rules allow
- * (track_span): four estimates, and one more for each pixel an end
- * moves.  Only rows where rounding leaves a doubt take the walks and the
- * exact tests.
- *
- * The output.  A row goes into packed bits, or, when render.c asks for
- * runs (for the plain PBM writer: image/row_runs.h), into the runs of
- * black pixels the spans are; such a row never touches its bits unless a
- * pixel must be tested alone or the runs overflow, and then moves to its
- * bits for good (to_bits).
  */
-#include "hit_spans.h"
+#include "hit_spans_impl.h"
 
-#include <float.h>
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
-
-#include "rayo/sphere.h"
 
 #include "../image/row_runs.h"
 
-#define UNIT_ROUNDOFF (DBL_EPSILON / 2)
-/* E and T above, in units of UNIT_ROUNDOFF * (l.l + R^2). */
-#define DELTA_ERROR 512.0
-#define ESTIMATE_ERROR 512.0
-/* Bound on the rounding of D and N, in units of u |l| |a|^i |b|^j. */
-#define PEAK_ERROR 64.0
-/* Focal lengths past this (fields of view of a few microdegrees) are left
- * to the per-pixel loop, so every product below stays far from overflow. */
-#define MAX_FOCAL 1099511627776.0
-/* A sphere costs a few pixels' worth of work on every row, so past one
- * sphere per pixel column (and a handful on tiny frames) the per-pixel
- * loop, with its bounding volume hierarchy, wins. */
-#define MAX_SPHERES_ANY_WIDTH 16u
-
-/* Where a row's hits go: its runs, while they suffice, else its bits. */
-typedef struct row_target {
-    unsigned char *bits;
-    rayo_row_runs *runs; /* NULL when the row is in its bits */
-} row_target;
-
-typedef struct row_frame {
-    const rayo_camera *camera;
-    uint32_t row;
-    int64_t width;
-    double half_width;
-    double a2, ab, b2; /* a.a, a.b, b.b */
-    rayo_vec3 b;
-    row_target *target;
-} row_frame;
-
-typedef struct sphere_row {
-    const rayo_sphere *sphere;
-    double length;         /* |l| */
-    double p, q, k;        /* l.a, l.b, l.l - R^2 */
-    double surely_hit;     /* E + T */
-    double surely_missed;  /* -(E + 3T) */
-    double hit_level;      /* k + surely_hit */
-    double miss_level;     /* k + surely_missed */
-} sphere_row;
-
-/* A sphere's span on the row before, where rows are rendered in bands:
- * the first and last pixel hit, or first > last when that row had none
- * that tracking can start from. */
-typedef struct span_hint {
-    int64_t first, last;
-} span_hint;
-
 /* The tracking path below runs on almost every row: inlined whole, its
- * values stay in registers instead of going through the stack (6% fewer
- * instructions for the seed job, about 1 us). */
+ * values stay in registers instead of going through the stack
+ * (docs/performance.md, "Spans instead of
+ * pixels"). */
 #if defined(__GNUC__)
 #define TRACKING_INLINE inline __attribute__((always_inline))
 #else
@@ -127,31 +63,13 @@ typedef struct span_hint {
 /* Spans are tracked across rows in scenes of at most this many spheres. */
 #define TRACK_SPHERES 16
 
-/* What a sphere's rows share, worked out once a frame. */
-typedef enum sphere_kind {
-    SPHERE_OUTSIDE, /* seen from outside: spans */
-    SPHERE_AROUND,  /* the camera is inside: every pixel hits */
-    SPHERE_NEAR,    /* the camera is within the error bounds of its
-                       surface, or the bounds overflow: every pixel is
-                       tested */
-} sphere_kind;
-
-typedef struct sphere_frame {
-    sphere_kind kind;
-    rayo_vec3 l;     /* C - O */
-    sphere_row row;  /* all but q, which depends on the row */
-} sphere_frame;
-
-struct rayo_hit_spans {
-    const rayo_camera *camera;
-    double a2;         /* a.a */
-    double half_width; /* floor(width / 2), as a double */
-    double half_height;
-    rayo_vec3 ahead;   /* forward * focal: b = ahead - y up */
-    size_t count;
-    sphere_frame *spheres;
-};
-
+/*
+ * The output.  A row goes into packed bits, or, when render.c asks for
+ * runs (for the plain PBM writer: image/row_runs.h), into the runs of
+ * black pixels the spans are; such a row never touches its bits unless a
+ * pixel must be tested alone or the runs overflow, and then moves to its
+ * bits for good (to_bits).
+ */
 static int bit_set(const unsigned char *out, int64_t i)
 {
     return (out[i >> 3] >> (7 - (i & 7))) & 1;
@@ -380,6 +298,19 @@ static void resolve_between(const row_frame *f, const sphere_row *s,
 }
 
 /*
+ * The cost.  What a sphere's rows share (C - O, the error bounds, l.a)
+ * is worked out once a frame (rayo_hit_spans_plan).  On most rows the
+ * roots of the quadratic, rounded inwards, are the first and last hit,
+ * and four classified pixels prove it (quick_span): a row then costs a
+ * square root, two divisions and four estimates.  Rendered in bands
+ * (rayo_hit_spans_render_rows, as render.c does), a row starts from the
+ * span of the row before and moves each end while the same rules allow
+ * (track_span): four estimates, and one more for each pixel an end
+ * moves.  Only rows where rounding leaves a doubt take the walks and the
+ * exact tests.
+ */
+
+/*
  * The usual row in one try: when the hits are a bounded interval (the
  * quadratic opens downwards), its roots rounded inwards to pixels are
  * the first and last hit, provided those two pixels surely hit and their
@@ -517,36 +448,6 @@ static void trace_outside(const row_frame *f, const sphere_row *s,
     resolve_between(f, s, left, right);
 }
 
-/* A sphere's frame constants (see sphere_kind). */
-static void plan_sphere(const rayo_camera *camera, const rayo_sphere *sphere,
-                        sphere_frame *frame)
-{
-    rayo_vec3 l = rayo_vec3_sub(sphere->center, camera->origin);
-    double ll = rayo_vec3_dot(l, l), rr = sphere->radius * sphere->radius;
-    double scale = UNIT_ROUNDOFF * (ll + rr);
-    double e = DELTA_ERROR * scale, t = ESTIMATE_ERROR * scale;
-    double margin = 4.0 * (e + 3.0 * t);
-    sphere_row *s = &frame->row;
-    frame->l = l;
-    s->sphere = sphere;
-    s->length = sqrt(ll);
-    s->p = rayo_vec3_dot(l, camera->right);
-    s->q = 0.0;
-    s->k = ll - rr;
-    s->surely_hit = e + t;
-    s->surely_missed = -(e + 3.0 * t);
-    s->hit_level = s->k + s->surely_hit;
-    s->miss_level = s->k + s->surely_missed;
-    if (!isfinite(scale))
-        frame->kind = SPHERE_NEAR;
-    else if (s->k < -margin)
-        frame->kind = SPHERE_AROUND;
-    else if (s->k <= margin)
-        frame->kind = SPHERE_NEAR;
-    else
-        frame->kind = SPHERE_OUTSIDE;
-}
-
 /* Traces one sphere into the row; returns 1 when the row is now full. */
 static int trace_sphere(const row_frame *f, const sphere_frame *frame,
                         span_hint *hint)
@@ -566,51 +467,6 @@ static int trace_sphere(const row_frame *f, const sphere_frame *frame,
     s.q = rayo_vec3_dot(frame->l, f->b);
     trace_outside(f, &s, hint);
     return 0;
-}
-
-static int spans_apply(const rayo_camera *camera, const rayo_scene *scene)
-{
-    size_t spheres = rayo_scene_sphere_count(scene);
-    if (spheres != rayo_scene_object_count(scene))
-        return 0;
-    if (spheres > MAX_SPHERES_ANY_WIDTH && spheres > camera->width)
-        return 0;
-    return isfinite(camera->focal) && camera->focal <= MAX_FOCAL;
-}
-
-rayo_hit_spans *rayo_hit_spans_plan(const rayo_camera *camera,
-                                    const rayo_scene *scene)
-{
-    rayo_hit_spans *plan;
-    size_t i;
-    if (!spans_apply(camera, scene))
-        return NULL;
-    plan = malloc(sizeof *plan);
-    if (plan == NULL)
-        return NULL;
-    plan->camera = camera;
-    plan->a2 = rayo_vec3_dot(camera->right, camera->right);
-    plan->half_width = (double)(camera->width / 2);
-    plan->half_height = (double)(camera->height / 2);
-    plan->ahead = rayo_vec3_scale(camera->forward, camera->focal);
-    plan->count = rayo_scene_sphere_count(scene);
-    plan->spheres = malloc((plan->count ? plan->count : 1) *
-                           sizeof *plan->spheres);
-    if (plan->spheres == NULL) {
-        free(plan);
-        return NULL;
-    }
-    for (i = 0; i < plan->count; i++)
-        plan_sphere(camera, rayo_scene_sphere(scene, i), &plan->spheres[i]);
-    return plan;
-}
-
-void rayo_hit_spans_free(rayo_hit_spans *plan)
-{
-    if (plan == NULL)
-        return;
-    free(plan->spheres);
-    free(plan);
 }
 
 /* Row `row` into out, or into *runs when that is not NULL and the row's

@@ -19,9 +19,9 @@
  * Makes room for `wanted` elements in all in the array whose pointer is
  * at array_ptr (a T **, handled through memcpy so that no pointer is
  * accessed as another type): at least 8, and at least double the room it
- * had, so one more element at a time (GROW), or a window of a file's
- * spheres at a time (scene_reserve_spheres), costs amortised constant
- * time an element.
+ * had, so one more element at a time (GROW), or a batch of spheres at
+ * a time (rayo_scene_add_spheres), costs amortised constant time an
+ * element.
  */
 static rayo_status reserve(void *array_ptr, size_t *capacity, size_t wanted,
                            size_t elem, rayo_error *err)
@@ -143,9 +143,10 @@ rayo_status rayo_scene_add_material(rayo_scene *scene,
     return RAYO_OK;
 }
 
-/* Checks what every object add shares and makes room in `objects`. */
-static rayo_status begin_object(rayo_scene *scene, unsigned material,
-                                rayo_error *err)
+/* The checks every object add shares, for the object that would come
+ * `later` objects after the scene's last. */
+static rayo_status check_object(const rayo_scene *scene, unsigned material,
+                                size_t later, rayo_error *err)
 {
     if (material >= scene->material_count)
         return rayo_error_set(err, RAYO_ERR_INVALID,
@@ -153,11 +154,29 @@ static rayo_status begin_object(rayo_scene *scene, unsigned material,
                               "number below %lu",
                               material,
                               (unsigned long)scene->material_count);
-    if (scene->object_count >= RAYO_MAX_OBJECTS)
+    if (later >= RAYO_MAX_OBJECTS - scene->object_count)
         return rayo_error_set(err, RAYO_ERR_LIMIT,
                               "more than %lu objects in one scene",
                               RAYO_MAX_OBJECTS);
+    return RAYO_OK;
+}
+
+/* Checks what every object add shares and makes room in `objects`. */
+static rayo_status begin_object(rayo_scene *scene, unsigned material,
+                                rayo_error *err)
+{
+    rayo_status status = check_object(scene, material, 0, err);
+    if (status != RAYO_OK)
+        return status;
     return GROW(scene, object, err);
+}
+
+/* Any add drops a built hierarchy. */
+static void drop_hierarchy(rayo_scene *scene)
+{
+    rayo_bvh_free(scene->bvh);
+    scene->bvh = NULL;
+    scene->prepared = 0;
 }
 
 /* Records the object once its kind's array holds it; drops the tree. */
@@ -167,18 +186,14 @@ static void end_object(rayo_scene *scene, rayo_object_kind kind,
     scene->objects[scene->object_count].kind = (uint32_t)kind;
     scene->objects[scene->object_count].index = (uint32_t)index;
     scene->object_count++;
-    rayo_bvh_free(scene->bvh);
-    scene->bvh = NULL;
-    scene->prepared = 0;
+    drop_hierarchy(scene);
 }
 
-rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,
-                                           rayo_vec3 center, double radius,
-                                           unsigned material,
-                                           rayo_error *err)
+/* The checks of a sphere's shape, as rayo_scene_add_sphere_material
+ * makes them first. */
+static rayo_status check_sphere(rayo_vec3 center, double radius,
+                                rayo_error *err)
 {
-    rayo_status status;
-    scene_sphere *s;
     if (!rayo_vec3_is_finite(center))
         return rayo_error_set(err, RAYO_ERR_INVALID,
                               "sphere centre is not finite");
@@ -187,39 +202,76 @@ rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,
                               "sphere radius %g is not accepted; expected a "
                               "finite number > 0",
                               radius);
-    status = begin_object(scene, material, err);
+    return RAYO_OK;
+}
+
+/* Writes a sphere known good into room already made. */
+static void put_sphere(rayo_scene *scene, const rayo_sphere *shape,
+                       unsigned material)
+{
+    scene_sphere *s = &scene->spheres[scene->sphere_count];
+    scene_object *o = &scene->objects[scene->object_count];
+    s->shape = *shape;
+    s->object = (uint32_t)scene->object_count;
+    s->material = material;
+    o->kind = (uint32_t)RAYO_OBJECT_SPHERE;
+    o->index = (uint32_t)scene->sphere_count;
+    scene->sphere_count++;
+    scene->object_count++;
+}
+
+rayo_status rayo_scene_add_sphere_material(rayo_scene *scene,
+                                           rayo_vec3 center, double radius,
+                                           unsigned material,
+                                           rayo_error *err)
+{
+    rayo_sphere shape;
+    rayo_status status = check_sphere(center, radius, err);
+    if (status == RAYO_OK)
+        status = begin_object(scene, material, err);
     if (status == RAYO_OK)
         status = GROW(scene, sphere, err);
     if (status != RAYO_OK)
         return status;
-    s = &scene->spheres[scene->sphere_count];
-    s->shape.center = center;
-    s->shape.radius = radius;
-    s->object = (uint32_t)scene->object_count;
-    s->material = material;
-    end_object(scene, RAYO_OBJECT_SPHERE, scene->sphere_count++);
+    shape.center = center;
+    shape.radius = radius;
+    put_sphere(scene, &shape, material);
+    drop_hierarchy(scene);
     return RAYO_OK;
 }
 
-rayo_status scene_reserve_spheres(rayo_scene *scene, size_t more,
-                                  rayo_error *err)
+/*
+ * Every sphere is checked before any is added (the first refused, as
+ * one add at a time would refuse it: its shape, its material, then the
+ * object limit), then room is made for all, then they are written.
+ */
+rayo_status rayo_scene_add_spheres(rayo_scene *scene,
+                                   const rayo_sphere *spheres,
+                                   const unsigned *materials, size_t count,
+                                   rayo_error *err)
 {
+    size_t i;
     rayo_status status;
-    if (more > RAYO_MAX_OBJECTS - scene->object_count)
-        return rayo_error_set(err, RAYO_ERR_LIMIT,
-                              "more than %lu objects in one scene",
-                              RAYO_MAX_OBJECTS);
+    for (i = 0; i < count; i++) {
+        unsigned material = materials != NULL ? materials[i] : 0;
+        status = check_sphere(spheres[i].center, spheres[i].radius, err);
+        if (status == RAYO_OK)
+            status = check_object(scene, material, i, err);
+        if (status != RAYO_OK)
+            return status;
+    }
     status = reserve(&scene->objects, &scene->object_capacity,
-                     scene->object_count + more, sizeof *scene->objects, err);
+                     scene->object_count + count, sizeof *scene->objects, err);
     if (status == RAYO_OK)
         status = reserve(&scene->spheres, &scene->sphere_capacity,
-                         scene->sphere_count + more, sizeof *scene->spheres,
+                         scene->sphere_count + count, sizeof *scene->spheres,
                          err);
     if (status != RAYO_OK)
         return status;
-    rayo_bvh_free(scene->bvh);
-    scene->bvh = NULL;
-    scene->prepared = 0;
+    for (i = 0; i < count; i++)
+        put_sphere(scene, &spheres[i], materials != NULL ? materials[i] : 0);
+    if (count > 0)
+        drop_hierarchy(scene);
     return RAYO_OK;
 }
 

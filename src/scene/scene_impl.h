@@ -60,37 +60,6 @@ struct rayo_scene {
     rayo_bvh *bvh; /* the hierarchy, when prepared and worth one */
 };
 
-/*
- * Room for `more` spheres (and objects) after the scene's last: the next
- * `more` scene_put_sphere calls need no memory.  Drops the hierarchy, as
- * any add.  RAYO_ERR_LIMIT when the scene would have more than
- * RAYO_MAX_OBJECTS objects (nothing changed then); RAYO_ERR_NOMEM.
- * (scene.c)
- */
-rayo_status scene_reserve_spheres(rayo_scene *scene, size_t more,
-                                  rayo_error *err);
-
-/* rayo_scene_add_sphere_material for a sphere known good (a finite
- * centre, a finite radius > 0, an existing material), into room that
- * scene_reserve_spheres made: what a file's sphere lines read ahead
- * (scene_file_split.c) take. */
-static inline void scene_put_sphere(rayo_scene *scene, const double center[3],
-                                    double radius, unsigned material)
-{
-    scene_sphere *s = &scene->spheres[scene->sphere_count];
-    scene_object *o = &scene->objects[scene->object_count];
-    s->shape.center.x = center[0];
-    s->shape.center.y = center[1];
-    s->shape.center.z = center[2];
-    s->shape.radius = radius;
-    s->object = (uint32_t)scene->object_count;
-    s->material = material;
-    o->kind = (uint32_t)RAYO_OBJECT_SPHERE;
-    o->index = (uint32_t)scene->sphere_count;
-    scene->sphere_count++;
-    scene->object_count++;
-}
-
 /* Up to this many spheres and triangles, testing each beats a tree. */
 #define RAYO_SCENE_BRUTE_MAX 12
 

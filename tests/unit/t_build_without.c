@@ -32,7 +32,7 @@ int main(void)
     rayo_output *out = NULL;
     rayo_writer *writer = NULL;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     unsigned char *data = NULL;
     size_t size = 0;
     memset(&err, 0, sizeof err); /* no failure yet; English */

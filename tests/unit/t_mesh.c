@@ -146,7 +146,7 @@ static void refused_at(const stl_file *f, char *path, const char *message,
 {
     char expected[256];
     rayo_mesh mesh;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     snprintf(expected, sizeof expected, "%s: %s", path, message);
     ok(write_file(f, path), "the file written");
     is_int(rayo_mesh_read_file(path, &mesh, NULL, &err), RAYO_ERR_FORMAT,
@@ -162,7 +162,7 @@ static void test_binary_windows(void)
     char path[] = "/tmp/rayo-t-mesh.XXXXXX";
     rayo_mesh mesh;
     rayo_mesh_report report;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     int fine;
     size_t i;
     ok(write_file(&f, path), "a 150,084-byte binary STL written");

@@ -28,7 +28,7 @@ static int write_stream(rayo_output *out, unsigned char *stream,
     static const size_t sizes[] = {1, 651, 65535, 65536, 65537, 3, 200000,
                                    7, 4096};
     size_t at = 0, k = 0;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     while (at < total) {
         size_t n = sizes[k % (sizeof sizes / sizeof sizes[0])];
         rayo_status s;
@@ -64,7 +64,7 @@ int main(void)
     unsigned char sentinel = 0;
     size_t size = 0, i, wrong = 0;
     rayo_output *out = NULL;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     rayo_status s;
     if (stream == NULL)
         return 1;

@@ -19,7 +19,7 @@ int main(void)
     rayo_read_options o;
     rayo_read_report rp;
     rayo_image image;
-    rayo_error err;
+    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
     memset(&o, 0, sizeof o);
     memset(&err, 0, sizeof err); /* no failure yet; English */
     is_int(rayo_image_read_memory(text, sizeof text - 1, "t.pgm", &image,

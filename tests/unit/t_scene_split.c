@@ -17,8 +17,9 @@
  * loaded (1 MiB windows of whole lines, scene_file_load.c) on 1, 2, 3 and
  * 7 threads: the same scene, the same error.  A text of many windows
  * gets errors either side of the cuts, lines across them and a line
- * longer than a window.  And the room a window's spheres go into is
- * refused past the object limit.
+ * longer than a window.  And the batches the spheres read ahead are
+ * added in (rayo_scene_add_spheres) give the bytes that one add at a
+ * time gives, and are refused whole, with one add's message.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -30,9 +31,9 @@
 #include "rayo.h"
 #include "tap.h"
 
-#include "../../src/scene/scene_file_impl.h"
-#include "../../src/scene/scene_file_split.h"
 #include "../../src/scene/scene_impl.h"
+#include "../../src/scenefile/scene_file_impl.h"
+#include "../../src/scenefile/scene_file_split.h"
 
 typedef struct text {
     char *data;
@@ -266,30 +267,98 @@ static void check_error(const char *name, const text *t)
     }
 }
 
-/* The room a window's spheres are put into (scene_reserve_spheres):
- * refused past the object limit, with nothing changed, so the parser
- * reads the lines itself and says which one passes it. */
-static void check_reserve(void)
+/* A few spheres and their materials for check_add_spheres. */
+#define BATCH 5
+static const rayo_sphere batch[BATCH] = {
+    {{1, 2, 3}, 0.5}, {{-1, 0.25, 7}, 2}, {{0, 0, 0}, 1e-3},
+    {{1e6, -3, 2}, 40}, {{0.1, 0.2, 0.3}, 0.4}};
+static const unsigned batch_materials[BATCH] = {1, 0, 2, 2, 1};
+
+/* A scene with materials 1 and 2 and a plane (object 0). */
+static rayo_scene *batch_scene(void)
 {
     rayo_scene *scene;
     rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
-    rayo_status s;
-    size_t count, capacity;
-    if (rayo_scene_create(&scene, &err) != RAYO_OK) {
-        ok(0, "a scene is made");
-        return;
-    }
-    s = scene_reserve_spheres(scene, 1000, &err);
-    ok(s == RAYO_OK && scene->sphere_capacity >= 1000 &&
-           scene->object_capacity >= 1000 && scene->sphere_count == 0,
-       "room for 1000 spheres, none added");
-    count = scene->object_count;
-    capacity = scene->object_capacity;
-    s = scene_reserve_spheres(scene, RAYO_MAX_OBJECTS + 1, &err);
-    ok(s == RAYO_ERR_LIMIT && scene->object_count == count &&
-           scene->object_capacity == capacity,
-       "room past the object limit: refused, nothing changed");
-    rayo_scene_free(scene);
+    rayo_material m = {{0.5, 0.5, 0.5}, 1, 1, 0, 0, 0};
+    unsigned id;
+    if (rayo_scene_create(&scene, &err) != RAYO_OK ||
+        rayo_scene_add_material(scene, &m, &id, &err) != RAYO_OK ||
+        rayo_scene_add_material(scene, &m, &id, &err) != RAYO_OK ||
+        rayo_scene_add_plane(scene, rayo_vec3_make(0, -1, 0),
+                             rayo_vec3_make(0, 1, 0), 0, &err) != RAYO_OK)
+        abort();
+    return scene;
+}
+
+/* The spheres added in batches (rayo_scene_add_spheres, which the
+ * reader uses) give the bytes one add at a time gives; a batch with one
+ * sphere refused is refused whole, with the message one add gives it. */
+static void check_add_spheres(void)
+{
+    rayo_scene *one = batch_scene(), *all = batch_scene();
+    rayo_error e1 = RAYO_ERROR_INIT(RAYO_LANG_EN), e2 = RAYO_ERROR_INIT(RAYO_LANG_EN);
+    rayo_sphere bad[BATCH];
+    rayo_status s1, s2;
+    unsigned materials[BATCH];
+    size_t i, count, capacity;
+    for (i = 0; i < BATCH; i++)
+        rayo_scene_add_sphere_material(one, batch[i].center, batch[i].radius,
+                                       batch_materials[i], &e1);
+    for (i = 0; i < BATCH; i++)
+        rayo_scene_add_sphere(one, batch[i].center, batch[i].radius, &e1);
+    s1 = rayo_scene_add_spheres(all, batch, batch_materials, BATCH, &e2);
+    s2 = rayo_scene_add_spheres(all, batch, NULL, BATCH, &e2);
+    ok(s1 == RAYO_OK && s2 == RAYO_OK && one->object_count == 11 &&
+           all->object_count == 11 && all->sphere_count == 10 &&
+           memcmp(one->objects, all->objects,
+                  11 * sizeof *one->objects) == 0 &&
+           memcmp(one->spheres, all->spheres,
+                  10 * sizeof *one->spheres) == 0 &&
+           all->spheres[0].object == 1 && all->spheres[0].material == 1 &&
+           all->spheres[9].object == 10 && all->spheres[9].material == 0 &&
+           all->objects[10].kind == RAYO_OBJECT_SPHERE &&
+           all->objects[10].index == 9,
+       "two batches of spheres: the bytes of ten adds, in order");
+    ok(rayo_scene_add_spheres(all, batch, NULL, 0, &e2) == RAYO_OK &&
+           all->object_count == 11,
+       "an empty batch adds nothing");
+
+    memcpy(bad, batch, sizeof bad);
+    bad[3].radius = -2;
+    bad[4].center.x = 1.0 / 0.0;
+    count = all->object_count;
+    s1 = rayo_scene_add_sphere(one, bad[3].center, bad[3].radius, &e1);
+    s2 = rayo_scene_add_spheres(all, bad, NULL, BATCH, &e2);
+    ok(s1 == RAYO_ERR_INVALID && s2 == s1 &&
+           strcmp(e1.message, e2.message) == 0 &&
+           strcmp(e2.message, "sphere radius -2 is not accepted; expected "
+                              "a finite number > 0") == 0 &&
+           all->object_count == count && all->sphere_count == 10,
+       "a batch with a bad radius: refused whole, with its message");
+    memcpy(materials, batch_materials, sizeof materials);
+    materials[1] = 3;
+    s1 = rayo_scene_add_sphere_material(one, batch[1].center,
+                                        batch[1].radius, 3, &e1);
+    s2 = rayo_scene_add_spheres(all, batch, materials, BATCH, &e2);
+    ok(s1 == RAYO_ERR_INVALID && s2 == s1 &&
+           strcmp(e1.message, e2.message) == 0 &&
+           all->object_count == count,
+       "a batch with an unknown material: refused whole (%.60s)",
+       e2.message);
+
+    /* The object limit, without the memory: the count is set just
+     * below it (the arrays are not touched, as nothing is added). */
+    capacity = all->object_capacity;
+    all->object_count = RAYO_MAX_OBJECTS - 2;
+    s2 = rayo_scene_add_spheres(all, batch, NULL, 3, &e2);
+    ok(s2 == RAYO_ERR_LIMIT &&
+           all->object_count == RAYO_MAX_OBJECTS - 2 &&
+           all->object_capacity == capacity && all->sphere_count == 10,
+       "a batch past the object limit: refused, nothing changed (%.60s)",
+       e2.message);
+    all->object_count = count;
+    rayo_scene_free(one);
+    rayo_scene_free(all);
 }
 
 int main(void)
@@ -315,7 +384,7 @@ int main(void)
 
     if (mkdtemp(folder) == NULL || chdir(folder) != 0)
         abort();
-    check_reserve();
+    check_add_spheres();
 
     ok(t.length > SCENE_SPLIT_MIN_BYTES, "the text is over the threshold");
     check_same("mixed scene", &t);

@@ -3,16 +3,14 @@
  * loader (scene_file_load.c) and for texts in memory (scene_file.c).
  * Private to the library.
  *
- * Why windows: a page of memory costs about 2 us the first time it is
- * touched on the machines we measure, and a 100,000-sphere file is 10 MB
- * of text and, read on several threads, 6 MB of records
- * (scene_file_split.h).  Read a window at a time into one buffer, with
- * the records' arrays kept from window to window, the file costs 1 MiB of
- * each instead.  The parser keeps its state (the material names, the
- * line numbers, the statements seen once) between windows, so the scene
- * and the first error are those of the whole text read at once.
- *
- * And the hierarchy is built after the text is freed
+ * Why windows: a page of memory costs a good deal the first time it is
+ * touched (docs/performance.md, "Setup"), and a large file's text and
+ * records would be many pages.  Read a window at a time into one
+ * buffer, with the records' arrays kept from window to window, the file
+ * costs 1 MiB of each instead.  The parser keeps its state (the material
+ * names, the line numbers, the statements seen once) between windows, so
+ * the scene and the first error are those of the whole text read at
+ * once.  The hierarchy is built after the text is freed
  * (scene_file_read_text, then scene_file_prepare), so its arrays can
  * take the text's memory.
  */

@@ -18,8 +18,8 @@
  * so each ray's answer is what the single-ray walk gives, and which ray
  * shares a packet with which changes the work, never an answer.
  */
-#include "bvh_packet.h"
-#include "bvh_wide_impl.h"
+#include "../bvh_packet.h"
+#include "../bvh_wide_impl.h"
 #include "bvh_wide_isa.h"
 
 #if defined(__x86_64__) && defined(__GNUC__)

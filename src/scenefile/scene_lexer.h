@@ -56,7 +56,7 @@ size_t scene_lexer_column(scene_lexer *lx);
 int scene_word_is(const scene_word *word, const char *keyword);
 
 /* FNV-1a over a word's bytes: the hash the material names' tables use
- * (scene_file.c, scene_file_split.c). */
+ * (scene_file_objects.c, scene_file_split.c). */
 size_t scene_word_hash(const char *text, size_t length);
 
 /*

@@ -7,7 +7,7 @@
  * Why the scene is the same: a record carries values only for a sphere
  * line that the parser would accept as it stands, read with the same
  * lexer (scene_lexer.c) and number reader (core/decimal.c) and checked
- * by the same rules as parse_sphere (each number finite and within
+ * by the same rules as scene_parse_sphere (each number finite and within
  * RAYO_SCENE_MAX_NUMBER, the radius > 0, then nothing, or 'material' and
  * one more word and nothing); the material's name is looked up (once a
  * part: a name found defined stays so), and the sphere added, by the
@@ -126,7 +126,7 @@ static uint32_t part_name(split_part *part, const scene_word *word)
     return (uint32_t)(part->name_count - 1);
 }
 
-/* One number as read_number in scene_file.c accepts it. */
+/* One number as read_number in scene_file_values.c accepts it. */
 static int clean_number(scene_lexer *lx, double *value)
 {
     scene_word word;
@@ -135,7 +135,7 @@ static int clean_number(scene_lexer *lx, double *value)
            fabs(*value) <= RAYO_SCENE_MAX_NUMBER;
 }
 
-/* The rest of a sphere line (after 'sphere') into l, if parse_sphere
+/* The rest of a sphere line (after 'sphere') into l, if scene_parse_sphere
  * would take it as it stands (its material's name then in the part's
  * names); 0 otherwise. */
 static int clean_sphere(scene_lexer *lx, split_part *part, split_line *l)

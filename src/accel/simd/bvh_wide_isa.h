@@ -7,7 +7,7 @@
 #ifndef RAYO_ACCEL_BVH_WIDE_ISA_H
 #define RAYO_ACCEL_BVH_WIDE_ISA_H
 
-#include "bvh_wide_impl.h"
+#include "../bvh_wide_impl.h"
 
 /* 1 when this build has the SSE2 walk (x86-64). */
 int bvh_wide_sse2_built(void);

@@ -78,7 +78,8 @@ void WIDE_NEAREST(const struct bvh_wide *wide, const rayo_ray *ray,
             if (mask != 0) {
                 /* the nearest child next, the others stacked farthest
                  * first when there are two of them */
-                unsigned k = (unsigned)__builtin_ctz(mask), m = mask & (mask - 1);
+                unsigned k = (unsigned)__builtin_ctz(mask);
+                unsigned m = mask & (mask - 1);
                 if (m == 0) {
                     child = n->child[k];
                     count = n->count[k];
