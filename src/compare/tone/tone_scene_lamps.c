@@ -3,7 +3,8 @@
  * seems to be, read from the channel it lights in a student's image.
  * Each of scene 3's point lights is the only one of its colour, so on
  * the pixels of a sphere whose M and kd let that channel through, what
- * is left of the value once Ia ka and the other lights (the map's L.N
+ * is left of the value (away from the clamp at 255, which noise may
+ * pull a level or two below) once Ia ka and the other lights (the map's L.N
  * and shadows) are taken off is Ii kd (L.N), L towards the light.  With
  * d = |P - X| held, P.N = X.N + d (L.N) is linear in the light's place
  * P: the fit is that, refitted a few times from the statement's place.
@@ -42,7 +43,7 @@ static int lamp_term(const scene_work *w, size_t p, size_t lamp, unsigned c,
     int b = m->ball[p];
     double v = w->image->v[p * w->n + c], rest;
     size_t l;
-    if (!m->core[p] || b < 0 || w->gone[b] || v >= 255)
+    if (!m->core[p] || b < 0 || w->gone[b] || v + w->levels + 1 >= 255)
         return 0;
     ball = &w->data->balls[b];
     if (ball->color[c] != 1 || ball->kd < LAMP_KD)
