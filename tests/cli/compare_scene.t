@@ -11,7 +11,9 @@
 # lie instead of a first pixel.  A sphere's radius changed is named by
 # its size, the light's direction changed by where it seems to come
 # from (worked out here from the statement's geometry and the program's
-# own vector).
+# own vector); EJ3's point light placed elsewhere by where it seems to
+# be (the program's own place), also through a little noise, and not
+# named in a right image with noise.
 . "$(dirname "$0")/lib.sh"
 
 STUDENTS="$RAYO_SOURCE/tests/grade"
@@ -41,7 +43,8 @@ row() { awk -v y="$1" -v z="$2" 'BEGIN { printf "%.1f", 240 - 320 * y / z }'; }
 for p in ej2_correct ej2_ambient_20 ej2_seventh_sphere ej2_background_ambient \
          ej2_shadow_zero ej2_missing_sphere ej2_last_sphere ej3_background_ambient \
          ej3_sphere_moved ej3_ambient_doubled correct pi_course \
-         ej2_big_sphere ej2_small_sphere ej2_light_moved; do
+         ej2_big_sphere ej2_small_sphere ej2_light_moved ej3_light_moved \
+         ej3_correct; do
     student "$p"
     ok $? "$p compiles and runs"
 done
@@ -189,6 +192,40 @@ ok $? "  the blue sphere, (1.73, -0.6, 2), where it appears: $(column 1.73 2), $
 within "$(json '.diagnosis.findings[0].to.x')" "$(column 1.73 2)" 8 &&
     within "$(json '.diagnosis.findings[0].to.y')" "$(row 0.3 2)" 8
 ok $? "  found near where (1.73, 0.3, 2) appears: $(json '.diagnosis.findings[0].to.x'), $(json '.diagnosis.findings[0].to.y')"
+
+scene ej3_light_moved "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/lamp-position" "the green light's x lost its sign: the light's place"
+is "$(json '.diagnosis.findings[0].lamp')" 2 "  the third of the statement's lights, the green one"
+place=$(sed -n 's/.*luz_crear((vector_t){\([^}]*\)}, (color_t){0, .9, 0}, true).*/\1/p' "$STUDENTS/ej3_light_moved/main.c")
+for c in 0 1 2; do
+    want=$(echo "$place" | cut -d, -f$((c + 1)))
+    within "$(json ".diagnosis.findings[0].value[$c]")" "$want" 0.02
+    ok $? "  P[$c] $(json ".diagnosis.findings[0].value[$c]"), the program's $want"
+done
+is "$(json '.diagnosis.findings[0].expected | map(tostring) | join(",")')" "2,10,2.5" \
+    "  against the statement's (2, 10, 2.5)"
+json .diagnosis.text | grep -q "^the point light at (2, 10, 2.5) in the statement seems to be at about (-2.0, 10.0, 2.5) in the image: C = Ia ka + Ii kd (L.N) fits [0-9]* of the [0-9]* pixels it lights"
+ok $? "  said as where the light is"
+
+# noise: every sample moved by up to A levels (a fixed seed), plain PPM
+noisy() {
+    pnmtoplainpnm "$TMP/$1.out" | awk -v a="$2" 'BEGIN { srand(7) }
+        NR <= 3 { print; next }
+        { for (i = 1; i <= NF; i++) { v = $i + int(rand() * (2 * a + 1)) - a;
+              if (v < 0) v = 0; if (v > 255) v = 255; printf "%d ", v }
+          print "" }' >"$TMP/$1_$2.out"
+}
+noisy ej3_light_moved 1
+scene ej3_light_moved_1 "$C3"
+is "$(json '[.diagnosis.findings[].kind] | join(",")')/$(json '.diagnosis.findings[0].value | map(. * 10 | round / 10) | map(tostring) | join(",")')" \
+    "lamp-position/-2,10,2.5" "  through noise of a level: the same place"
+for a in 2 4; do
+    noisy ej3_correct $a
+    scene "ej3_correct_$a" "$C3"
+    json '[.diagnosis.findings[]?.kind] | index("lamp-position")' | grep -qx null
+    ok $? "a right EJ3 image with noise of $a levels: no light named ($(json .diagnosis.kind))"
+done
 
 # --- nothing fits: where the differences lie -------------------------------
 scene ej2_last_sphere "$TMP/r2.pgm"
