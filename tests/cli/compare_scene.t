@@ -13,7 +13,8 @@
 # from (worked out here from the statement's geometry and the program's
 # own vector); EJ3's point light placed elsewhere by where it seems to
 # be (the program's own place), also through a little noise, and not
-# named in a right image with noise.
+# named in a right image with noise; a sphere whose centre another
+# hides, named by its size from the part of it that shows.
 . "$(dirname "$0")/lib.sh"
 
 STUDENTS="$RAYO_SOURCE/tests/grade"
@@ -44,7 +45,7 @@ for p in ej2_correct ej2_ambient_20 ej2_seventh_sphere ej2_background_ambient \
          ej2_shadow_zero ej2_missing_sphere ej2_last_sphere ej3_background_ambient \
          ej3_sphere_moved ej3_ambient_doubled correct pi_course \
          ej2_big_sphere ej2_small_sphere ej2_light_moved ej3_light_moved \
-         ej3_correct; do
+         ej3_correct ej3_hidden_sphere_bigger; do
     student "$p"
     ok $? "$p compiles and runs"
 done
@@ -226,6 +227,21 @@ for a in 2 4; do
     json '[.diagnosis.findings[]?.kind] | index("lamp-position")' | grep -qx null
     ok $? "a right EJ3 image with noise of $a levels: no light named ($(json .diagnosis.kind))"
 done
+
+# The blue sphere's centre is behind the cyan one (1, -0.6, 1.26): only
+# its outer crescent shows, and that is what its size is read from.
+scene ej3_hidden_sphere_bigger "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/size" "a hidden-centred sphere's radius 0.4 for 0.3: its size, not partly drawn"
+is "$(json '.diagnosis.findings[0].ball')" 7 "  the blue sphere, the eighth of the statement's array"
+want=$(ratio "$(span 0.4 1.73 -0.6 2)" "$(span 0.3 1.73 -0.6 2)")
+got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
+within "$got" "$want" 0.05
+ok $? "  drawn $got times the scene's size, about $want (0.4 for 0.3 at its distance)"
+within "$(json '.diagnosis.findings[0].radius')" 0.4 0.02
+ok $? "  radius $(json '.diagnosis.findings[0].radius'), about 0.4"
+json .diagnosis.text | grep -q "^the sphere at about (597, 336) px, centre (1.73, -0.6, 2) and radius 0.3 in the statement, is drawn with a radius of about 0.4[0-9]* ([0-9]* px instead of [0-9]*): check its radius$"
+ok $? "  said in the statement's terms"
 
 # --- nothing fits: where the differences lie -------------------------------
 scene ej2_last_sphere "$TMP/r2.pgm"
