@@ -115,17 +115,22 @@ ok $? "  said against the model: I is never below IA"
 # its picture's size goes as the tangent of that.
 span() { awk -v r="$1" -v x="$2" -v y="$3" -v z="$4" 'BEGIN { d = sqrt(x*x + y*y + z*z); a = atan2(r / d, sqrt(1 - (r / d)^2)); printf "%.4f", sin(a) / cos(a) }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.4f", a / b }'; }
+# sized R STATED X Y Z: the first finding's sphere drawn R / STATED
+# times as large as the scene's (at its distance), radius R
+sized() {
+    want=$(ratio "$(span "$1" "$3" "$4" "$5")" "$(span "$2" "$3" "$4" "$5")")
+    got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
+    within "$got" "$want" 0.05
+    ok $? "  drawn $got times the scene's size, about $want ($1 for $2 at its distance)"
+    within "$(json '.diagnosis.findings[0].radius')" "$1" 0.02
+    ok $? "  radius $(json '.diagnosis.findings[0].radius') in the statement's units, about $1"
+}
 
 scene ej2_big_sphere "$C2"
 is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
     "scene/size" "a radius 0.6 for 0.4: the sphere's size, nothing added"
 is "$(json '.diagnosis.findings[0].ball')" 4 "  the fifth of the statement's array"
-want=$(ratio "$(span 0.6 3 -1.5 4)" "$(span 0.4 3 -1.5 4)")
-got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
-within "$got" "$want" 0.05
-ok $? "  drawn $got times the scene's size, about $want (0.6 for 0.4 at its distance)"
-within "$(json '.diagnosis.findings[0].radius')" 0.6 0.02
-ok $? "  radius $(json '.diagnosis.findings[0].radius') in the statement's units, about 0.6"
+sized 0.6 0.4 3 -1.5 4
 json .diagnosis.text | grep -q "^the sphere at about (560, 360) px, centre (3, -1.5, 4) and radius 0.4 in the statement, is drawn with a radius of about 0.6[0-9]* ([0-9]* px instead of [0-9]*): check its radius$"
 ok $? "  said in the statement's terms"
 
@@ -133,12 +138,7 @@ scene ej2_small_sphere "$C2"
 is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
     "scene/size" "a radius 0.6 for 0.85: the sphere's size, not partly drawn"
 is "$(json '.diagnosis.findings[0].ball')" 1 "  the second of the statement's array"
-want=$(ratio "$(span 0.6 -0.55 -0.4 2)" "$(span 0.85 -0.55 -0.4 2)")
-got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
-within "$got" "$want" 0.05
-ok $? "  drawn $got times the scene's size, about $want"
-within "$(json '.diagnosis.findings[0].radius')" 0.6 0.02
-ok $? "  radius $(json '.diagnosis.findings[0].radius'), about 0.6"
+sized 0.6 0.85 -0.55 -0.4 2
 json .diagnosis.text | grep -q "^the sphere at about (232, 304) px, centre (-0.55, -0.4, 2) and radius 0.85 in the statement, is drawn with a radius of about 0.[56][0-9]* ([0-9]* px instead of [0-9]*)"
 ok $? "  said in the statement's terms"
 
@@ -234,12 +234,7 @@ scene ej3_hidden_sphere_bigger "$C3"
 is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
     "scene/size" "a hidden-centred sphere's radius 0.4 for 0.3: its size, not partly drawn"
 is "$(json '.diagnosis.findings[0].ball')" 7 "  the blue sphere, the eighth of the statement's array"
-want=$(ratio "$(span 0.4 1.73 -0.6 2)" "$(span 0.3 1.73 -0.6 2)")
-got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
-within "$got" "$want" 0.05
-ok $? "  drawn $got times the scene's size, about $want (0.4 for 0.3 at its distance)"
-within "$(json '.diagnosis.findings[0].radius')" 0.4 0.02
-ok $? "  radius $(json '.diagnosis.findings[0].radius'), about 0.4"
+sized 0.4 0.3 1.73 -0.6 2
 json .diagnosis.text | grep -q "^the sphere at about (597, 336) px, centre (1.73, -0.6, 2) and radius 0.3 in the statement, is drawn with a radius of about 0.4[0-9]* ([0-9]* px instead of [0-9]*): check its radius$"
 ok $? "  said in the statement's terms"
 
