@@ -189,9 +189,13 @@ typedef enum rayo_compare_finding_kind {
                                 radius seen (px), expected[0] the
                                 scene's (px), value[1] the radius in
                                 the statement's units it fits */
-    RAYO_FINDING_LIGHT_DIRECTION /* EJ2: value the direction the
+    RAYO_FINDING_LIGHT_DIRECTION, /* EJ2: value the direction the
                                 shading fits (unit), expected the
                                 statement's; pixels of total fitted */
+    RAYO_FINDING_LAMP_POSITION /* EJ3: box[0] the point light (0 first),
+                                value the place its channel fits,
+                                expected the statement's; pixels of
+                                total fitted */
 } rayo_compare_finding_kind;
 
 #define RAYO_COMPARE_FINDINGS 6

@@ -11,7 +11,10 @@
 # lie instead of a first pixel.  A sphere's radius changed is named by
 # its size, the light's direction changed by where it seems to come
 # from (worked out here from the statement's geometry and the program's
-# own vector).
+# own vector); EJ3's point light placed elsewhere by where it seems to
+# be (the program's own place), also through a little noise, and not
+# named in a right image with noise; a sphere whose centre another
+# hides, named by its size from the part of it that shows.
 . "$(dirname "$0")/lib.sh"
 
 STUDENTS="$RAYO_SOURCE/tests/grade"
@@ -41,7 +44,8 @@ row() { awk -v y="$1" -v z="$2" 'BEGIN { printf "%.1f", 240 - 320 * y / z }'; }
 for p in ej2_correct ej2_ambient_20 ej2_seventh_sphere ej2_background_ambient \
          ej2_shadow_zero ej2_missing_sphere ej2_last_sphere ej3_background_ambient \
          ej3_sphere_moved ej3_ambient_doubled correct pi_course \
-         ej2_big_sphere ej2_small_sphere ej2_light_moved; do
+         ej2_big_sphere ej2_small_sphere ej2_light_moved ej3_light_moved \
+         ej3_correct ej3_hidden_sphere_bigger; do
     student "$p"
     ok $? "$p compiles and runs"
 done
@@ -111,17 +115,22 @@ ok $? "  said against the model: I is never below IA"
 # its picture's size goes as the tangent of that.
 span() { awk -v r="$1" -v x="$2" -v y="$3" -v z="$4" 'BEGIN { d = sqrt(x*x + y*y + z*z); a = atan2(r / d, sqrt(1 - (r / d)^2)); printf "%.4f", sin(a) / cos(a) }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.4f", a / b }'; }
+# sized R STATED X Y Z: the first finding's sphere drawn R / STATED
+# times as large as the scene's (at its distance), radius R
+sized() {
+    want=$(ratio "$(span "$1" "$3" "$4" "$5")" "$(span "$2" "$3" "$4" "$5")")
+    got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
+    within "$got" "$want" 0.05
+    ok $? "  drawn $got times the scene's size, about $want ($1 for $2 at its distance)"
+    within "$(json '.diagnosis.findings[0].radius')" "$1" 0.02
+    ok $? "  radius $(json '.diagnosis.findings[0].radius') in the statement's units, about $1"
+}
 
 scene ej2_big_sphere "$C2"
 is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
     "scene/size" "a radius 0.6 for 0.4: the sphere's size, nothing added"
 is "$(json '.diagnosis.findings[0].ball')" 4 "  the fifth of the statement's array"
-want=$(ratio "$(span 0.6 3 -1.5 4)" "$(span 0.4 3 -1.5 4)")
-got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
-within "$got" "$want" 0.05
-ok $? "  drawn $got times the scene's size, about $want (0.6 for 0.4 at its distance)"
-within "$(json '.diagnosis.findings[0].radius')" 0.6 0.02
-ok $? "  radius $(json '.diagnosis.findings[0].radius') in the statement's units, about 0.6"
+sized 0.6 0.4 3 -1.5 4
 json .diagnosis.text | grep -q "^the sphere at about (560, 360) px, centre (3, -1.5, 4) and radius 0.4 in the statement, is drawn with a radius of about 0.6[0-9]* ([0-9]* px instead of [0-9]*): check its radius$"
 ok $? "  said in the statement's terms"
 
@@ -129,12 +138,7 @@ scene ej2_small_sphere "$C2"
 is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
     "scene/size" "a radius 0.6 for 0.85: the sphere's size, not partly drawn"
 is "$(json '.diagnosis.findings[0].ball')" 1 "  the second of the statement's array"
-want=$(ratio "$(span 0.6 -0.55 -0.4 2)" "$(span 0.85 -0.55 -0.4 2)")
-got=$(ratio "$(json '.diagnosis.findings[0].radius_px')" "$(json '.diagnosis.findings[0].expected_px')")
-within "$got" "$want" 0.05
-ok $? "  drawn $got times the scene's size, about $want"
-within "$(json '.diagnosis.findings[0].radius')" 0.6 0.02
-ok $? "  radius $(json '.diagnosis.findings[0].radius'), about 0.6"
+sized 0.6 0.85 -0.55 -0.4 2
 json .diagnosis.text | grep -q "^the sphere at about (232, 304) px, centre (-0.55, -0.4, 2) and radius 0.85 in the statement, is drawn with a radius of about 0.[56][0-9]* ([0-9]* px instead of [0-9]*)"
 ok $? "  said in the statement's terms"
 
@@ -189,6 +193,50 @@ ok $? "  the blue sphere, (1.73, -0.6, 2), where it appears: $(column 1.73 2), $
 within "$(json '.diagnosis.findings[0].to.x')" "$(column 1.73 2)" 8 &&
     within "$(json '.diagnosis.findings[0].to.y')" "$(row 0.3 2)" 8
 ok $? "  found near where (1.73, 0.3, 2) appears: $(json '.diagnosis.findings[0].to.x'), $(json '.diagnosis.findings[0].to.y')"
+
+scene ej3_light_moved "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/lamp-position" "the green light's x lost its sign: the light's place"
+is "$(json '.diagnosis.findings[0].lamp')" 2 "  the third of the statement's lights, the green one"
+place=$(sed -n 's/.*luz_crear((vector_t){\([^}]*\)}, (color_t){0, .9, 0}, true).*/\1/p' "$STUDENTS/ej3_light_moved/main.c")
+for c in 0 1 2; do
+    want=$(echo "$place" | cut -d, -f$((c + 1)))
+    within "$(json ".diagnosis.findings[0].value[$c]")" "$want" 0.02
+    ok $? "  P[$c] $(json ".diagnosis.findings[0].value[$c]"), the program's $want"
+done
+is "$(json '.diagnosis.findings[0].expected | map(tostring) | join(",")')" "2,10,2.5" \
+    "  against the statement's (2, 10, 2.5)"
+json .diagnosis.text | grep -q "^the point light at (2, 10, 2.5) in the statement seems to be at about (-2.0, 10.0, 2.5) in the image: C = Ia ka + Ii kd (L.N) fits [0-9]* of the [0-9]* pixels it lights"
+ok $? "  said as where the light is"
+
+# noise: every sample moved by up to A levels (a fixed seed), plain PPM
+noisy() {
+    pnmtoplainpnm "$TMP/$1.out" | awk -v a="$2" 'BEGIN { srand(7) }
+        NR <= 3 { print; next }
+        { for (i = 1; i <= NF; i++) { v = $i + int(rand() * (2 * a + 1)) - a;
+              if (v < 0) v = 0; if (v > 255) v = 255; printf "%d ", v }
+          print "" }' >"$TMP/$1_$2.out"
+}
+noisy ej3_light_moved 1
+scene ej3_light_moved_1 "$C3"
+is "$(json '[.diagnosis.findings[].kind] | join(",")')/$(json '.diagnosis.findings[0].value | map(. * 10 | round / 10) | map(tostring) | join(",")')" \
+    "lamp-position/-2,10,2.5" "  through noise of a level: the same place"
+for a in 2 4; do
+    noisy ej3_correct $a
+    scene "ej3_correct_$a" "$C3"
+    json '[.diagnosis.findings[]?.kind] | index("lamp-position")' | grep -qx null
+    ok $? "a right EJ3 image with noise of $a levels: no light named ($(json .diagnosis.kind))"
+done
+
+# The blue sphere's centre is behind the cyan one (1, -0.6, 1.26): only
+# its outer crescent shows, and that is what its size is read from.
+scene ej3_hidden_sphere_bigger "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/size" "a hidden-centred sphere's radius 0.4 for 0.3: its size, not partly drawn"
+is "$(json '.diagnosis.findings[0].ball')" 7 "  the blue sphere, the eighth of the statement's array"
+sized 0.4 0.3 1.73 -0.6 2
+json .diagnosis.text | grep -q "^the sphere at about (597, 336) px, centre (1.73, -0.6, 2) and radius 0.3 in the statement, is drawn with a radius of about 0.4[0-9]* ([0-9]* px instead of [0-9]*): check its radius$"
+ok $? "  said in the statement's terms"
 
 # --- nothing fits: where the differences lie -------------------------------
 scene ej2_last_sphere "$TMP/r2.pgm"

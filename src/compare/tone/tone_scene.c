@@ -2,7 +2,8 @@
  * tone_scene.c - what an image differs from one of the course's scenes
  * in, when no single mistake explains it: the background, a sphere
  * added, missing, moved, partly drawn or drawn another size, the
- * ambient term, the light's intensity or direction, values below the
+ * ambient term, the light's intensity or direction (EJ3: a point
+ * light's place, tone_scene_lamps.c), values below the
  * ambient term.
  *
  * The scene's map (course_map.c: the sphere each pixel shows, each
@@ -412,6 +413,8 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     find_ambient(&w);
     if (w.gray && !tone_scene_light_direction(&w))
         find_light(&w);
+    if (!w.gray)
+        tone_scene_lamp_position(&w);
     find_below(&w);
     *named = r->tone.findings > 0;
     if (!*named)

@@ -69,6 +69,17 @@ void tone_scene_ball_at(const scene_work *w, int b, rayo_compare_finding *f);
 void tone_scene_sizes(const scene_work *w, double *scene, double *seen,
                       int *off);
 
+/* tone_scene_light.c: the point at (NULL: not wanted) and the normal n
+   pixel (i, j) shows of sphere b (0 when its ray misses it), and the
+   3x3 system a x = y (Cramer; 0 when singular). */
+int tone_scene_surface(const scene_work *w, int b, uint32_t i, uint32_t j,
+                       double *at, double *n);
+int tone_scene_solve3(double a[3][3], const double *y, double *x);
+
+/* tone_scene_lamps.c (the colour model): a point light placed
+   elsewhere, read from the channel it alone lights; 1 when named. */
+int tone_scene_lamp_position(scene_work *w);
+
 /* tone_scene_light.c (the gray model): the light's direction the shading fits,
    named when it explains the lit pixels much better than the
    statement's; 1 when named. */

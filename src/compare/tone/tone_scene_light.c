@@ -25,9 +25,8 @@
 #define FIT_COS 0.998
 #define FIT_UNIT 0.1
 
-/* The normal at the point pixel (i, j) shows of sphere b. */
-static int normal_at(const scene_work *w, int b, uint32_t i, uint32_t j,
-                     double *n)
+int tone_scene_surface(const scene_work *w, int b, uint32_t i, uint32_t j,
+                       double *at, double *n)
 {
     const rayo_course_ball *ball = &w->data->balls[b];
     double d[3], len, dc = 0, cc = 0, disc, t;
@@ -45,13 +44,15 @@ static int normal_at(const scene_work *w, int b, uint32_t i, uint32_t j,
     if (disc < 0)
         return 0;
     t = dc - sqrt(disc);
-    for (k = 0; k < 3; k++)
+    for (k = 0; k < 3; k++) {
         n[k] = (t * d[k] - ball->center[k]) / ball->radius;
+        if (at != NULL)
+            at[k] = t * d[k];
+    }
     return 1;
 }
 
-/* The 3x3 system a x = y (Cramer); 0 when singular. */
-static int solve3(double a[3][3], const double *y, double *x)
+int tone_scene_solve3(double a[3][3], const double *y, double *x)
 {
     double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
                  a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
@@ -85,8 +86,8 @@ static int fit_pixel(const scene_work *w, size_t p, double ia, double *n)
     if (!m->core[p] || b < 0 || w->gone[b] || v >= 255 ||
         v <= ia + w->levels + 1)
         return 0;
-    return normal_at(w, b, (uint32_t)(p % m->width), (uint32_t)(p / m->width),
-                     n);
+    return tone_scene_surface(w, b, (uint32_t)(p % m->width),
+                              (uint32_t)(p / m->width), NULL, n);
 }
 
 int tone_scene_light_direction(scene_work *w)
@@ -117,7 +118,7 @@ int tone_scene_light_direction(scene_work *w)
         }
         total++;
     }
-    if (total < FIT_MIN || !solve3(a, y, l))
+    if (total < FIT_MIN || !tone_scene_solve3(a, y, l))
         return 0;
     for (p = 0; p < pixels; p++) {
         double v, e, s;

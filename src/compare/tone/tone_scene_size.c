@@ -6,9 +6,10 @@
  * image's object reaches against how far the scene's does.  A sphere
  * whose radius in the statement was typed otherwise then is named by
  * its size, not as an object added around it or as partly drawn.
- * Part of tone_scene_objects.c's reading, split off for its size; not
- * a fit of circles to the picture, and only about spheres whose centre
- * the scene shows.
+ * A sphere whose centre another hides (or the frame cuts) is measured
+ * the same way from where its centre would be, on the stretch of each
+ * ray the scene shows it.  Part of tone_scene_objects.c's reading,
+ * split off for its size; not a fit of circles to the picture.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -58,23 +59,46 @@ static int cmp_double(const void *a, const void *b)
 static void measure(const scene_work *w, int b, double *scene, double *seen)
 {
     const rayo_course_map *m = w->map;
+    const rayo_course_ball *ball = &w->data->balls[b];
     double cx, cy, ms[RAYS], is[RAYS], qs[RAYS], ss[RAYS / 2];
-    double rm_at[RAYS], is_at[RAYS];
+    double rm_at[RAYS], is_at[RAYS], far;
     size_t p, n = 0, k, pairs = 0;
+    int hidden;
     *scene = *seen = 0;
-    rayo_course_ball_pixel(m, &w->data->balls[b], &cx, &cy);
-    if (!pixel_at(m, cx, cy, &p) || m->ball[p] != b ||
-        is_bg(w, w->image->v + p * w->n))
+    rayo_course_ball_pixel(m, ball, &cx, &cy);
+    /* hidden: the stretch of each ray the sphere shows is looked for as
+       far as twice its radius in the picture, and a little more */
+    hidden = !pixel_at(m, cx, cy, &p) || m->ball[p] != b;
+    far = 2 * m->focal * ball->radius / ball->center[2] + 10;
+    if (!hidden && is_bg(w, w->image->v + p * w->n))
         return;
     for (k = 0; k < RAYS; k++) {
         double a = 6.283185307179586 * (double)k / RAYS;
-        double dx = cos(a), dy = sin(a), t, rm, cap;
+        double dx = cos(a), dy = sin(a), t, rm = 0, cap, from = 0;
         int inside = 1;
         rm_at[k] = -1;
-        for (t = 1; inside; t += 1)
-            inside = pixel_at(m, cx + t * dx, cy + t * dy, &p) &&
-                     m->ball[p] == b;
-        rm = t - 1.5;
+        if (hidden) {
+            /* the stretch [from, its last pixel] the sphere shows */
+            from = -1;
+            for (t = 1; t < far; t += 1)
+                if (pixel_at(m, cx + t * dx, cy + t * dy, &p) &&
+                    m->ball[p] == b) {
+                    if (from < 0)
+                        from = t;
+                    rm = t - 0.5;
+                }
+            /* and the image must show an object where the stretch
+               begins: a sphere gone from there (moved, or smaller than
+               what hides it) is not measured */
+            if (from < 0 || !pixel_at(m, cx + from * dx, cy + from * dy, &p) ||
+                is_bg(w, w->image->v + p * w->n))
+                continue;
+        } else {
+            for (t = 1; inside; t += 1)
+                inside = pixel_at(m, cx + t * dx, cy + t * dy, &p) &&
+                         m->ball[p] == b;
+            rm = t - 1.5;
+        }
         /* the scene's outline there must meet the background */
         if (!pixel_at(m, cx + (rm + 3) * dx, cy + (rm + 3) * dy, &p) ||
             m->ball[p] >= 0)
@@ -82,14 +106,14 @@ static void measure(const scene_work *w, int b, double *scene, double *seen)
         /* and the scene's sphere must stand out from the image's
            background all along the ray (not an unlit side at IA over
            a background at IA) */
-        for (t = 0; t < rm - 1; t += 1)
+        for (t = from; t < rm - 1; t += 1)
             if (pixel_at(m, cx + t * dx, cy + t * dy, &p) &&
                 is_bg(w, w->ref->v + p * w->n))
                 break;
         if (t < rm - 1)
             continue;
         cap = 3 * rm + 10;
-        for (t = 1; t < cap; t += 1) {
+        for (t = from > 1 ? from : 1; t < cap; t += 1) {
             size_t q;
             if (!pixel_at(m, cx + t * dx, cy + t * dy, &p) ||
                 !pixel_at(m, cx + (t + 1) * dx, cy + (t + 1) * dy, &q)) {

@@ -19,7 +19,7 @@
 static const char *const kind_names[] = {
     "background", "added", "missing", "moved", "partly",
     "ambient", "light", "below-ambient", "where", "size",
-    "light-direction"};
+    "light-direction", "lamp-position"};
 
 static int gray_course(const rayo_compare_report *r)
 {
@@ -203,6 +203,15 @@ static void put_one(cmp_sink *s, const rayo_compare_report *r,
             f->expected[1], f->expected[2], (unsigned long long)f->pixels,
             (unsigned long long)f->total);
         break;
+    case RAYO_FINDING_LAMP_POSITION:
+        cmp_put(s, "the point light at (%g, %g, %g) in the statement seems "
+                   "to be at about (%.1f, %.1f, %.1f) in the image: C = Ia "
+                   "ka + Ii kd (L.N) fits %llu of the %llu pixels it lights "
+                   "with L towards that point",
+            f->expected[0], f->expected[1], f->expected[2], f->value[0],
+            f->value[1], f->value[2], (unsigned long long)f->pixels,
+            (unsigned long long)f->total);
+        break;
     case RAYO_FINDING_BELOW_AMBIENT:
         put_below(s, r, f);
         break;
@@ -258,7 +267,10 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
             cmp_put(s, ", \"radius_px\": %.1f, \"expected_px\": %.1f, "
                        "\"radius\": %.3g",
                 f->value[0], f->expected[0], f->value[1]);
-        if (f->kind == RAYO_FINDING_LIGHT_DIRECTION) {
+        if (f->kind == RAYO_FINDING_LAMP_POSITION)
+            cmp_put(s, ", \"lamp\": %d", (int)f->box[0]);
+        if (f->kind == RAYO_FINDING_LIGHT_DIRECTION ||
+            f->kind == RAYO_FINDING_LAMP_POSITION) {
             put_triple(s, "value", f->value, 3);
             put_triple(s, "expected", f->expected, 3);
         }
