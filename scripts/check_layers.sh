@@ -56,7 +56,10 @@ for file in $(find src include/rayo web/wasm fuzz -name '*.[ch]' | sort); do
             to=$(home "$(basename "$target" .h)")
             folder=public ;;
         */src/* | ../*)
-            folder=$(echo "$target" | sed 's|.*\.\./||; s|^src/||' | cut -d/ -f1)
+            # resolved from the including file's folder, so that
+            # src/grade/functions/x.c -> ../grade_impl.h stays in grade
+            folder=$(realpath -m --relative-to=. "$(dirname "$file")/$target" |
+                sed 's|^src/||' | cut -d/ -f1)
             to=$folder ;;
         *)
             continue ;; # its own folder

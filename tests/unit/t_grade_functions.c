@@ -20,7 +20,7 @@
 
 #include "../../src/course/course_impl.h"
 #include "../../src/grade/grade_impl.h"
-#include "../../src/grade/harness.h"
+#include "../../src/grade/functions/harness.h"
 #include "rayo.h"
 #include "tap.h"
 

@@ -27,7 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../course/course_impl.h"
+#include "../../course/course_impl.h"
 #include "harness.h"
 #include "harness_math.h"
 

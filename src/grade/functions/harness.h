@@ -26,7 +26,7 @@
 
 #include <stddef.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 #define HARNESS_REASON 400 /* room for one probe's reason */
 #define HARNESS_NONCE 32   /* hexadecimal digits of the channel's nonce */
