@@ -18,12 +18,11 @@
  * own.  Programs it executes run under valgrind too
  * (--trace-children=yes).  Skipped when valgrind is not installed.
  *
- * Where the frame valgrind names is one of the constructors exercise 3's
- * statement gives (esfera_crear, luz_crear, arreglo_agregar), the
- * mistake is also said in the statement's terms: which destructor was
- * not called, or that arreglo_agregar writes past the end of v.  The
- * explanations go by the frame's function name, so they apply to any
- * exercise whose program has those functions (ej1's have none).
+ * Where the frame valgrind names is a function the exercise's functions
+ * table lists as an owner (functions/table.h: exercise 3's esfera_crear,
+ * luz_crear, arreglo_agregar), the mistake is also said in the
+ * statement's terms: which destructor was not called, or that
+ * arreglo_agregar writes past the end of v.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -32,28 +31,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "functions/table.h"
 #include "grade_impl.h"
 #include "valgrind_log.h"
 
 #define SLOWDOWN 10.0
 #define SHOWN_ERRORS 4
-
-/* A statement's constructor, and what a leak of its blocks means. */
-typedef struct constructor_leak {
-    const char *function;
-    const char *explanation;
-} constructor_leak;
-
-static const constructor_leak constructor_leaks[] = {
-    {"esfera_crear", "spheres made by esfera_crear are never destroyed: "
-                     "call esfera_destruir on each before freeing the "
-                     "array"},
-    {"luz_crear", "lights made by luz_crear are never destroyed: call "
-                  "luz_destruir on each before freeing the array"},
-    {"arreglo_agregar", "the arrays' v is never freed: free each array's "
-                        "v after destroying its elements"}};
-#define CONSTRUCTOR_LEAKS \
-    (sizeof constructor_leaks / sizeof constructor_leaks[0])
 
 /* 1 when the frame "name (file.c:12)" is in the function called name. */
 static int frame_is(const char *frame, const char *name)
@@ -167,6 +150,7 @@ static long long summary_errors(const vg_text *log)
 }
 
 static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
+                                 const functions_exercise *ex,
                                  unsigned *count, rayo_error *err)
 {
     size_t pos = 0;
@@ -180,6 +164,7 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
             continue;
         for (k = 0; k < ERROR_KINDS; k++) {
             char text[512], frame[512];
+            size_t o;
             if (!vg_begins(&line, error_kinds[k]))
                 continue;
             if ((*count)++ >= SHOWN_ERRORS)
@@ -190,11 +175,12 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
                 status = grade_fail(item, err, "%s, at %s", text, frame);
             else
                 status = grade_fail(item, err, "%s", text);
-            if (status == RAYO_OK && frame_is(frame, "arreglo_agregar") &&
-                strncmp(text, "Invalid write", 13) == 0)
-                status = grade_say(item, err, "a write past the end of v: "
-                                              "grow it to n + 1 elements "
-                                              "before writing v[n]");
+            for (o = 0; o < ex->owner_count && status == RAYO_OK; o++)
+                if (ex->owners[o].write &&
+                    frame_is(frame, ex->owners[o].function) &&
+                    strncmp(text, "Invalid write", 13) == 0)
+                    status = grade_say(item, err, "%s",
+                                       ex->owners[o].explanation);
             break;
         }
     }
@@ -204,13 +190,14 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
     return status;
 }
 
-/* For each lost block made by one of the statement's constructors,
-   once, what was not destroyed or freed. */
+/* For each lost block made by one of the exercise's owners, once, what
+   was not destroyed or freed. */
 static rayo_status explain_constructor_leaks(rayo_grade_item *item,
                                              const vg_text *log,
+                                             const functions_exercise *ex,
                                              rayo_error *err)
 {
-    int said[CONSTRUCTOR_LEAKS] = {0};
+    int said[FUNCTIONS_MAX] = {0};
     size_t pos = 0;
     rayo_status status = RAYO_OK;
     vg_line line;
@@ -221,12 +208,14 @@ static rayo_status explain_constructor_leaks(rayo_grade_item *item,
         if (vg_find(&line, " lost in loss record") == NULL)
             continue;
         first_frame(log, pos, frame, sizeof frame);
-        for (k = 0; k < CONSTRUCTOR_LEAKS && status == RAYO_OK; k++) {
-            if (said[k] || !frame_is(frame, constructor_leaks[k].function))
+        for (k = 0; k < ex->owner_count && k < FUNCTIONS_MAX &&
+                    status == RAYO_OK;
+             k++) {
+            if (said[k] || ex->owners[k].write ||
+                !frame_is(frame, ex->owners[k].function))
                 continue;
             said[k] = 1;
-            status = grade_say(item, err, "%s",
-                               constructor_leaks[k].explanation);
+            status = grade_say(item, err, "%s", ex->owners[k].explanation);
         }
     }
     return status;
@@ -245,7 +234,8 @@ static size_t after_line_with(const vg_text *log, const char *word)
 }
 
 static rayo_status report_leaks(rayo_grade_item *item, const vg_text *log,
-                                int *leaked, rayo_error *err)
+                                const functions_exercise *ex, int *leaked,
+                                rayo_error *err)
 {
     static const char *const kinds[] = {"definitely lost", "indirectly lost",
                                         "possibly lost"};
@@ -278,7 +268,7 @@ static rayo_status report_leaks(rayo_grade_item *item, const vg_text *log,
                                           "in %s",
                                frame);
         if (status == RAYO_OK)
-            status = explain_constructor_leaks(item, log, err);
+            status = explain_constructor_leaks(item, log, ex, err);
     }
     bytes = leak_bytes(log, "still reachable", &blocks);
     if (status == RAYO_OK && bytes > 0)
@@ -340,6 +330,8 @@ static rayo_status read_log(grade_context *ctx, const grade_captured *got,
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_VALGRIND];
     const grade_outcome *outcome = &got->outcome;
+    const functions_exercise *ex =
+        functions_exercise_of(ctx->options->exercise->course);
     vg_text log;
     vg_signs signs;
     unsigned errors;
@@ -386,9 +378,9 @@ static rayo_status read_log(grade_context *ctx, const grade_captured *got,
             status = quote_log(item, &log, 0, 4, err);
         return status;
     }
-    status = report_errors(item, &log, &errors, err);
+    status = report_errors(item, &log, ex, &errors, err);
     if (status == RAYO_OK)
-        status = report_leaks(item, &log, &leaked, err);
+        status = report_leaks(item, &log, ex, &leaked, err);
     /* Leaks count as errors in valgrind's summary. */
     if (status == RAYO_OK && errors == 0 && !leaked && counted > 0)
         status = grade_fail(item, err, "valgrind counted %lld errors",

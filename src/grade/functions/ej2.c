@@ -1,23 +1,14 @@
 /*
- * functions_ej2.c - the "functions" criterion for Ejercicio obligatorio
- * 2 (gray, float[3] vectors): the statement's eight functions have its
- * exact signatures and return the right values on inputs chosen to
- * reveal what the course's scene hides.
- *
- * The vector functions get plain values; distancia_esfera gets a ray
- * whose near root is the answer, one whose near root is behind the
- * origin (it starts inside the sphere), one from an origin other than
- * zero and two that miss (INFINITO, FLT_MAX); normal_esfera must give a
- * unit normal; computar_intensidad gets rays of the course's scene 2 and
- * of small scenes made to reveal one mistake each (two spheres in
- * reversed order, a sphere between the point and the light and one on
- * the other side of it, L.N < 0, a value above 255).
- *
- * Expected values are computed here in double precision from the
- * formulas of escenas-del-curso.md, on the arguments rounded to float as
- * the harness passes them.  When a result is wrong it is compared with
- * what each modelled mistake gives, and the mistake that agrees is named.
- * The machinery (probe, build, run, log) is harness.c's.
+ * ej2.c - the functions table of Ejercicio obligatorio 2 (gray, float[3]
+ * vectors): the statement's eight functions, the cases that reveal what
+ * the course's scene hides (vector values; rays to spheres that are
+ * hit, missed, or hit only behind the origin; scenes made to reveal one
+ * shading mistake each, after the course's scene 2 from the course
+ * module), the records its harness (harness/ej2.c) is given, the
+ * expected values in double precision on the float-rounded arguments,
+ * and the judging that names the modelled mistake a wrong result
+ * agrees with.  The engine (engine.c) probes, builds, runs and calls
+ * judge.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -29,6 +20,8 @@
 
 #include "../../course/course_impl.h"
 #include "harness.h"
+#include "harness_sources.h"
+#include "table.h"
 #include "harness_math.h"
 
 #define IA 5.0
@@ -48,25 +41,29 @@ enum {
     F_COUNT
 };
 
-static const char *const names[F_COUNT] = {
-    "producto_interno", "norma",          "normalizar",
-    "resta",            "interpolar_recta", "distancia_esfera",
-    "normal_esfera",    "computar_intensidad"};
-
-static const char *const prototypes[F_COUNT] = {
-    "float producto_interno(const float a[3], const float b[3])",
-    "float norma(const float a[3])",
-    "void normalizar(float a[3])",
-    "void resta(float r[3], const float a[3], const float b[3])",
-    "void interpolar_recta(float p[3], const float o[3], const float d[3], "
-    "float t)",
-    "float distancia_esfera(const float c[3], float r, const float o[3], "
-    "const float d[3])",
-    "void normal_esfera(float normal[3], const float c[3], float r, "
-    "const float p[3])",
-    "int computar_intensidad(const float cs[][3], const float rs[], "
-    "size_t n_esferas, const float luz[3], const float o[3], "
-    "const float d[3])"};
+static const functions_function functions[F_COUNT] = {
+    {"producto_interno",
+     "float producto_interno(const float a[3], const float b[3])"},
+    {"norma",
+     "float norma(const float a[3])"},
+    {"normalizar",
+     "void normalizar(float a[3])"},
+    {"resta",
+     "void resta(float r[3], const float a[3], const float b[3])"},
+    {"interpolar_recta",
+     "void interpolar_recta(float p[3], const float o[3], const float d[3], "
+     "float t)"},
+    {"distancia_esfera",
+     "float distancia_esfera(const float c[3], float r, const float o[3], "
+     "const float d[3])"},
+    {"normal_esfera",
+     "void normal_esfera(float normal[3], const float c[3], float r, "
+     "const float p[3])"},
+    {"computar_intensidad",
+     "int computar_intensidad(const float cs[][3], const float rs[], "
+     "size_t n_esferas, const float luz[3], const float o[3], "
+     "const float d[3])"},
+};
 
 /* The arguments of one call: a, b, c are vectors, s a scalar, by
    function: producto_interno(a, b); norma(a); normalizar(a);
@@ -344,126 +341,59 @@ static shading shade(const ray_case *rc, int m)
     return out;
 }
 
-/* ---- the harness ---- */
+/* ---- the harness's records ---- */
 
-static void put_vector(harness_text *t, const char *name, const double *v)
+static void put_numbers(harness_text *t, const double *v, size_t n)
 {
-    harness_append(t, "        float %s[3] = {%.9g, %.9g, %.9g};\n", name,
-                   v[0], v[1], v[2]);
+    size_t i;
+    for (i = 0; i < n; i++)
+        harness_append(t, " %.9g", v[i]);
 }
 
+/* "c NAME K" and a, b, c and s (harness/ej2.c). */
 static void write_vector_case(harness_text *t, const vector_case *v,
                               unsigned k)
 {
-    const char *name = names[v->function];
     double a[3], b[3], c[3], s;
     case_args(v, a, b, c, &s);
-    harness_append(t, "    if (%s != 0) {\n", name);
-    put_vector(t, "a", a);
-    put_vector(t, "b", b);
-    put_vector(t, "c", c);
-    harness_append(t, "        float r[3] = {0, 0, 0};\n"
-                      "        double v = 0;\n"
-                      "        rayo_say(\"call %s %u\");\n"
-                      "        fflush(stdout);\n",
-                   name, k);
-    switch (v->function) {
-    case F_PRODUCTO:
-        harness_append(t, "        v = producto_interno(a, b);\n");
-        break;
-    case F_NORMA:
-        harness_append(t, "        v = norma(a);\n");
-        break;
-    case F_NORMALIZAR:
-        harness_append(t, "        normalizar(a);\n"
-                          "        r[0] = a[0], r[1] = a[1], r[2] = a[2];\n");
-        break;
-    case F_RESTA:
-        harness_append(t, "        resta(r, a, b);\n");
-        break;
-    case F_INTERPOLAR:
-        harness_append(t, "        interpolar_recta(r, a, b, %.9g);\n", s);
-        break;
-    case F_DISTANCIA:
-        harness_append(t, "        v = distancia_esfera(a, %.9g, b, c);\n",
-                       s);
-        break;
-    default:
-        harness_append(t, "        normal_esfera(r, a, %.9g, b);\n", s);
-        break;
-    }
-    harness_append(t, "        rayo_say(\"result %s %u %%.9g %%.9g %%.9g "
-                      "%%.9g\", v, r[0], r[1], r[2]);\n"
-                      "        fflush(stdout);\n    }\n",
-                   name, k);
+    harness_append(t, "c %s %u", functions[v->function].name, k);
+    put_numbers(t, a, 3);
+    put_numbers(t, b, 3);
+    put_numbers(t, c, 3);
+    put_numbers(t, &s, 1);
+    harness_append(t, "\n");
 }
 
+/* "c computar_intensidad K", n, the centres, the radii, luz, o, d. */
 static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
 {
     scene whole;
     const scene *s = scene_of(rc->scene, &whole);
     double d[3], light[3], c[MAX_SPHERES][3], r[MAX_SPHERES];
+    static const double o[3] = {0, 0, 0};
     size_t i;
     ray_args(rc, d, light, c, r);
-    harness_append(t, "    if (computar_intensidad != 0) {\n"
-                      "        static const float cs[][3] = {");
+    harness_append(t, "c computar_intensidad %u %zu", k, s->n);
     for (i = 0; i < s->n; i++)
-        harness_append(t, "%s{%.9g, %.9g, %.9g}", i > 0 ? ", " : "",
-                       c[i][0], c[i][1], c[i][2]);
-    harness_append(t, "};\n        static const float rs[] = {");
-    for (i = 0; i < s->n; i++)
-        harness_append(t, "%s%.9g", i > 0 ? ", " : "", r[i]);
-    harness_append(t, "};\n");
-    put_vector(t, "luz", light);
-    put_vector(t, "o", (const double[3]){0, 0, 0});
-    put_vector(t, "d", d);
-    harness_append(t, "        int v;\n"
-                      "        rayo_say(\"call computar_intensidad "
-                      "%u\");\n"
-                      "        fflush(stdout);\n"
-                      "        v = computar_intensidad(cs, rs, %zu, luz, o, "
-                      "d);\n"
-                      "        rayo_say(\"result computar_intensidad %u "
-                      "%%d\", v);\n"
-                      "        fflush(stdout);\n    }\n",
-                   k, s->n, k);
+        put_numbers(t, c[i], 3);
+    put_numbers(t, r, s->n);
+    put_numbers(t, light, 3);
+    put_numbers(t, o, 3);
+    put_numbers(t, d, 3);
+    harness_append(t, "\n");
 }
 
-static char *harness_source(const int *usable)
+static void write_calls(harness_text *t, const int *usable)
 {
-    harness_text t = {NULL, 0, 0, 0};
     unsigned i, k;
-    harness_prelude(&t);
-    harness_append(&t, "#include <stddef.h>\n");
     for (i = 0; i < F_COUNT; i++)
         if (usable[i])
-            harness_append(&t, "%s __attribute__((weak));\n", prototypes[i]);
-    harness_append(&t, "int main(void)\n{\n");
-    for (i = 0; i < F_COUNT; i++)
-        if (usable[i])
-            harness_append(&t, "    if (%s == 0)\n"
-                               "        rayo_say(\"missing %s\");\n",
-                           names[i], names[i]);
+            harness_append(t, "m %s\n", functions[i].name);
     for (k = 0; k < VECTOR_CASES; k++)
         if (usable[vector_cases[k].function])
-            write_vector_case(&t, &vector_cases[k], k);
+            write_vector_case(t, &vector_cases[k], k);
     for (k = 0; k < RAY_CASES && usable[F_INTENSIDAD]; k++)
-        write_ray_case(&t, &ray_cases[k], k);
-    harness_append(&t, "    rayo_say(\"done\");\n    return 0;\n}\n");
-    if (t.failed) {
-        free(t.data);
-        return NULL;
-    }
-    return t.data;
-}
-
-char *grade_functions_ej2_source(void)
-{
-    int usable[F_COUNT];
-    unsigned i;
-    for (i = 0; i < F_COUNT; i++)
-        usable[i] = 1;
-    return harness_source(usable);
+        write_ray_case(t, &ray_cases[k], k);
 }
 
 /* ---- what the student reads ---- */
@@ -471,7 +401,7 @@ char *grade_functions_ej2_source(void)
 static void describe_vector_case(unsigned k, char *out, size_t room)
 {
     const vector_case *v = &vector_cases[k];
-    const char *name = names[v->function];
+    const char *name = functions[v->function].name;
     double a[3], b[3], c[3], s;
     char x[64], y[64], z[64];
     case_args(v, a, b, c, &s);
@@ -521,8 +451,8 @@ static void describe(const char *name, unsigned k, char *out, size_t room)
             describe_ray_case(k, out, room);
         return;
     }
-    if (k < VECTOR_CASES && strcmp(name, names[vector_cases[k].function]) ==
-                                0)
+    if (k < VECTOR_CASES &&
+        strcmp(name, functions[vector_cases[k].function].name) == 0)
         describe_vector_case(k, out, room);
 }
 
@@ -805,15 +735,6 @@ static rayo_status say_ray(rayo_grade_item *item, const ray_case *rc,
 
 /* ---- judging ---- */
 
-static rayo_status say_signature(rayo_grade_item *item, unsigned i,
-                                 const char *reason, rayo_error *err)
-{
-    return grade_fail(item, err, "%s: the signature differs from the "
-                                 "statement's %s (the compiler says: %s); "
-                                 "not called",
-                      names[i], prototypes[i], reason);
-}
-
 /* What most likely makes function i return a NaN. */
 static const char *nan_cause(unsigned i)
 {
@@ -833,21 +754,22 @@ static const char *nan_cause(unsigned i)
 
 /* Judges function i: 0 when the log ends before its calls are done. */
 static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
-                         rayo_error *err)
+                         const int *usable, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
     char call[512], line[1024];
     unsigned k, cases = 0, wrong = 0, unsaid = 0, said = 0;
     rayo_status status = RAYO_OK;
-    if (harness_missing(log, names[i]))
+    (void)usable;
+    if (harness_missing(log, functions[i].name))
         return grade_fail(item, err, "%s: not defined; the statement asks "
                                      "for %s",
-                          names[i], prototypes[i]);
+                          functions[i].name, functions[i].prototype);
     for (k = 0; k < VECTOR_CASES && i != F_INTENSIDAD; k++) {
         double got[4];
         if (vector_cases[k].function != i)
             continue;
-        if (harness_result(log, names[i], k, got, 4) != 4)
+        if (harness_result(log, functions[i].name, k, got, 4) != 4)
             return RAYO_OK; /* it ended inside or before: said elsewhere */
         cases++;
         if (vector_case_right(&vector_cases[k], got))
@@ -884,7 +806,7 @@ static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
         unsigned score[M_COUNT];
         int mistake;
         for (k = 0; k < RAY_CASES; k++)
-            if (harness_result(log, names[i], k, &got[k], 1) != 1)
+            if (harness_result(log, functions[i].name, k, &got[k], 1) != 1)
                 return RAYO_OK; /* it ended inside or before */
         mistake_scores(got, score);
         for (k = 0; k < RAY_CASES; k++) {
@@ -919,83 +841,16 @@ static rayo_status judge(grade_context *ctx, unsigned i, const char *log,
     }
     if (wrong == 0)
         status = grade_say(item, err, "%s: right on %u known inputs",
-                           names[i], cases);
+                           functions[i].name, cases);
     else if (unsaid > 0)
         status = grade_fail(item, err, "%s: wrong on %u more of its %u "
                                        "known inputs",
-                            names[i], unsaid, cases);
+                            functions[i].name, unsaid, cases);
     return status;
 }
 
-static rayo_status probe_all(grade_context *ctx, const unsigned *which,
-                             size_t count, int *ok, char *reason,
-                             rayo_error *err)
-{
-    harness_text t = {NULL, 0, 0, 0};
-    size_t i;
-    rayo_status status = RAYO_OK;
-    *ok = 1;
-    harness_append(&t, "#include <stddef.h>\n");
-    for (i = 0; i < count; i++)
-        harness_append(&t, "%s;\n", prototypes[which[i]]);
-    if (t.failed) {
-        free(t.data);
-        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    }
-    for (i = 0; i < ctx->source_count && *ok && status == RAYO_OK; i++)
-        status = harness_probe(ctx, i, t.data, "", ok, reason,
-                               HARNESS_REASON, err);
-    free(t.data);
-    return status;
-}
+static const char *const probe_before = "#include <stddef.h>\n";
 
-rayo_status grade_functions_ej2(grade_context *ctx, rayo_error *err)
-{
-    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
-    unsigned all[F_COUNT], i;
-    int usable[F_COUNT], any = 0, ok;
-    char reasons[F_COUNT][HARNESS_REASON];
-    char *errors = NULL, *source = NULL, *log = NULL;
-    grade_outcome outcome;
-    rayo_status status;
-    item->result = RAYO_GRADE_PASS;
-    for (i = 0; i < F_COUNT; i++)
-        all[i] = i;
-    /* One probe for all (the usual case), one each when that fails. */
-    status = probe_all(ctx, all, F_COUNT, &ok, reasons[0], err);
-    for (i = 0; i < F_COUNT && status == RAYO_OK; i++) {
-        usable[i] = 1;
-        if (!ok)
-            status = probe_all(ctx, &all[i], 1, &usable[i], reasons[i], err);
-        any |= usable[i];
-    }
-    if (status == RAYO_OK && any) {
-        source = harness_source(usable);
-        if (source == NULL)
-            status = rayo_error_set(err, RAYO_ERR_NOMEM,
-                                    "grade: out of memory");
-        if (status == RAYO_OK)
-            status = harness_build(ctx, source, NULL, 0, &ok, &errors, err);
-        if (status == RAYO_OK && !ok) {
-            status = grade_fail(item, err, "could not build the test "
-                                           "harness around the functions:");
-            if (status == RAYO_OK)
-                status = grade_quote(item, errors, 4, err);
-            any = 0;
-        } else if (status == RAYO_OK) {
-            status = harness_run(ctx, &log, &outcome, err);
-        }
-    }
-    for (i = 0; i < F_COUNT && status == RAYO_OK; i++) {
-        if (!usable[i])
-            status = say_signature(item, i, reasons[i], err);
-        else if (any && log != NULL)
-            status = judge(ctx, i, log, err);
-    }
-    if (status == RAYO_OK && log != NULL)
-        status = harness_judge_ending(ctx, log, &outcome, describe, err);
-    free(log);
-    free(source);
-    free(errors);
-    return status;
-}
+const functions_exercise functions_ej2 = {
+    functions, F_COUNT, harness_ej2_c, &harness_ej2_c_size, NULL, 0,
+    probe_before, 0, NULL, write_calls, judge, describe, NULL, 0};

@@ -1,34 +1,15 @@
 /*
- * functions_ej3.c - the "functions" criterion for Ejercicio obligatorio
- * 3 (colour, structs, dynamic memory): the statement's types and its
- * seventeen functions have its exact definitions and signatures, and the
- * functions return the right values on inputs chosen to reveal what the
- * course's scene hides.
- *
- * Types first: the student's file defines vector_t, color_t, esfera_t,
- * luz_t and arreglo_t, so each is probed after #including the file: it
- * must exist as a typedef and have the statement's members, types and
- * layout (checked by _Generic and offsetof against a copy of the
- * statement's struct; the compiler's message names the member).  Then
- * the prototypes are declared after the #include, where a different
- * definition is "conflicting types".  A function is called only when
- * its signature and every type it uses are the statement's; the harness
- * is a separate file with the statement's own typedefs, which then have
- * the student's layout, linked with the student's objects.
- *
- * The harness fills the sphere and light arrays for computar_intensidad
- * itself (esfera_t and luz_t values, arreglo_t of pointers to them), so
- * that a mistake in esfera_crear, luz_crear or arreglo_agregar is named
- * once, by their own cases.  arreglo_agregar runs with malloc, calloc
- * and realloc wrapped (-Wl,--wrap): once the array has three elements,
- * allocation is made to fail and the array must be left exactly as it
- * was and false returned.  color_imprimir's output is read between
- * markers the harness prints around the call.
- *
- * Expected values are computed here in double precision from the
- * formulas of escenas-del-curso.md on the float-rounded arguments; a
- * wrong colour is compared with what each modelled mistake gives, and
- * the mistake that agrees is named.
+ * ej3.c - the functions table of Ejercicio obligatorio 3 (colour,
+ * structs, dynamic memory): the statement's five types and fifteen
+ * functions, their cases (values, constructors and destructors,
+ * arreglo_agregar with allocation made to fail, computar_intensidad on
+ * the course's scene 3 from the course module and on scenes made to
+ * reveal one mistake each), the records its harness (harness/ej3.c) is
+ * given, and their judging.  Types are probed first: a function is
+ * called only when its signature and every type it uses are the
+ * statement's.  Expected values are computed in double precision on
+ * the float-rounded arguments; a wrong colour is compared with what
+ * each modelled mistake gives, and the one that agrees is named.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -41,6 +22,8 @@
 
 #include "../../course/course_impl.h"
 #include "harness.h"
+#include "harness_sources.h"
+#include "table.h"
 #include "harness_math.h"
 
 #define SAID_PER_FUNCTION 2 /* wrong cases quoted; the others counted */
@@ -89,13 +72,6 @@ static const char mirror_types[] =
     "    struct rayo_color_t color; _Bool es_puntual; };\n"
     "struct rayo_arreglo_t { void **v; size_t n; };\n";
 
-static const char harness_types[] =
-    "typedef struct rayo_vector_t vector_t;\n"
-    "typedef struct rayo_color_t color_t;\n"
-    "typedef struct rayo_esfera_t esfera_t;\n"
-    "typedef struct rayo_luz_t luz_t;\n"
-    "typedef struct rayo_arreglo_t arreglo_t;\n";
-
 /* ---- the statement's functions ---- */
 
 enum {
@@ -119,48 +95,59 @@ enum {
 
 #define TB(t) (1u << (t))
 
-typedef struct function {
-    const char *name;
-    const char *prototype; /* as the statement writes it */
-    unsigned types;        /* TB() of the types it uses */
-} function;
-
-static const function functions[F_COUNT] = {
+static const functions_function functions[F_COUNT] = {
     {"vector_producto_interno",
-     "float vector_producto_interno(vector_t a, vector_t b)", TB(T_VECTOR)},
-    {"vector_norma", "float vector_norma(vector_t a)", TB(T_VECTOR)},
-    {"vector_resta", "vector_t vector_resta(vector_t a, vector_t b)",
-     TB(T_VECTOR)},
+     "float vector_producto_interno(vector_t a, vector_t b)"},
+    {"vector_norma",
+     "float vector_norma(vector_t a)"},
+    {"vector_resta",
+     "vector_t vector_resta(vector_t a, vector_t b)"},
     {"vector_interpolar_recta",
-     "vector_t vector_interpolar_recta(vector_t o, vector_t d, float t)",
-     TB(T_VECTOR)},
-    {"vector_normalizar", "vector_t vector_normalizar(vector_t a)",
-     TB(T_VECTOR)},
-    {"color_sumar", "color_t color_sumar(color_t c, color_t m, float p)",
-     TB(T_COLOR)},
-    {"color_absorber", "color_t color_absorber(color_t b, color_t c)",
-     TB(T_COLOR)},
-    {"color_imprimir", "void color_imprimir(color_t c)", TB(T_COLOR)},
+     "vector_t vector_interpolar_recta(vector_t o, vector_t d, float t)"},
+    {"vector_normalizar",
+     "vector_t vector_normalizar(vector_t a)"},
+    {"color_sumar",
+     "color_t color_sumar(color_t c, color_t m, float p)"},
+    {"color_absorber",
+     "color_t color_absorber(color_t b, color_t c)"},
+    {"color_imprimir",
+     "void color_imprimir(color_t c)"},
     {"esfera_crear",
      "esfera_t *esfera_crear(vector_t centro, float radio, color_t color, "
-     "float ka, float kd)",
-     TB(T_VECTOR) | TB(T_COLOR) | TB(T_ESFERA)},
-    {"esfera_destruir", "void esfera_destruir(esfera_t *esfera)",
-     TB(T_ESFERA)},
+     "float ka, float kd)"},
+    {"esfera_destruir",
+     "void esfera_destruir(esfera_t *esfera)"},
     {"luz_crear",
-     "luz_t *luz_crear(vector_t posicion, color_t color, bool es_puntual)",
-     TB(T_VECTOR) | TB(T_COLOR) | TB(T_LUZ)},
-    {"luz_destruir", "void luz_destruir(luz_t *luz)", TB(T_LUZ)},
+     "luz_t *luz_crear(vector_t posicion, color_t color, bool es_puntual)"},
+    {"luz_destruir",
+     "void luz_destruir(luz_t *luz)"},
     {"esfera_distancia",
      "float esfera_distancia(const esfera_t *esfera, vector_t o, "
-     "vector_t d, vector_t *punto, vector_t *normal)",
-     TB(T_VECTOR) | TB(T_ESFERA)},
-    {"arreglo_agregar", "bool arreglo_agregar(arreglo_t *a, void *e)",
-     TB(T_ARREGLO)},
+     "vector_t d, vector_t *punto, vector_t *normal)"},
+    {"arreglo_agregar",
+     "bool arreglo_agregar(arreglo_t *a, void *e)"},
     {"computar_intensidad",
      "color_t computar_intensidad(const arreglo_t *esferas, "
-     "const arreglo_t *luces, color_t ambiente, vector_t o, vector_t d)",
-     TB(T_VECTOR) | TB(T_COLOR) | TB(T_ARREGLO)},
+     "const arreglo_t *luces, color_t ambiente, vector_t o, vector_t d)"},
+};
+
+/* The types each function uses: TB() of each. */
+static const unsigned function_types[F_COUNT] = {
+    TB(T_VECTOR), /* vector_producto_interno */
+    TB(T_VECTOR), /* vector_norma */
+    TB(T_VECTOR), /* vector_resta */
+    TB(T_VECTOR), /* vector_interpolar_recta */
+    TB(T_VECTOR), /* vector_normalizar */
+    TB(T_COLOR), /* color_sumar */
+    TB(T_COLOR), /* color_absorber */
+    TB(T_COLOR), /* color_imprimir */
+    TB(T_VECTOR) | TB(T_COLOR) | TB(T_ESFERA), /* esfera_crear */
+    TB(T_ESFERA), /* esfera_destruir */
+    TB(T_VECTOR) | TB(T_COLOR) | TB(T_LUZ), /* luz_crear */
+    TB(T_LUZ), /* luz_destruir */
+    TB(T_VECTOR) | TB(T_ESFERA), /* esfera_distancia */
+    TB(T_ARREGLO), /* arreglo_agregar */
+    TB(T_VECTOR) | TB(T_COLOR) | TB(T_ARREGLO), /* computar_intensidad */
 };
 
 /* The prototype with bool spelled _Bool (the student may not include
@@ -526,364 +513,74 @@ static int same_colour(const double *got, const double *want)
     return 1;
 }
 
-/* ---- the harness ---- */
+/* ---- the harness's records ---- */
 
-static void put_vec(harness_text *t, const char *type, const char *name,
-                    const double *v)
+static void put_numbers(harness_text *t, const double *v, size_t n)
 {
-    harness_append(t, "        %s %s = {%.9g, %.9g, %.9g};\n", type, name,
-                   v[0], v[1], v[2]);
+    size_t i;
+    for (i = 0; i < n; i++)
+        harness_append(t, " %.9g", v[i]);
 }
 
-static void announce(harness_text *t, const char *name, unsigned k)
-{
-    harness_append(t, "        rayo_say(\"call %s %u\");\n"
-                      "        fflush(stdout);\n",
-                   name, k);
-}
-
-static void result3(harness_text *t, const char *name, unsigned k,
-                    const char *first, const char *v)
-{
-    harness_append(t, "        rayo_say(\"result %s %u %%.9g %%.9g %%.9g "
-                      "%%.9g\", (double)%s, %s.%c, %s.%c, %s.%c);\n"
-                      "        fflush(stdout);\n",
-                   name, k, first, v, v[0] == 'c' ? 'r' : 'x', v,
-                   v[0] == 'c' ? 'g' : 'y', v, v[0] == 'c' ? 'b' : 'z');
-}
-
+/* "c NAME K" and a, b, c and s (harness/ej3.c). */
 static void write_value_case(harness_text *t, const value_case *v,
                              unsigned k)
 {
-    const char *name = functions[v->function].name;
     double a[3], b[3], c[3], s;
     value_args(v, a, b, c, &s);
-    harness_append(t, "    if (%s != 0) {\n", name);
-    switch (v->function) {
-    case F_PRODUCTO:
-    case F_NORMA:
-        put_vec(t, "vector_t", "a", a);
-        put_vec(t, "vector_t", "b", b);
-        harness_append(t, "        vector_t r = {0, 0, 0};\n"
-                          "        double v;\n");
-        announce(t, name, k);
-        harness_append(t, v->function == F_NORMA
-                              ? "        v = vector_norma(a);\n"
-                              : "        v = vector_producto_interno(a, "
-                                "b);\n");
-        result3(t, name, k, "v", "r");
-        break;
-    case F_RESTA:
-    case F_INTERPOLAR:
-    case F_NORMALIZAR:
-        put_vec(t, "vector_t", "a", a);
-        put_vec(t, "vector_t", "b", b);
-        harness_append(t, "        vector_t r;\n");
-        announce(t, name, k);
-        if (v->function == F_RESTA)
-            harness_append(t, "        r = vector_resta(a, b);\n");
-        else if (v->function == F_INTERPOLAR)
-            harness_append(t, "        r = vector_interpolar_recta(a, b, "
-                              "%.9g);\n",
-                           s);
-        else
-            harness_append(t, "        r = vector_normalizar(a);\n");
-        result3(t, name, k, "0", "r");
-        break;
-    case F_SUMAR:
-    case F_ABSORBER:
-        put_vec(t, "color_t", "a", a);
-        put_vec(t, "color_t", "b", b);
-        harness_append(t, "        color_t c;\n");
-        announce(t, name, k);
-        if (v->function == F_SUMAR)
-            harness_append(t, "        c = color_sumar(a, b, %.9g);\n", s);
-        else
-            harness_append(t, "        c = color_absorber(a, b);\n");
-        result3(t, name, k, "0", "c");
-        break;
-    case F_IMPRIMIR:
-        put_vec(t, "color_t", "a", a);
-        announce(t, name, k);
-        harness_append(t, "        rayo_say(\"out color_imprimir %u\");\n"
-                          "        fflush(stdout);\n"
-                          "        color_imprimir(a);\n"
-                          "        fflush(stdout);\n"
-                          "        rayo_say(\"end color_imprimir %u\");\n"
-                          "        rayo_say(\"result color_imprimir %u 0\");\n"
-                          "        fflush(stdout);\n",
-                       k, k, k);
-        break;
-    case F_ESFERA_CREAR:
-        put_vec(t, "vector_t", "a", a);
-        put_vec(t, "color_t", "b", b);
-        harness_append(t, "        esfera_t *e;\n");
-        announce(t, name, k);
-        harness_append(
-            t,
-            "        e = esfera_crear(a, %.9g, b, %.9g, %.9g);\n"
-            "        if (e == NULL) {\n"
-            "            rayo_say(\"result esfera_crear %u null\");\n"
-            "        } else {\n"
-            "            rayo_say(\"result esfera_crear %u %%.9g %%.9g "
-            "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\", e->centro.x, "
-            "e->centro.y, e->centro.z, e->radio, e->color.r, e->color.g, "
-            "e->color.b, e->ka, e->kd);\n"
-            "            fflush(stdout);\n"
-            "            if (esfera_destruir != 0) {\n"
-            "                rayo_say(\"call esfera_destruir %u\");\n"
-            "                fflush(stdout);\n"
-            "                esfera_destruir(e);\n"
-            "                rayo_say(\"result esfera_destruir %u 0\");\n"
-            "            }\n"
-            "        }\n"
-            "        fflush(stdout);\n",
-            s, c[0], c[1], k, k, k, k);
-        break;
-    case F_LUZ_CREAR:
-        put_vec(t, "vector_t", "a", a);
-        put_vec(t, "color_t", "b", b);
-        harness_append(t, "        luz_t *l;\n");
-        announce(t, name, k);
-        harness_append(
-            t,
-            "        l = luz_crear(a, b, %d);\n"
-            "        if (l == NULL) {\n"
-            "            rayo_say(\"result luz_crear %u null\");\n"
-            "        } else {\n"
-            "            rayo_say(\"result luz_crear %u %%.9g %%.9g %%.9g "
-            "%%.9g %%.9g %%.9g %%d\", l->posicion.x, l->posicion.y, "
-            "l->posicion.z, l->color.r, l->color.g, l->color.b, "
-            "(int)l->es_puntual);\n"
-            "            fflush(stdout);\n"
-            "            if (luz_destruir != 0) {\n"
-            "                rayo_say(\"call luz_destruir %u\");\n"
-            "                fflush(stdout);\n"
-            "                luz_destruir(l);\n"
-            "                rayo_say(\"result luz_destruir %u 0\");\n"
-            "            }\n"
-            "        }\n"
-            "        fflush(stdout);\n",
-            s != 0, k, k, k, k);
-        break;
-    default: /* F_DISTANCIA */
-        harness_append(t, "        esfera_t e = {{%.9g, %.9g, %.9g}, %.9g, "
-                          "{1, 1, 1}, 1, 1};\n",
-                       a[0], a[1], a[2], s);
-        put_vec(t, "vector_t", "o", b);
-        put_vec(t, "vector_t", "d", c);
-        harness_append(t, "        vector_t p = {12345, 12345, 12345};\n"
-                          "        vector_t n = {12345, 12345, 12345};\n"
-                          "        double v;\n");
-        announce(t, name, k);
-        harness_append(t, "        v = esfera_distancia(&e, o, d, &p, &n);\n"
-                          "        rayo_say(\"result esfera_distancia %u "
-                          "%%.9g %%.9g %%.9g %%.9g %%.9g %%.9g %%.9g\", "
-                          "v, p.x, p.y, p.z, n.x, n.y, n.z);\n"
-                          "        fflush(stdout);\n",
-                       k);
-        break;
-    }
-    harness_append(t, "    }\n");
+    harness_append(t, "c %s %u", functions[v->function].name, k);
+    put_numbers(t, a, 3);
+    put_numbers(t, b, 3);
+    put_numbers(t, c, 3);
+    put_numbers(t, &s, 1);
+    harness_append(t, "\n");
 }
 
-/* arreglo_agregar: three additions, then one with allocation failing
-   (after as many more as it makes without asking for memory). */
-static const char agregar_source[] =
-    "    if (arreglo_agregar != 0) {\n"
-    "        static int x[70];\n"
-    "        arreglo_t a = {NULL, 0};\n"
-    "        void *saved[70];\n"
-    "        void **before;\n"
-    "        size_t n, i;\n"
-    "        int r0, r1, r2, r, same = 1, guard;\n"
-    "        rayo_say(\"call arreglo_agregar 0\");\n"
-    "        fflush(stdout);\n"
-    "        r0 = arreglo_agregar(&a, &x[0]);\n"
-    "        r1 = arreglo_agregar(&a, &x[1]);\n"
-    "        r2 = arreglo_agregar(&a, &x[2]);\n"
-    "        guard = (void *)a.v != (void *)rayo_last_block ||\n"
-    "                rayo_guard_intact();\n"
-    "        for (i = 0; i < 3 && a.v != NULL && a.n == 3; i++)\n"
-    "            same &= a.v[i] == (void *)&x[i];\n"
-    "        rayo_say(\"result arreglo_agregar 0 %d %d %d %lu %d %d %d "
-    "%lu\",\n"
-    "               r0, r1, r2, (unsigned long)a.n, a.v != NULL, same,\n"
-    "               guard, (unsigned long)rayo_last_size);\n"
-    "        fflush(stdout);\n"
-    "        if (a.v == NULL || a.n != 3 || !same) {\n"
-    "            rayo_say(\"done\");\n"
-    "            return 0;\n"
-    "        }\n"
-    "        rayo_say(\"call arreglo_agregar 1\");\n"
-    "        fflush(stdout);\n"
-    "        for (i = 3; i < 67; i++) {\n"
-    "            before = a.v;\n"
-    "            n = a.n;\n"
-    "            memcpy(saved, a.v, n * sizeof *saved);\n"
-    "            rayo_alloc_tries = 0;\n"
-    "            rayo_fail_alloc = 1;\n"
-    "            r = arreglo_agregar(&a, &x[i]);\n"
-    "            rayo_fail_alloc = 0;\n"
-    "            if (rayo_alloc_tries > 0 || !r || a.n != n + 1)\n"
-    "                break;\n"
-    "        }\n"
-    "        same = a.v == before && a.v != NULL &&\n"
-    "               memcmp(saved, a.v, n * sizeof *saved) == 0;\n"
-    "        rayo_say(\"result arreglo_agregar 1 %u %d %lu %lu %d %d %d"
-    "\",\n"
-    "               rayo_alloc_tries, r, (unsigned long)n,\n"
-    "               (unsigned long)a.n, a.v == NULL, a.v == before, "
-    "same);\n"
-    "        fflush(stdout);\n"
-    "    }\n";
-
+/* "c computar_intensidad K", the counts, each sphere, each light, the
+   ambient colour, o and d. */
 static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
 {
+    static const double o[3] = {0, 0, 0};
     scene s;
-    double d[3];
+    double d[3], point;
     size_t i;
     ray_scene(rc, &s, d);
-    harness_append(t, "    if (computar_intensidad != 0) {\n"
-                      "        static esfera_t es[] = {");
-    for (i = 0; i < s.spheres; i++)
-        harness_append(t, "%s\n            {{%.9g, %.9g, %.9g}, %.9g, "
-                          "{%.9g, %.9g, %.9g}, %.9g, %.9g}",
-                       i > 0 ? "," : "", s.s[i].c[0], s.s[i].c[1],
-                       s.s[i].c[2], s.s[i].r, s.s[i].color[0],
-                       s.s[i].color[1], s.s[i].color[2], s.s[i].ka,
-                       s.s[i].kd);
-    harness_append(t, "};\n        static luz_t ls[] = {");
-    for (i = 0; i < s.lights; i++)
-        harness_append(t, "%s\n            {{%.9g, %.9g, %.9g}, "
-                          "{%.9g, %.9g, %.9g}, %d}",
-                       i > 0 ? "," : "", s.l[i].v[0], s.l[i].v[1],
-                       s.l[i].v[2], s.l[i].color[0], s.l[i].color[1],
-                       s.l[i].color[2], s.l[i].point);
-    harness_append(t, "};\n        void *ev[%zu], *lv[%zu];\n"
-                      "        arreglo_t esferas = {ev, %zu};\n"
-                      "        arreglo_t luces = {lv, %zu};\n"
-                      "        size_t i;\n",
-                   s.spheres, s.lights, s.spheres, s.lights);
-    put_vec(t, "color_t", "ambiente", s.ambient);
-    put_vec(t, "vector_t", "o", (const double[3]){0, 0, 0});
-    put_vec(t, "vector_t", "d", d);
-    harness_append(t, "        color_t c;\n"
-                      "        for (i = 0; i < %zu; i++)\n"
-                      "            ev[i] = &es[i];\n"
-                      "        for (i = 0; i < %zu; i++)\n"
-                      "            lv[i] = &ls[i];\n",
-                   s.spheres, s.lights);
-    announce(t, "computar_intensidad", k);
-    harness_append(t, "        c = computar_intensidad(&esferas, &luces, "
-                      "ambiente, o, d);\n");
-    result3(t, "computar_intensidad", k, "0", "c");
-    harness_append(t, "    }\n");
+    harness_append(t, "c computar_intensidad %u %zu %zu", k, s.spheres,
+                   s.lights);
+    for (i = 0; i < s.spheres; i++) {
+        put_numbers(t, s.s[i].c, 3);
+        put_numbers(t, &s.s[i].r, 1);
+        put_numbers(t, s.s[i].color, 3);
+        put_numbers(t, &s.s[i].ka, 1);
+        put_numbers(t, &s.s[i].kd, 1);
+    }
+    for (i = 0; i < s.lights; i++) {
+        point = s.l[i].point;
+        put_numbers(t, s.l[i].v, 3);
+        put_numbers(t, s.l[i].color, 3);
+        put_numbers(t, &point, 1);
+    }
+    put_numbers(t, s.ambient, 3);
+    put_numbers(t, o, 3);
+    put_numbers(t, d, 3);
+    harness_append(t, "\n");
 }
 
-/* The allocation functions as the student's objects see them: made to
-   fail while rayo_fail_alloc is set; otherwise each block has 32 guard
-   bytes past the size asked for, so that a write past its end is seen
-   (the last block and its size are kept). */
-static const char wrap_source[] =
-    "#define RAYO_GUARD 32\n"
-    "static int rayo_fail_alloc;\n"
-    "static unsigned rayo_alloc_tries;\n"
-    "static unsigned char *rayo_last_block;\n"
-    "static size_t rayo_last_size;\n"
-    "void *__real_malloc(size_t);\n"
-    "void *__real_calloc(size_t, size_t);\n"
-    "void *__real_realloc(void *, size_t);\n"
-    "void *__wrap_malloc(size_t n);\n"
-    "void *__wrap_calloc(size_t n, size_t m);\n"
-    "void *__wrap_realloc(void *p, size_t n);\n"
-    "static void *rayo_guard(void *p, size_t n)\n"
-    "{\n"
-    "    if (p != NULL) {\n"
-    "        memset((unsigned char *)p + n, 0xa5, RAYO_GUARD);\n"
-    "        rayo_last_block = p;\n"
-    "        rayo_last_size = n;\n"
-    "    }\n"
-    "    return p;\n"
-    "}\n"
-    "static int rayo_guard_intact(void)\n"
-    "{\n"
-    "    size_t i;\n"
-    "    for (i = 0; i < RAYO_GUARD; i++)\n"
-    "        if (rayo_last_block[rayo_last_size + i] != 0xa5)\n"
-    "            return 0;\n"
-    "    return 1;\n"
-    "}\n"
-    "void *__wrap_malloc(size_t n)\n"
-    "{\n"
-    "    if (rayo_fail_alloc) {\n"
-    "        rayo_alloc_tries++;\n"
-    "        return NULL;\n"
-    "    }\n"
-    "    if (n > (size_t)-1 - RAYO_GUARD)\n"
-    "        return NULL;\n"
-    "    return rayo_guard(__real_malloc(n + RAYO_GUARD), n);\n"
-    "}\n"
-    "void *__wrap_calloc(size_t n, size_t m)\n"
-    "{\n"
-    "    if (rayo_fail_alloc) {\n"
-    "        rayo_alloc_tries++;\n"
-    "        return NULL;\n"
-    "    }\n"
-    "    if (m != 0 && n > ((size_t)-1 - RAYO_GUARD) / m)\n"
-    "        return NULL;\n"
-    "    return rayo_guard(__real_calloc(n * m + RAYO_GUARD, 1), n * m);\n"
-    "}\n"
-    "void *__wrap_realloc(void *p, size_t n)\n"
-    "{\n"
-    "    if (rayo_fail_alloc) {\n"
-    "        rayo_alloc_tries++;\n"
-    "        return NULL;\n"
-    "    }\n"
-    "    if (n > (size_t)-1 - RAYO_GUARD)\n"
-    "        return NULL;\n"
-    "    return rayo_guard(__real_realloc(p, n + RAYO_GUARD), n);\n"
-    "}\n";
-
-static char *harness_source(const int *usable)
+/* The missing functions said first, then the value cases, the rays and
+   arreglo_agregar, last (its harness code may end early). */
+static void write_calls(harness_text *t, const int *usable)
 {
-    harness_text t = {NULL, 0, 0, 0};
     unsigned i, k;
-    harness_prelude(&t);
-    harness_append(&t, "#include <stddef.h>\n#include <stdio.h>\n"
-                       "#include <stdlib.h>\n#include <string.h>\n%s%s%s",
-                   mirror_types, harness_types, wrap_source);
     for (i = 0; i < F_COUNT; i++)
         if (usable[i])
-            put_prototype(&t, i, " __attribute__((weak))");
-    harness_append(&t, "int main(void)\n{\n");
-    for (i = 0; i < F_COUNT; i++)
-        if (usable[i])
-            harness_append(&t, "    if (%s == 0)\n"
-                               "        rayo_say(\"missing %s\");\n",
-                           functions[i].name, functions[i].name);
+            harness_append(t, "m %s\n", functions[i].name);
     for (k = 0; k < VALUE_CASES; k++)
         if (usable[value_cases[k].function])
-            write_value_case(&t, &value_cases[k], k);
+            write_value_case(t, &value_cases[k], k);
     for (k = 0; k < RAY_CASES && usable[F_INTENSIDAD]; k++)
-        write_ray_case(&t, &ray_cases[k], k);
+        write_ray_case(t, &ray_cases[k], k);
     if (usable[F_AGREGAR])
-        harness_append(&t, "%s", agregar_source);
-    harness_append(&t, "    rayo_say(\"done\");\n    return 0;\n}\n");
-    if (t.failed) {
-        free(t.data);
-        return NULL;
-    }
-    return t.data;
-}
-
-char *grade_functions_ej3_source(void)
-{
-    int usable[F_COUNT];
-    unsigned i;
-    for (i = 0; i < F_COUNT; i++)
-        usable[i] = 1;
-    return harness_source(usable);
+        harness_append(t, "c arreglo_agregar 0\n");
 }
 
 /* ---- what the student reads ---- */
@@ -1771,7 +1468,7 @@ static rayo_status probe_all(grade_context *ctx, probing *p,
     for (f = 0; f < F_COUNT; f++) {
         p->usable[f] = 1;
         for (t = 0; t < T_COUNT; t++)
-            if ((functions[f].types & TB(t)) &&
+            if ((function_types[f] & TB(t)) &&
                 p->type_state[t] != TYPE_OK)
                 p->usable[f] = 0;
     }
@@ -1783,7 +1480,7 @@ static rayo_status probe_all(grade_context *ctx, probing *p,
         for (f = 0; f < F_COUNT && status == RAYO_OK; f++) {
             int visible = p->usable[f];
             for (t = 0; t < T_COUNT; t++)
-                if ((functions[f].types & TB(t)) && state[t] != TYPE_OK)
+                if ((function_types[f] & TB(t)) && state[t] != TYPE_OK)
                     visible = 0;
             if (visible)
                 which[n++] = f;
@@ -1825,7 +1522,7 @@ static rayo_status say_probes(rayo_grade_item *item, const probing *p,
                           err);
     }
     for (f = 0; f < F_COUNT; f++)
-        if (functions[f].types & bad_types)
+        if (function_types[f] & bad_types)
             harness_append(&list, "%s%s", list.length > 0 ? ", " : "",
                            functions[f].name);
     if (list.failed)
@@ -1836,7 +1533,7 @@ static rayo_status say_probes(rayo_grade_item *item, const probing *p,
                             list.data);
     free(list.data);
     for (f = 0; f < F_COUNT && status == RAYO_OK; f++)
-        if (!p->usable[f] && !(functions[f].types & bad_types))
+        if (!p->usable[f] && !(function_types[f] & bad_types))
             status = grade_fail(item, err, "%s: the signature differs from "
                                            "the statement's %s (%s); not "
                                            "called",
@@ -1845,52 +1542,41 @@ static rayo_status say_probes(rayo_grade_item *item, const probing *p,
     return status;
 }
 
-static const char *const wrap_words[] = {
-    "-Wl,--wrap=malloc", "-Wl,--wrap=calloc", "-Wl,--wrap=realloc"};
-
-rayo_status grade_functions_ej3(grade_context *ctx, rayo_error *err)
+/* The exercise's own probe: types, then signatures; its findings
+   said, the functions to call in usable. */
+static rayo_status probe(grade_context *ctx, int *usable, rayo_error *err)
 {
-    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
     probing *p = malloc(sizeof *p);
-    char *errors = NULL, *source = NULL, *log = NULL;
-    grade_outcome outcome;
     unsigned f;
-    int any = 0, ok;
     rayo_status status;
     if (p == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    item->result = RAYO_GRADE_PASS;
     status = probe_all(ctx, p, err);
     for (f = 0; f < F_COUNT; f++)
-        any |= p->usable[f];
+        usable[f] = p->usable[f];
     if (status == RAYO_OK)
-        status = say_probes(item, p, err);
-    if (status == RAYO_OK && any) {
-        source = harness_source(p->usable);
-        if (source == NULL)
-            status = rayo_error_set(err, RAYO_ERR_NOMEM,
-                                    "grade: out of memory");
-        if (status == RAYO_OK)
-            status = harness_build(ctx, source, wrap_words,
-                                   sizeof wrap_words / sizeof wrap_words[0],
-                                   &ok, &errors, err);
-        if (status == RAYO_OK && !ok) {
-            status = grade_fail(item, err, "could not build the test "
-                                           "harness around the functions:");
-            if (status == RAYO_OK)
-                status = grade_quote(item, errors, 4, err);
-        } else if (status == RAYO_OK) {
-            status = harness_run(ctx, &log, &outcome, err);
-        }
-    }
-    for (f = 0; f < F_COUNT && status == RAYO_OK && log != NULL; f++)
-        if (p->usable[f])
-            status = judge(ctx, f, log, p->usable, err);
-    if (status == RAYO_OK && log != NULL)
-        status = harness_judge_ending(ctx, log, &outcome, describe, err);
-    free(log);
-    free(source);
-    free(errors);
+        status = say_probes(&ctx->report->items[RAYO_GRADE_FUNCTIONS], p,
+                            err);
     free(p);
     return status;
 }
+
+static const char *const wrap_words[] = {
+    "-Wl,--wrap=malloc", "-Wl,--wrap=calloc", "-Wl,--wrap=realloc"};
+
+/* What valgrind's frames in these functions mean. */
+static const functions_owner owners[] = {
+    {"esfera_crear", 0, "spheres made by esfera_crear are never destroyed: "
+                        "call esfera_destruir on each before freeing the "
+                        "array"},
+    {"luz_crear", 0, "lights made by luz_crear are never destroyed: call "
+                     "luz_destruir on each before freeing the array"},
+    {"arreglo_agregar", 0, "the arrays' v is never freed: free each array's "
+                           "v after destroying its elements"},
+    {"arreglo_agregar", 1, "a write past the end of v: grow it to n + 1 "
+                           "elements before writing v[n]"}};
+
+const functions_exercise functions_ej3 = {
+    functions, F_COUNT, harness_ej3_c, &harness_ej3_c_size, wrap_words,
+    sizeof wrap_words / sizeof wrap_words[0], "", 0, probe, write_calls,
+    judge, describe, owners, sizeof owners / sizeof owners[0]};

@@ -1,21 +1,23 @@
 /*
- * functions.c - the second criterion: the functions the exercise's
+ * engine.c - the second criterion: the functions the exercise's
  * statement asks for have its exact signatures and return the right
  * values on inputs chosen to reveal the usual mistakes.
  *
- * Each exercise has its own cases (functions_ej1.c, functions_ej2.c,
- * functions_ej3.c) on the shared machinery of harness.c: probe the
- * signatures, build a harness around the student's objects, run it
- * under the program's limits, read its log.  This file chooses, and
- * when the criterion fails puts the lines that say what is wrong before
- * those of the functions that were right, so the report's first line
- * is a finding.
+ * One engine for every exercise, each a table (table.h: ej1.c, ej2.c,
+ * ej3.c): probe the signatures, build the exercise's harness around
+ * the student's objects, write it its calls, run it under the
+ * program's limits, judge each function from its log, say how the run
+ * ended.  When the criterion fails, the lines that say what is wrong
+ * come before those of the functions that were right, so the report's
+ * first line is a finding.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "harness.h"
+#include "harness_sources.h"
+#include "table.h"
 
 /* A line that reports a function right ("norma: right on 4 known
    inputs", "esfera_destruir: called on what esfera_crear returned"),
@@ -98,25 +100,154 @@ static void findings_first(rayo_grade_item *item)
     free(right);
 }
 
+const functions_exercise *functions_exercise_of(int course)
+{
+    switch (course) {
+    case RAYO_COURSE_EJ2:
+        return &functions_ej2;
+    case RAYO_COURSE_EJ3:
+        return &functions_ej3;
+    default:
+        return &functions_ej1;
+    }
+}
+
+char *functions_calls(const functions_exercise *ex, const int *usable)
+{
+    harness_text t = {NULL, 0, 0, 0};
+    size_t f;
+    for (f = 0; f < ex->count; f++)
+        if (usable[f])
+            harness_append(&t, "u %s\n", ex->functions[f].name);
+    ex->write_calls(&t, usable);
+    if (t.failed) {
+        free(t.data);
+        return NULL;
+    }
+    return t.data;
+}
+
+/* The engine's probe: every prototype against every source; when one
+   fails, each on its own, its reason in reasons[f]. */
+static rayo_status probe_prototypes(grade_context *ctx,
+                                    const functions_exercise *ex,
+                                    size_t first, size_t count, int *ok,
+                                    char *reason, rayo_error *err)
+{
+    harness_text t = {NULL, 0, 0, 0};
+    size_t i;
+    rayo_status status = RAYO_OK;
+    *ok = 1;
+    harness_append(&t, "%s", ex->probe_before);
+    for (i = first; i < first + count; i++)
+        harness_append(&t, "%s;\n", ex->functions[i].prototype);
+    if (t.failed) {
+        free(t.data);
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    }
+    for (i = 0; i < ctx->source_count && *ok && status == RAYO_OK; i++)
+        status = harness_probe(ctx, i, t.data, "", ok, reason,
+                               HARNESS_REASON, err);
+    free(t.data);
+    return status;
+}
+
+static rayo_status probe(grade_context *ctx, const functions_exercise *ex,
+                         int *usable, char reasons[][HARNESS_REASON],
+                         rayo_error *err)
+{
+    size_t f;
+    int ok;
+    rayo_status status = probe_prototypes(ctx, ex, 0, ex->count, &ok,
+                                          reasons[0], err);
+    for (f = 0; f < ex->count && status == RAYO_OK; f++) {
+        usable[f] = 1;
+        if (!ok)
+            status = probe_prototypes(ctx, ex, f, 1, &usable[f], reasons[f],
+                                      err);
+    }
+    return status;
+}
+
+static rayo_status say_signature(rayo_grade_item *item,
+                                 const functions_exercise *ex, size_t f,
+                                 const char *reason, rayo_error *err)
+{
+    if (ex->assignment)
+        return grade_fail(item, err, "%s: the signature differs from the "
+                                     "assignment's %s (the compiler says: "
+                                     "%s); not called",
+                          ex->functions[f].name, ex->functions[f].prototype,
+                          reason);
+    return grade_fail(item, err, "%s: the signature differs from the "
+                                 "statement's %s (the compiler says: %s); "
+                                 "not called",
+                      ex->functions[f].name, ex->functions[f].prototype,
+                      reason);
+}
+
+/* Builds the harness and runs it on its calls: *log (NULL when it was
+   not run, the reason said). */
+static rayo_status build_and_run(grade_context *ctx,
+                                 const functions_exercise *ex,
+                                 const int *usable, char **log,
+                                 grade_outcome *outcome, rayo_error *err)
+{
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
+    char *errors = NULL, *calls = functions_calls(ex, usable);
+    int ok;
+    rayo_status status = RAYO_OK;
+    if (calls == NULL)
+        status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    if (status == RAYO_OK)
+        status = harness_build(ctx, ex->harness, *ex->harness_size,
+                               ex->link, ex->link_count, &ok, &errors, err);
+    if (status == RAYO_OK && !ok) {
+        status = grade_fail(item, err, "could not build the test harness "
+                                       "around the functions:");
+        if (status == RAYO_OK)
+            status = grade_quote(item, errors, 4, err);
+    } else if (status == RAYO_OK) {
+        status = harness_run(ctx, calls, log, outcome, err);
+    }
+    free(errors);
+    free(calls);
+    return status;
+}
+
 rayo_status grade_step_functions(grade_context *ctx, rayo_error *err)
 {
+    const functions_exercise *ex =
+        functions_exercise_of(ctx->options->exercise->course);
+    rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
+    int usable[FUNCTIONS_MAX], any = 0;
+    char (*reasons)[HARNESS_REASON] = calloc(FUNCTIONS_MAX, sizeof *reasons);
+    char *log = NULL;
+    grade_outcome outcome;
+    size_t f;
     rayo_status status;
-    switch (ctx->options->exercise->course) {
-    case RAYO_COURSE_EJ2:
-        status = grade_functions_ej2(ctx, err);
-        break;
-    case RAYO_COURSE_EJ3:
-        status = grade_functions_ej3(ctx, err);
-        break;
-    case RAYO_COURSE_EJ1:
-    case RAYO_COURSE_EXERCISES:
-    default:
-        status = grade_functions_ej1(ctx, err);
-        break;
+    if (reasons == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    item->result = RAYO_GRADE_PASS;
+    status = ex->probe != NULL ? ex->probe(ctx, usable, err)
+                               : probe(ctx, ex, usable, reasons, err);
+    for (f = 0; f < ex->count; f++)
+        any |= usable[f];
+    if (status == RAYO_OK && any)
+        status = build_and_run(ctx, ex, usable, &log, &outcome, err);
+    for (f = 0; f < ex->count && status == RAYO_OK; f++) {
+        if (!usable[f] && ex->probe == NULL)
+            status = say_signature(item, ex, f, reasons[f], err);
+        else if (usable[f] && log != NULL)
+            status = ex->judge(ctx, (unsigned)f, log, usable, err);
     }
+    if (status == RAYO_OK && log != NULL)
+        status = harness_judge_ending(ctx, log, &outcome, ex->describe, err);
     if (status == RAYO_OK) {
-        findings_first(&ctx->report->items[RAYO_GRADE_FUNCTIONS]);
-        sum_up(&ctx->report->items[RAYO_GRADE_FUNCTIONS]);
+        findings_first(item);
+        sum_up(item);
     }
+    free(log);
+    free(reasons);
     return status;
 }
