@@ -202,5 +202,12 @@ static rayo_status judge(grade_context *ctx, unsigned f, const char *log,
 }
 
 const functions_exercise functions_ej1 = {
-    functions, FUNCTION_COUNT, harness_ej1_c, &harness_ej1_c_size, NULL, 0,
-    "", 1, NULL, write_calls, judge, describe, NULL, 0};
+    .functions = functions,
+    .count = FUNCTION_COUNT,
+    .harness = harness_ej1_c,
+    .harness_size = &harness_ej1_c_size,
+    .probe_before = "",
+    .assignment = 1,
+    .write_calls = write_calls,
+    .judge = judge,
+    .describe = describe};

@@ -64,6 +64,13 @@ void harness_append(harness_text *t, const char *format, ...)
     }
 }
 
+void harness_numbers(harness_text *t, const double *v, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        harness_append(t, " %.9g", v[i]);
+}
+
 rayo_status harness_cc(grade_context *ctx, const char *const *words,
                        size_t count, int *ok, char **errors,
                        rayo_error *err)

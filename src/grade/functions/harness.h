@@ -33,6 +33,10 @@ typedef struct harness_text {
 void harness_append(harness_text *t, const char *format, ...)
     GRADE_PRINTF(2, 3);
 
+/* " %.9g" for each of v[0..n-1]: numbers of a harness record, each
+   read back as the float it was. */
+void harness_numbers(harness_text *t, const double *v, size_t n);
+
 /* Runs the compiler words (its own first) in the current directory: ok
    when it exits 0; its standard error in *errors (allocated). */
 rayo_status harness_cc(grade_context *ctx, const char *const *words,
