@@ -146,8 +146,9 @@ $(BUILD)/obj/gen/course_png.o: $(BUILD)/gen/course_png.c | $(BUILD)/.deps-build
 
 # The functions harnesses as bytes (harness_sources.h), which the
 # grader writes beside a student's objects; `make check` also compiles
-# each on its own with the course's flags against the stand-in functions
-# of tests/harness/, so that a typo in one fails the checks, not a grade.
+# each on its own with the course's flags and links it, as the grader
+# does, with a right student program of tests/grade/, so that a typo in
+# a harness fails the checks, not a grade (t_grade_functions runs them).
 HARNESS_FILES := $(HARNESS_DIR)/rayo_harness.h \
                  $(sort $(wildcard $(HARNESS_DIR)/*.c))
 $(BUILD)/gen/harness_src.c: scripts/embed.sh $(HARNESS_FILES)
@@ -163,14 +164,22 @@ $(BUILD)/obj/gen/harness_src.o: $(BUILD)/gen/harness_src.c | $(BUILD)/.deps-buil
 	$(Q)$(CC) $(ALL_CFLAGS) -Isrc/grade/functions -c $< -o $@
 
 HARNESS_BIN := $(patsubst $(HARNESS_DIR)/%.c,$(BUILD)/harness/%,$(sort $(wildcard $(HARNESS_DIR)/*.c)))
+HARNESS_STUDENT_ej1 := tests/grade/correct/main.c
+HARNESS_STUDENT_ej2 := tests/grade/ej2_correct/main.c
+HARNESS_STUDENT_ej3 := tests/grade/ej3_correct/main.c
 HARNESS_LINK_ej3 := -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
 check check-valgrind: $(HARNESS_BIN)
+$(BUILD)/harness/ej1: $(HARNESS_STUDENT_ej1)
+$(BUILD)/harness/ej2: $(HARNESS_STUDENT_ej2)
+$(BUILD)/harness/ej3: $(HARNESS_STUDENT_ej3)
 
-$(BUILD)/harness/%: $(HARNESS_DIR)/%.c $(HARNESS_DIR)/rayo_harness.h tests/harness/stub_%.c
+$(BUILD)/harness/%: $(HARNESS_DIR)/%.c $(HARNESS_DIR)/rayo_harness.h
 	@mkdir -p $(dir $@)
 	$(call say,CC,$<)
-	$(Q)$(CC) -std=c99 -Wall -Werror -pedantic $(OPT) $(CFLAGS) $(LDFLAGS) \
-	    -o $@ $< tests/harness/stub_$*.c $(HARNESS_LINK_$*) -lm
+	$(Q)$(CC) -std=c99 -Wall -Werror -pedantic $(OPT) $(CFLAGS) -c -o $@.o $<
+	$(Q)$(CC) -std=c99 -w -Dmain=rayo_student_main $(OPT) $(CFLAGS) -c \
+	    -o $@.student.o $(HARNESS_STUDENT_$*)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $@.o $@.student.o $(HARNESS_LINK_$*) -lm
 
 $(BUILD)/locale/%/LC_MESSAGES/rayo.mo: po/%.po | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)

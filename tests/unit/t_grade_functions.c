@@ -335,12 +335,12 @@ static void test_course_scenes(void)
     is_int((long)bad, 0, "ej2: every centre and radius is the course's");
 }
 
-/* Each harness as `make check` builds it (RAYO_BUILD/harness/ejN,
-   against the stand-ins of tests/harness/) run on the records its table
-   writes: every call record gets its result line, framed by the nonce,
-   and the run says "done"; with ej1's stand-ins, which are right, the
-   values are the expected ones. */
-static void test_stub_harness(const char *name, const functions_exercise *ex)
+/* Each harness as `make check` builds it (RAYO_BUILD/harness/ejN, linked
+   with the exercise's right program of tests/grade/) run on the records
+   its table writes: every call record gets its result line, framed by
+   the nonce, and the run says "done"; ej1's values are the expected
+   ones. */
+static void test_built_harness(const char *name, const functions_exercise *ex)
 {
     const char *build = getenv("RAYO_BUILD");
     char harness[4096], in[64] = "/tmp/t_functions_inXXXXXX", out[64];
@@ -394,7 +394,7 @@ static void test_stub_harness(const char *name, const functions_exercise *ex)
        "%s: a result for each of its %zu calls (%zu)", name, calls, results);
     is_int((long)done, 1, "%s: the harness says done", name);
     if (strcmp(name, "ej1") == 0)
-        is_int((long)right, 2, "ej1: the stand-ins' values come back");
+        is_int((long)right, 2, "ej1: the right program's values come back");
     remove(in);
     remove(out);
     free(records);
@@ -626,9 +626,9 @@ int main(void)
     test_notes();
     test_shorten();
     test_course_scenes();
-    test_stub_harness("ej1", &functions_ej1);
-    test_stub_harness("ej2", &functions_ej2);
-    test_stub_harness("ej3", &functions_ej3);
+    test_built_harness("ej1", &functions_ej1);
+    test_built_harness("ej2", &functions_ej2);
+    test_built_harness("ej3", &functions_ej3);
     test_not_finite();
     test_ej2();
     test_ej3();

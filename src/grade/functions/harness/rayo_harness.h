@@ -9,7 +9,7 @@
  * standard input is closed.  Each protocol line is said by rayo_say,
  * framed by the nonce.  A harness defines rayo_present and rayo_call;
  * this file gives main.  Compiled with the student's objects by the
- * grader, and on its own by `make check` against stub functions.
+ * grader, and by `make check` with a right program of tests/grade/.
  */
 #ifndef RAYO_HARNESS_H
 #define RAYO_HARNESS_H
