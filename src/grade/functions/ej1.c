@@ -90,23 +90,21 @@ static double expected(const function_spec *f, const double *a)
     }
 }
 
-/* The harness's records: for each usable function "m NAME", then its
-   cases "c NAME K" and the six arguments (unused ones 0). */
+/* The harness's records: each usable function's cases, "c NAME K" and
+   the six arguments (unused ones 0). */
 static void write_calls(harness_text *t, const int *usable)
 {
     size_t i;
-    unsigned c, k;
+    unsigned c;
     for (i = 0; i < FUNCTION_COUNT; i++) {
         const function_spec *f = &ej1_functions[i];
         if (!usable[i])
             continue;
-        harness_append(t, "m %s\n", name_of(f));
         for (c = 0; c < f->case_count; c++) {
             double args[MAX_ARGS] = {0};
             case_args(f, c, args);
             harness_append(t, "c %s %u", name_of(f), c);
-            for (k = 0; k < MAX_ARGS; k++)
-                harness_append(t, " %.9g", args[k]);
+            harness_numbers(t, args, MAX_ARGS);
             harness_append(t, "\n");
         }
     }

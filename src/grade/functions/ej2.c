@@ -227,10 +227,7 @@ static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
 
 static void write_calls(harness_text *t, const int *usable)
 {
-    unsigned i, k;
-    for (i = 0; i < F_COUNT; i++)
-        if (usable[i])
-            harness_append(t, "m %s\n", ej2_functions[i].name);
+    unsigned k;
     for (k = 0; k < ej2_vector_case_count; k++)
         if (usable[ej2_vector_cases[k].function])
             write_vector_case(t, &ej2_vector_cases[k], k);

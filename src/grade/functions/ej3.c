@@ -232,14 +232,11 @@ static void write_ray_case(harness_text *t, const ray_case *rc, unsigned k)
     harness_append(t, "\n");
 }
 
-/* The missing functions said first, then the value cases, the rays and
-   arreglo_agregar, last (its harness code may end early). */
+/* The value cases, then the rays, then arreglo_agregar, last (its
+   harness code may end early). */
 static void write_calls(harness_text *t, const int *usable)
 {
-    unsigned i, k;
-    for (i = 0; i < F_COUNT; i++)
-        if (usable[i])
-            harness_append(t, "m %s\n", ej3_functions[i].name);
+    unsigned k;
     for (k = 0; k < ej3_value_case_count; k++)
         if (usable[ej3_value_cases[k].function])
             write_value_case(t, &ej3_value_cases[k], k);

@@ -118,6 +118,9 @@ char *functions_calls(const functions_exercise *ex, const int *usable)
     for (f = 0; f < ex->count; f++)
         if (usable[f])
             harness_append(&t, "u %s\n", ex->functions[f].name);
+    for (f = 0; f < ex->count; f++)
+        if (usable[f])
+            harness_append(&t, "m %s\n", ex->functions[f].name);
     ex->write_calls(&t, usable);
     if (t.failed) {
         free(t.data);

@@ -49,7 +49,8 @@ typedef struct functions_exercise {
     /* Or the exercise's own probe (ej3's types), which says its own
        findings and sets usable[f] for the functions to call. */
     rayo_status (*probe)(grade_context *ctx, int *usable, rayo_error *err);
-    /* The harness's records for the usable functions (rayo_harness.h). */
+    /* The harness's call records for the usable functions
+       (rayo_harness.h); the engine writes their "u" and "m" first. */
     void (*write_calls)(harness_text *t, const int *usable);
     /* Judges function f, usable, from the log. */
     rayo_status (*judge)(grade_context *ctx, unsigned f, const char *log,
@@ -64,8 +65,8 @@ extern const functions_exercise functions_ej1, functions_ej2, functions_ej3;
 /* The table of an exercise (ej1's for RAYO_COURSE_EXERCISES). */
 const functions_exercise *functions_exercise_of(int course);
 
-/* The records an exercise's harness is given (usable: every function),
-   the "u" lines first; NULL when memory runs out.  For the tests. */
+/* The records an exercise's harness is given for the usable functions:
+   "u" and "m" for each, then its calls; NULL when memory runs out. */
 char *functions_calls(const functions_exercise *ex, const int *usable);
 
 #endif
