@@ -18,11 +18,12 @@
  * own.  Programs it executes run under valgrind too
  * (--trace-children=yes).  Skipped when valgrind is not installed.
  *
- * Where the frame valgrind names is a function the exercise's functions
+ * Where the frame valgrind names is a function an exercise's functions
  * table lists as an owner (functions/table.h: exercise 3's esfera_crear,
  * luz_crear, arreglo_agregar), the mistake is also said in the
  * statement's terms: which destructor was not called, or that
- * arreglo_agregar writes past the end of v.
+ * arreglo_agregar writes past the end of v.  By the frame's function
+ * name, whichever exercise is graded.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -150,7 +151,6 @@ static long long summary_errors(const vg_text *log)
 }
 
 static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
-                                 const functions_exercise *ex,
                                  unsigned *count, rayo_error *err)
 {
     size_t pos = 0;
@@ -164,6 +164,7 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
             continue;
         for (k = 0; k < ERROR_KINDS; k++) {
             char text[512], frame[512];
+            const functions_owner *owner;
             size_t o;
             if (!vg_begins(&line, error_kinds[k]))
                 continue;
@@ -175,12 +176,12 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
                 status = grade_fail(item, err, "%s, at %s", text, frame);
             else
                 status = grade_fail(item, err, "%s", text);
-            for (o = 0; o < ex->owner_count && status == RAYO_OK; o++)
-                if (ex->owners[o].write &&
-                    frame_is(frame, ex->owners[o].function) &&
+            for (o = 0; (owner = functions_owner_at(o)) != NULL &&
+                        status == RAYO_OK;
+                 o++)
+                if (owner->write && frame_is(frame, owner->function) &&
                     strncmp(text, "Invalid write", 13) == 0)
-                    status = grade_say(item, err, "%s",
-                                       ex->owners[o].explanation);
+                    status = grade_say(item, err, "%s", owner->explanation);
             break;
         }
     }
@@ -190,32 +191,31 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
     return status;
 }
 
-/* For each lost block made by one of the exercise's owners, once, what
+/* For each lost block made by one of the exercises' owners, once, what
    was not destroyed or freed. */
 static rayo_status explain_constructor_leaks(rayo_grade_item *item,
                                              const vg_text *log,
-                                             const functions_exercise *ex,
                                              rayo_error *err)
 {
-    int said[FUNCTIONS_MAX] = {0};
+    int said[3 * FUNCTIONS_MAX] = {0};
     size_t pos = 0;
     rayo_status status = RAYO_OK;
     vg_line line;
     while (status == RAYO_OK &&
            vg_next_line(log->data, log->size, &pos, &line)) {
         char frame[512];
+        const functions_owner *owner;
         size_t k;
         if (vg_find(&line, " lost in loss record") == NULL)
             continue;
         first_frame(log, pos, frame, sizeof frame);
-        for (k = 0; k < ex->owner_count && k < FUNCTIONS_MAX &&
-                    status == RAYO_OK;
+        for (k = 0; (owner = functions_owner_at(k)) != NULL &&
+                    k < sizeof said / sizeof said[0] && status == RAYO_OK;
              k++) {
-            if (said[k] || ex->owners[k].write ||
-                !frame_is(frame, ex->owners[k].function))
+            if (said[k] || owner->write || !frame_is(frame, owner->function))
                 continue;
             said[k] = 1;
-            status = grade_say(item, err, "%s", ex->owners[k].explanation);
+            status = grade_say(item, err, "%s", owner->explanation);
         }
     }
     return status;
@@ -234,8 +234,7 @@ static size_t after_line_with(const vg_text *log, const char *word)
 }
 
 static rayo_status report_leaks(rayo_grade_item *item, const vg_text *log,
-                                const functions_exercise *ex, int *leaked,
-                                rayo_error *err)
+                                int *leaked, rayo_error *err)
 {
     static const char *const kinds[] = {"definitely lost", "indirectly lost",
                                         "possibly lost"};
@@ -268,7 +267,7 @@ static rayo_status report_leaks(rayo_grade_item *item, const vg_text *log,
                                           "in %s",
                                frame);
         if (status == RAYO_OK)
-            status = explain_constructor_leaks(item, log, ex, err);
+            status = explain_constructor_leaks(item, log, err);
     }
     bytes = leak_bytes(log, "still reachable", &blocks);
     if (status == RAYO_OK && bytes > 0)
@@ -330,8 +329,6 @@ static rayo_status read_log(grade_context *ctx, const grade_captured *got,
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_VALGRIND];
     const grade_outcome *outcome = &got->outcome;
-    const functions_exercise *ex =
-        functions_exercise_of(ctx->options->exercise->course);
     vg_text log;
     vg_signs signs;
     unsigned errors;
@@ -378,9 +375,9 @@ static rayo_status read_log(grade_context *ctx, const grade_captured *got,
             status = quote_log(item, &log, 0, 4, err);
         return status;
     }
-    status = report_errors(item, &log, ex, &errors, err);
+    status = report_errors(item, &log, &errors, err);
     if (status == RAYO_OK)
-        status = report_leaks(item, &log, ex, &leaked, err);
+        status = report_leaks(item, &log, &leaked, err);
     /* Leaks count as errors in valgrind's summary. */
     if (status == RAYO_OK && errors == 0 && !leaked && counted > 0)
         status = grade_fail(item, err, "valgrind counted %lld errors",

@@ -111,6 +111,19 @@ const functions_exercise *functions_exercise_of(int course)
     }
 }
 
+const functions_owner *functions_owner_at(size_t k)
+{
+    static const functions_exercise *const all[] = {
+        &functions_ej1, &functions_ej2, &functions_ej3};
+    size_t i;
+    for (i = 0; i < sizeof all / sizeof all[0]; i++) {
+        if (k < all[i]->owner_count)
+            return &all[i]->owners[k];
+        k -= all[i]->owner_count;
+    }
+    return NULL;
+}
+
 char *functions_calls(const functions_exercise *ex, const int *usable)
 {
     harness_text t = {NULL, 0, 0, 0};
