@@ -198,12 +198,7 @@ static void write_vector_case(harness_text *t, const vector_case *v,
 {
     double a[3], b[3], c[3], s;
     ej2_case_args(v, a, b, c, &s);
-    harness_append(t, "c %s %u", ej2_functions[v->function].name, k);
-    harness_numbers(t, a, 3);
-    harness_numbers(t, b, 3);
-    harness_numbers(t, c, 3);
-    harness_numbers(t, &s, 1);
-    harness_append(t, "\n");
+    harness_vector_record(t, ej2_functions[v->function].name, k, a, b, c, s);
 }
 
 /* "c computar_intensidad K", n, the centres, the radii, luz, o, d. */

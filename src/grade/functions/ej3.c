@@ -194,12 +194,7 @@ static void write_value_case(harness_text *t, const value_case *v,
 {
     double a[3], b[3], c[3], s;
     ej3_value_args(v, a, b, c, &s);
-    harness_append(t, "c %s %u", ej3_functions[v->function].name, k);
-    harness_numbers(t, a, 3);
-    harness_numbers(t, b, 3);
-    harness_numbers(t, c, 3);
-    harness_numbers(t, &s, 1);
-    harness_append(t, "\n");
+    harness_vector_record(t, ej3_functions[v->function].name, k, a, b, c, s);
 }
 
 /* "c computar_intensidad K", the counts, each sphere, each light, the

@@ -71,6 +71,18 @@ void harness_numbers(harness_text *t, const double *v, size_t n)
         harness_append(t, " %.9g", v[i]);
 }
 
+void harness_vector_record(harness_text *t, const char *name, unsigned k,
+                           const double *a, const double *b,
+                           const double *c, double s)
+{
+    harness_append(t, "c %s %u", name, k);
+    harness_numbers(t, a, 3);
+    harness_numbers(t, b, 3);
+    harness_numbers(t, c, 3);
+    harness_numbers(t, &s, 1);
+    harness_append(t, "\n");
+}
+
 rayo_status harness_cc(grade_context *ctx, const char *const *words,
                        size_t count, int *ok, char **errors,
                        rayo_error *err)

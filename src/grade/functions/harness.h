@@ -37,6 +37,12 @@ void harness_append(harness_text *t, const char *format, ...)
    read back as the float it was. */
 void harness_numbers(harness_text *t, const double *v, size_t n);
 
+/* The record "c NAME K" of a call on three vectors and a scalar, the
+   shape EJ2's and EJ3's value cases share. */
+void harness_vector_record(harness_text *t, const char *name, unsigned k,
+                           const double *a, const double *b,
+                           const double *c, double s);
+
 /* Runs the compiler words (its own first) in the current directory: ok
    when it exits 0; its standard error in *errors (allocated). */
 rayo_status harness_cc(grade_context *ctx, const char *const *words,
