@@ -72,13 +72,17 @@ SO_MAJOR := 0
 SO_NAME := librayo.so.$(SO_MAJOR)
 LIB_CFLAGS := -fPIC -fvisibility=hidden
 
-LIB_SRC := $(sort $(shell find src -name '*.c'))
+# The functions harnesses (src/grade/functions/harness/) are programs of
+# their own, built into the library as text, not compiled into it.
+HARNESS_DIR := src/grade/functions/harness
+LIB_SRC := $(sort $(filter-out $(HARNESS_DIR)/%,$(shell find src -name '*.c')))
 CLI_SRC := $(sort $(wildcard cli/*.c))
 UNIT_SRC := $(sort $(wildcard tests/unit/t_*.c))
 UNIT_SUPPORT := $(filter-out $(UNIT_SRC),$(wildcard tests/unit/*.c))
 BENCH_SRC := $(sort $(wildcard bench/*.c))
 
-LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/course_png.o
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/course_png.o \
+           $(BUILD)/obj/gen/harness_src.o
 CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 UNIT_BIN := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 UNIT_SUPPORT_OBJ := $(UNIT_SUPPORT:%.c=$(BUILD)/obj/%.o)
@@ -139,6 +143,43 @@ $(BUILD)/obj/gen/course_png.o: $(BUILD)/gen/course_png.c | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)
 	$(call say,CC,$<)
 	$(Q)$(CC) $(ALL_CFLAGS) -Isrc/course -c $< -o $@
+
+# The functions harnesses as bytes (harness_sources.h), which the
+# grader writes beside a student's objects; `make check` also compiles
+# each on its own with the course's flags and links it, as the grader
+# does, with a right student program of tests/grade/, so that a typo in
+# a harness fails the checks, not a grade (t_grade_functions runs them).
+HARNESS_FILES := $(HARNESS_DIR)/rayo_harness.h \
+                 $(sort $(wildcard $(HARNESS_DIR)/*.c))
+$(BUILD)/gen/harness_src.c: scripts/embed.sh $(HARNESS_FILES)
+	@mkdir -p $(dir $@)
+	$(call say,GEN,$@)
+	$(Q)scripts/embed.sh --header harness_sources.h $(foreach f,$(HARNESS_FILES),\
+	    harness_$(subst .,_,$(notdir $(f)))=$(f)) >$@.tmp
+	$(Q)mv $@.tmp $@
+
+$(BUILD)/obj/gen/harness_src.o: $(BUILD)/gen/harness_src.c | $(BUILD)/.deps-build
+	@mkdir -p $(dir $@)
+	$(call say,CC,$<)
+	$(Q)$(CC) $(ALL_CFLAGS) -Isrc/grade/functions -c $< -o $@
+
+HARNESS_BIN := $(patsubst $(HARNESS_DIR)/%.c,$(BUILD)/harness/%,$(sort $(wildcard $(HARNESS_DIR)/*.c)))
+HARNESS_STUDENT_ej1 := tests/grade/correct/main.c
+HARNESS_STUDENT_ej2 := tests/grade/ej2_correct/main.c
+HARNESS_STUDENT_ej3 := tests/grade/ej3_correct/main.c
+HARNESS_LINK_ej3 := -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
+check check-valgrind: $(HARNESS_BIN)
+$(BUILD)/harness/ej1: $(HARNESS_STUDENT_ej1)
+$(BUILD)/harness/ej2: $(HARNESS_STUDENT_ej2)
+$(BUILD)/harness/ej3: $(HARNESS_STUDENT_ej3)
+
+$(BUILD)/harness/%: $(HARNESS_DIR)/%.c $(HARNESS_DIR)/rayo_harness.h
+	@mkdir -p $(dir $@)
+	$(call say,CC,$<)
+	$(Q)$(CC) -std=c99 -Wall -Werror -pedantic $(OPT) $(CFLAGS) -c -o $@.o $<
+	$(Q)$(CC) -std=c99 -w -Dmain=rayo_student_main $(OPT) $(CFLAGS) -c \
+	    -o $@.student.o $(HARNESS_STUDENT_$*)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $@.o $@.student.o $(HARNESS_LINK_$*) -lm
 
 $(BUILD)/locale/%/LC_MESSAGES/rayo.mo: po/%.po | $(BUILD)/.deps-build
 	@mkdir -p $(dir $@)

@@ -21,7 +21,7 @@
 #include <string.h>
 
 #include "grade_impl.h"
-#include "harness.h"
+#include "functions/harness.h"
 
 #define COMPILE_SECONDS 120.0
 #define QUOTED_LINES 8

@@ -18,12 +18,12 @@
  * own.  Programs it executes run under valgrind too
  * (--trace-children=yes).  Skipped when valgrind is not installed.
  *
- * Where the frame valgrind names is one of the constructors exercise 3's
- * statement gives (esfera_crear, luz_crear, arreglo_agregar), the
- * mistake is also said in the statement's terms: which destructor was
- * not called, or that arreglo_agregar writes past the end of v.  The
- * explanations go by the frame's function name, so they apply to any
- * exercise whose program has those functions (ej1's have none).
+ * Where the frame valgrind names is a function an exercise's functions
+ * table lists as an owner (functions/table.h: exercise 3's esfera_crear,
+ * luz_crear, arreglo_agregar), the mistake is also said in the
+ * statement's terms: which destructor was not called, or that
+ * arreglo_agregar writes past the end of v.  By the frame's function
+ * name, whichever exercise is graded.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -32,28 +32,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "functions/table.h"
 #include "grade_impl.h"
 #include "valgrind_log.h"
 
 #define SLOWDOWN 10.0
 #define SHOWN_ERRORS 4
-
-/* A statement's constructor, and what a leak of its blocks means. */
-typedef struct constructor_leak {
-    const char *function;
-    const char *explanation;
-} constructor_leak;
-
-static const constructor_leak constructor_leaks[] = {
-    {"esfera_crear", "spheres made by esfera_crear are never destroyed: "
-                     "call esfera_destruir on each before freeing the "
-                     "array"},
-    {"luz_crear", "lights made by luz_crear are never destroyed: call "
-                  "luz_destruir on each before freeing the array"},
-    {"arreglo_agregar", "the arrays' v is never freed: free each array's "
-                        "v after destroying its elements"}};
-#define CONSTRUCTOR_LEAKS \
-    (sizeof constructor_leaks / sizeof constructor_leaks[0])
 
 /* 1 when the frame "name (file.c:12)" is in the function called name. */
 static int frame_is(const char *frame, const char *name)
@@ -180,6 +164,8 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
             continue;
         for (k = 0; k < ERROR_KINDS; k++) {
             char text[512], frame[512];
+            const functions_owner *owner;
+            size_t o;
             if (!vg_begins(&line, error_kinds[k]))
                 continue;
             if ((*count)++ >= SHOWN_ERRORS)
@@ -190,11 +176,12 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
                 status = grade_fail(item, err, "%s, at %s", text, frame);
             else
                 status = grade_fail(item, err, "%s", text);
-            if (status == RAYO_OK && frame_is(frame, "arreglo_agregar") &&
-                strncmp(text, "Invalid write", 13) == 0)
-                status = grade_say(item, err, "a write past the end of v: "
-                                              "grow it to n + 1 elements "
-                                              "before writing v[n]");
+            for (o = 0; (owner = functions_owner_at(o)) != NULL &&
+                        status == RAYO_OK;
+                 o++)
+                if (owner->write && frame_is(frame, owner->function) &&
+                    strncmp(text, "Invalid write", 13) == 0)
+                    status = grade_say(item, err, "%s", owner->explanation);
             break;
         }
     }
@@ -204,29 +191,31 @@ static rayo_status report_errors(rayo_grade_item *item, const vg_text *log,
     return status;
 }
 
-/* For each lost block made by one of the statement's constructors,
-   once, what was not destroyed or freed. */
+/* For each lost block made by one of the exercises' owners, once, what
+   was not destroyed or freed. */
 static rayo_status explain_constructor_leaks(rayo_grade_item *item,
                                              const vg_text *log,
                                              rayo_error *err)
 {
-    int said[CONSTRUCTOR_LEAKS] = {0};
+    int said[3 * FUNCTIONS_MAX] = {0};
     size_t pos = 0;
     rayo_status status = RAYO_OK;
     vg_line line;
     while (status == RAYO_OK &&
            vg_next_line(log->data, log->size, &pos, &line)) {
         char frame[512];
+        const functions_owner *owner;
         size_t k;
         if (vg_find(&line, " lost in loss record") == NULL)
             continue;
         first_frame(log, pos, frame, sizeof frame);
-        for (k = 0; k < CONSTRUCTOR_LEAKS && status == RAYO_OK; k++) {
-            if (said[k] || !frame_is(frame, constructor_leaks[k].function))
+        for (k = 0; (owner = functions_owner_at(k)) != NULL &&
+                    k < sizeof said / sizeof said[0] && status == RAYO_OK;
+             k++) {
+            if (said[k] || owner->write || !frame_is(frame, owner->function))
                 continue;
             said[k] = 1;
-            status = grade_say(item, err, "%s",
-                               constructor_leaks[k].explanation);
+            status = grade_say(item, err, "%s", owner->explanation);
         }
     }
     return status;

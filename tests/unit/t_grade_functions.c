@@ -17,10 +17,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../../src/course/course_impl.h"
 #include "../../src/grade/grade_impl.h"
-#include "../../src/grade/harness.h"
+#include "../../src/grade/functions/harness.h"
+#include "../../src/grade/functions/table.h"
 #include "rayo.h"
 #include "tap.h"
 
@@ -244,137 +246,158 @@ static void test_notes(void)
 }
 
 
-/* p past spaces, commas and newlines. */
-static const char *skip(const char *p)
-{
-    while (*p == ' ' || *p == ',' || *p == '\n')
-        p++;
-    return p;
-}
-
 static int same_float(double got, double want)
 {
     return (float)got == (float)want; /* %.9g gives a float back exactly */
 }
 
-/* The harness passes the course's scene 3 exactly as the course module
-   holds it: as many spheres and lights, every number the same (as a
-   float), in the same order; and scene 2 the same way. */
+/* The numbers of the first record "c computar_intensidad 0 ..." of an
+   exercise's calls (every function usable) into v; how many. */
+static size_t first_ray_record(const functions_exercise *ex, double *v,
+                               size_t max)
+{
+    int usable[FUNCTIONS_MAX];
+    char *calls, *p, *end;
+    size_t n = 0, f;
+    for (f = 0; f < FUNCTIONS_MAX; f++)
+        usable[f] = 1;
+    calls = functions_calls(ex, usable);
+    p = calls != NULL ? strstr(calls, "\nc computar_intensidad 0 ") : NULL;
+    if (p != NULL)
+        p += strlen("\nc computar_intensidad 0 ");
+    while (p != NULL && *p != '\n' && *p != '\0' && n < max) {
+        v[n] = strtod(p, &end);
+        if (end == p)
+            break;
+        n++;
+        p = end;
+    }
+    free(calls);
+    return n;
+}
+
+/* The harness is given the course's scene 3 exactly as the course
+   module holds it: as many spheres and lights, every number the same
+   (as a float), in the same order; and scene 2 the same way. */
 static void test_course_scenes(void)
 {
     const rayo_course_data *d3 = rayo_course_data_of(RAYO_COURSE_EJ3);
     const rayo_course_data *d2 = rayo_course_data_of(RAYO_COURSE_EJ2);
-    char *source = grade_functions_ej3_source();
-    const char *p;
-    size_t n = 0, bad = 0, i;
-    unsigned long count = 0;
-    ok(source != NULL, "ej3 harness source");
-    p = source != NULL ? strstr(source, "static esfera_t es[] = {") : NULL;
-    ok(p != NULL, "ej3: the first ray case has an array of spheres");
-    if (p != NULL) {
-        p = skip(p + strlen("static esfera_t es[] = {"));
-        while (*p == '{') {
-            double v[9];
-            int used = 0;
-            if (sscanf(p, "{{%lf, %lf, %lf}, %lf, {%lf, %lf, %lf}, %lf, "
-                          "%lf}%n",
-                       &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6],
-                       &v[7], &v[8], &used) != 9)
-                break;
-            if (n < d3->ball_count) {
-                const rayo_course_ball *b = &d3->balls[n];
-                double want[9] = {b->center[0], b->center[1], b->center[2],
-                                  b->radius,    b->color[0],  b->color[1],
-                                  b->color[2],  b->ka,        b->kd};
-                for (i = 0; i < 9; i++)
-                    if (!same_float(v[i], want[i])) {
-                        bad++;
-                        printf("# sphere %zu value %zu: %.9g, not %.9g\n", n,
-                               i, v[i], want[i]);
-                    }
+    static double v[4096];
+    size_t n = first_ray_record(&functions_ej3, v, 4096), bad = 0, i, k;
+    const double *at = v + 2;
+    ok(n > 2, "ej3: the first ray case has a record");
+    is_int((long)v[0], (long)d3->ball_count,
+           "ej3: as many spheres as the course's scene 3 (%zu)",
+           d3->ball_count);
+    is_int((long)v[1], (long)d3->lamp_count, "ej3: as many lights");
+    is_int((long)n, (long)(2 + 9 * d3->ball_count + 7 * d3->lamp_count + 9),
+           "ej3: the record's length");
+    for (i = 0; i < d3->ball_count && n > 2; i++, at += 9) {
+        const rayo_course_ball *b = &d3->balls[i];
+        double want[9] = {b->center[0], b->center[1], b->center[2],
+                          b->radius,    b->color[0],  b->color[1],
+                          b->color[2],  b->ka,        b->kd};
+        for (k = 0; k < 9; k++)
+            if (!same_float(at[k], want[k])) {
+                bad++;
+                printf("# sphere %zu value %zu: %.9g, not %.9g\n", i, k,
+                       at[k], want[k]);
             }
-            n++;
-            p = skip(p + used);
-        }
-        is_int((long)n, (long)d3->ball_count,
-               "ej3: as many spheres as the course's scene 3 (%zu)",
-               d3->ball_count);
-        is_int((long)bad, 0, "ej3: every sphere's numbers are the course's");
-        p = strstr(p, "arreglo_t esferas = {ev, ");
-        ok(p != NULL && sscanf(p, "arreglo_t esferas = {ev, %lu}", &count) ==
-                            1 &&
-               count == d3->ball_count,
-           "ej3: the array's n is the count");
-        p = strstr(source, "static luz_t ls[] = {");
-        n = bad = 0;
-        if (p != NULL)
-            p = skip(p + strlen("static luz_t ls[] = {"));
-        while (p != NULL && *p == '{') {
-            double v[6];
-            int point = -1, used = 0;
-            if (sscanf(p, "{{%lf, %lf, %lf}, {%lf, %lf, %lf}, %d}%n", &v[0],
-                       &v[1], &v[2], &v[3], &v[4], &v[5], &point,
-                       &used) != 7)
-                break;
-            if (n < d3->lamp_count) {
-                const rayo_course_lamp *l = &d3->lamps[n];
-                double length = sqrt(l->vector[0] * l->vector[0] +
-                                     l->vector[1] * l->vector[1] +
-                                     l->vector[2] * l->vector[2]);
-                for (i = 0; i < 3; i++)
-                    bad += !same_float(v[i], l->point ? l->vector[i]
-                                                      : l->vector[i] /
-                                                            length) +
-                           !same_float(v[3 + i], l->color[i]);
-                bad += point != (l->point != 0);
-            }
-            n++;
-            p = skip(p + used);
-        }
-        is_int((long)n, (long)d3->lamp_count, "ej3: as many lights");
-        is_int((long)bad, 0, "ej3: every light's numbers are the course's");
     }
-    free(source);
+    is_int((long)bad, 0, "ej3: every sphere's numbers are the course's");
+    bad = 0;
+    for (i = 0; i < d3->lamp_count && n > 2; i++, at += 7) {
+        const rayo_course_lamp *l = &d3->lamps[i];
+        double length = sqrt(l->vector[0] * l->vector[0] +
+                             l->vector[1] * l->vector[1] +
+                             l->vector[2] * l->vector[2]);
+        for (k = 0; k < 3; k++)
+            bad += !same_float(at[k], l->point ? l->vector[k]
+                                               : l->vector[k] / length) +
+                   !same_float(at[3 + k], l->color[k]);
+        bad += (at[6] != 0) != (l->point != 0);
+    }
+    is_int((long)bad, 0, "ej3: every light's numbers are the course's");
 
-    source = grade_functions_ej2_source();
-    p = source != NULL ? strstr(source, "static const float cs[][3] = {")
-                       : NULL;
-    ok(p != NULL, "ej2: the first ray case has an array of centres");
-    n = bad = 0;
-    if (p != NULL) {
-        const char *r;
-        p = skip(p + strlen("static const float cs[][3] = {"));
-        while (*p == '{') {
-            double v[3];
-            int used = 0;
-            if (sscanf(p, "{%lf, %lf, %lf}%n", &v[0], &v[1], &v[2],
-                       &used) != 3)
-                break;
-            for (i = 0; i < 3 && n < d2->ball_count; i++)
-                bad += !same_float(v[i], d2->balls[n].center[i]);
-            n++;
-            p = skip(p + used);
-        }
-        r = strstr(p, "static const float rs[] = {");
-        if (r != NULL) {
-            r += strlen("static const float rs[] = {");
-            for (i = 0; i < d2->ball_count; i++) {
-                char *end;
-                double v = strtod(skip(r), &end);
-                bad += end == r || !same_float(v, d2->balls[i].radius);
-                r = end;
-            }
-        }
-        is_int((long)n, (long)d2->ball_count,
-               "ej2: as many spheres as the course's scene 2");
-        is_int((long)bad, 0, "ej2: every centre and radius is the course's");
-        p = strstr(p, "computar_intensidad(cs, rs, ");
-        ok(p != NULL && sscanf(p, "computar_intensidad(cs, rs, %lu,",
-                               &count) == 1 &&
-               count == d2->ball_count,
-           "ej2: n_esferas is the count");
+    n = first_ray_record(&functions_ej2, v, 4096);
+    bad = 0;
+    is_int((long)v[0], (long)d2->ball_count,
+           "ej2: as many spheres as the course's scene 2");
+    is_int((long)n, (long)(1 + 4 * d2->ball_count + 9),
+           "ej2: the record's length");
+    for (i = 0; i < d2->ball_count && n > 1; i++) {
+        for (k = 0; k < 3; k++)
+            bad += !same_float(v[1 + 3 * i + k], d2->balls[i].center[k]);
+        bad += !same_float(v[1 + 3 * d2->ball_count + i],
+                           d2->balls[i].radius);
     }
-    free(source);
+    is_int((long)bad, 0, "ej2: every centre and radius is the course's");
+}
+
+/* Each harness as `make check` builds it (RAYO_BUILD/harness/ejN, linked
+   with the exercise's right program of tests/grade/) run on the records
+   its table writes: every call record gets its result line, framed by
+   the nonce, and the run says "done"; ej1's values are the expected
+   ones. */
+static void test_built_harness(const char *name, const functions_exercise *ex)
+{
+    const char *build = getenv("RAYO_BUILD");
+    char harness[4096], in[64] = "/tmp/t_functions_inXXXXXX", out[64];
+    char command[8400], line[1024], key[128];
+    int usable[FUNCTIONS_MAX], fd;
+    size_t f, calls = 0, results = 0, done = 0, right = 0;
+    char *records, *p;
+    FILE *file;
+    snprintf(harness, sizeof harness, "%s/harness/%s",
+             build != NULL ? build : "build", name);
+    if (access(harness, X_OK) != 0) {
+        ok(1, "# SKIP %s: no harness built (make check builds it)", name);
+        return;
+    }
+    for (f = 0; f < FUNCTIONS_MAX; f++)
+        usable[f] = 1;
+    records = functions_calls(ex, usable);
+    fd = mkstemp(in);
+    file = fd >= 0 ? fdopen(fd, "w") : NULL;
+    ok(records != NULL && file != NULL, "%s: the records written", name);
+    if (records == NULL || file == NULL) {
+        free(records);
+        return;
+    }
+    fprintf(file, "0123456789abcdef0123456789abcdef\n%s", records);
+    fclose(file);
+    snprintf(out, sizeof out, "%s.out", in);
+    snprintf(command, sizeof command, "'%s' <'%s' >'%s' 2>/dev/null",
+             harness, in, out);
+    ok(system(command) == 0, "%s: the harness exits 0", name);
+    for (p = records; (p = strstr(p, "\nc ")) != NULL; p++)
+        calls++;
+    calls += strncmp(records, "c ", 2) == 0;
+    file = fopen(out, "r");
+    while (file != NULL && fgets(line, sizeof line, file) != NULL) {
+        double v;
+        unsigned k;
+        if (strncmp(line, "0123456789abcdef0123456789abcdef result ", 40) ==
+                0 &&
+            sscanf(line + 40, "%127s %u %lf", key, &k, &v) == 3) {
+            results++;
+            right += strcmp(key, "producto_interno") == 0 && k == 0 &&
+                     v == 32;
+            right += strcmp(key, "norma") == 0 && k == 0 && v == 13;
+        }
+        done += strcmp(line, "0123456789abcdef0123456789abcdef done\n") == 0;
+    }
+    if (file != NULL)
+        fclose(file);
+    ok(calls > 0 && results >= calls,
+       "%s: a result for each of its %zu calls (%zu)", name, calls, results);
+    is_int((long)done, 1, "%s: the harness says done", name);
+    if (strcmp(name, "ej1") == 0)
+        is_int((long)right, 2, "ej1: the right program's values come back");
+    remove(in);
+    remove(out);
+    free(records);
 }
 
 /* Every function of names has a reason line of its own, beginning with
@@ -603,6 +626,9 @@ int main(void)
     test_notes();
     test_shorten();
     test_course_scenes();
+    test_built_harness("ej1", &functions_ej1);
+    test_built_harness("ej2", &functions_ej2);
+    test_built_harness("ej3", &functions_ej3);
     test_not_finite();
     test_ej2();
     test_ej3();

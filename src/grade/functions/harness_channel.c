@@ -1,9 +1,9 @@
 /*
  * harness_channel.c - the channel the functions' harness reports
  * through (harness.h): a per-run nonce from the system's random source,
- * given to the harness on its standard input; the prelude every
- * generated harness starts with, which reads it before any of the
- * student's code runs and frames each protocol line with it; and the
+ * given to the harness on its standard input with its calls (the
+ * harness, harness/rayo_harness.h, reads both before any of the
+ * student's code runs and frames each protocol line with it); and the
  * reading of what came back, where a line that poses as the harness's
  * results is dropped and becomes the finding "the program wrote into the
  * grader's channel".
@@ -27,6 +27,9 @@
 #include "harness.h"
 
 #define LOG_LIMIT (1u << 20)
+/* What the harness is given on its standard input, at most: less than
+   a pipe's buffer, and what harness/rayo_harness.h reads. */
+#define INPUT_LIMIT 60000
 
 /* A per-run secret: 32 hexadecimal digits from the system's random
    source (getrandom, else /dev/urandom). */
@@ -63,42 +66,6 @@ static int make_nonce(char *out)
     }
     out[HARNESS_NONCE] = '\0';
     return 0;
-}
-
-void harness_prelude(harness_text *t)
-{
-    harness_append(
-        t,
-        "#include <stdarg.h>\n#include <stdio.h>\n#include <unistd.h>\n"
-        "static char rayo_nonce[%d];\n"
-        "static void rayo_read_nonce(void)\n"
-        "{\n"
-        "    size_t n = 0;\n"
-        "    if (rayo_nonce[0] != 0)\n"
-        "        return;\n"
-        "    while (n < %d) {\n"
-        "        ssize_t r = read(0, rayo_nonce + n, 1);\n"
-        "        if (r <= 0 || rayo_nonce[n] == '\\n')\n"
-        "            break;\n"
-        "        n++;\n"
-        "    }\n"
-        "    rayo_nonce[n] = 0;\n"
-        "    close(0);\n"
-        "}\n"
-        "__attribute__((used, section(\".preinit_array\")))\n"
-        "static void (*const rayo_preinit)(void) = rayo_read_nonce;\n"
-        "static void rayo_say(const char *format, ...)\n"
-        "{\n"
-        "    va_list args;\n"
-        "    rayo_read_nonce(); /* if .preinit_array did not run */\n"
-        "    printf(\"\\n%%s \", rayo_nonce);\n"
-        "    va_start(args, format);\n"
-        "    vprintf(format, args);\n"
-        "    va_end(args);\n"
-        "    printf(\"\\n\");\n"
-        "    fflush(stdout);\n"
-        "}\n",
-        HARNESS_NONCE + 2, HARNESS_NONCE + 1);
 }
 
 /* The offset of the line of out (kept bytes) that begins with key, or
@@ -190,7 +157,7 @@ static char *read_channel(const char *raw, const char *nonce,
     return out;
 }
 
-rayo_status harness_run(grade_context *ctx, char **log,
+rayo_status harness_run(grade_context *ctx, const char *calls, char **log,
                         grade_outcome *outcome, rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
@@ -218,15 +185,20 @@ rayo_status harness_run(grade_context *ctx, char **log,
     else if (pipe(input) != 0)
         status = rayo_error_set(err, RAYO_ERR_IO, "grade: pipe: %s",
                                 strerror(errno));
+    if (status == RAYO_OK && HARNESS_NONCE + 1 + strlen(calls) > INPUT_LIMIT)
+        status = rayo_error_set(err, RAYO_ERR_INVALID, "grade: the harness's "
+                                "calls do not fit in its input");
     if (status == RAYO_OK) {
-        /* The nonce and its newline fit in a pipe's buffer: written
-           whole before the harness starts, read by it before any of
-           the student's code runs. */
+        /* The nonce, its newline and the calls fit in a pipe's buffer:
+           written whole before the harness starts, read by it before
+           any of the student's code runs. */
+        size_t n = strlen(calls);
         fcntl(input[0], F_SETFD, FD_CLOEXEC);
         fcntl(input[1], F_SETFD, FD_CLOEXEC);
         strcat(nonce, "\n");
         if (write(input[1], nonce, HARNESS_NONCE + 1) !=
-            HARNESS_NONCE + 1)
+                HARNESS_NONCE + 1 ||
+            write(input[1], calls, n) != (ssize_t)n)
             status = rayo_error_set(err, RAYO_ERR_IO, "grade: pipe: %s",
                                     strerror(errno));
         nonce[HARNESS_NONCE] = '\0';

@@ -1,10 +1,10 @@
 /*
- * harness.c - the shared machinery of the "functions" criterion
- * (harness.h): generated sources, the compiler, probes, building and
- * running the harness and reading its log (its channel, the nonce and
- * the forged lines, is harness_channel.c's).  The exercises' cases and
- * their expected values live in functions_ej1.c, functions_ej2.c and
- * functions_ej3.c; nothing here knows a function of the course.
+ * harness.c - the shared machinery of the functions engine (harness.h):
+ * growing texts, the compiler, probes, building the harness and reading
+ * its log (its channel, the nonce and the forged lines, is
+ * harness_channel.c's).  The exercises' cases and their expected values
+ * live in their tables (ej1.c, ej2.c, ej3.c); nothing here knows a
+ * function of the course.
  *
  * The compiler runs in the current directory (as the compile step's
  * does); the harness is the student's code and runs in the program's
@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "harness_sources.h"
 
 #define COMPILE_SECONDS 120.0
 #define LOG_LIMIT (1u << 20)
@@ -61,6 +62,25 @@ void harness_append(harness_text *t, const char *format, ...)
             t->capacity = capacity;
         }
     }
+}
+
+void harness_numbers(harness_text *t, const double *v, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        harness_append(t, " %.9g", v[i]);
+}
+
+void harness_vector_record(harness_text *t, const char *name, unsigned k,
+                           const double *a, const double *b,
+                           const double *c, double s)
+{
+    harness_append(t, "c %s %u", name, k);
+    harness_numbers(t, a, 3);
+    harness_numbers(t, b, 3);
+    harness_numbers(t, c, 3);
+    harness_numbers(t, &s, 1);
+    harness_append(t, "\n");
 }
 
 rayo_status harness_cc(grade_context *ctx, const char *const *words,
@@ -325,11 +345,28 @@ void harness_previous_type(const char *errors, const char *name, char *out,
     }
 }
 
-rayo_status harness_build(grade_context *ctx, const char *source,
-                          const char *const *extra, size_t extra_count,
-                          int *ok, char **errors, rayo_error *err)
+/* An embedded source into path, as a C string. */
+static rayo_status write_bytes(const char *path, const unsigned char *bytes,
+                               size_t size, rayo_error *err)
+{
+    char *text = malloc(size + 1);
+    rayo_status status;
+    if (text == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    memcpy(text, bytes, size);
+    text[size] = '\0';
+    status = grade_write_file(path, text, err);
+    free(text);
+    return status;
+}
+
+rayo_status harness_build(grade_context *ctx, const unsigned char *source,
+                          size_t size, const char *const *extra,
+                          size_t extra_count, int *ok, char **errors,
+                          rayo_error *err)
 {
     char *harness_c = grade_path_join(ctx->dir, "harness.c");
+    char *header = grade_path_join(ctx->dir, "rayo_harness.h");
     char *harness = grade_path_join(ctx->dir, "harness");
     const char **words =
         malloc((ctx->source_count + extra_count + 8) * sizeof *words);
@@ -338,11 +375,14 @@ rayo_status harness_build(grade_context *ctx, const char *source,
     rayo_status status = RAYO_OK;
     *ok = 1;
     *errors = NULL;
-    if (source == NULL || harness_c == NULL || harness == NULL ||
+    if (harness_c == NULL || header == NULL || harness == NULL ||
         words == NULL || objects == NULL)
         status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
     if (status == RAYO_OK)
-        status = grade_write_file(harness_c, source, err);
+        status = write_bytes(harness_c, source, size, err);
+    if (status == RAYO_OK)
+        status = write_bytes(header, harness_rayo_harness_h,
+                             harness_rayo_harness_h_size, err);
     for (i = 0; i < ctx->source_count && status == RAYO_OK && *ok; i++) {
         char name[32];
         snprintf(name, sizeof name, "student%zu.o", i);
@@ -381,6 +421,7 @@ rayo_status harness_build(grade_context *ctx, const char *source,
     free(objects);
     free(words);
     free(harness_c);
+    free(header);
     free(harness);
     return status;
 }

@@ -1,32 +1,21 @@
 /*
- * harness.h - the machinery the "functions" criterion shares between the
- * course's exercises: a growing text for generated C sources, running
- * the (trusted) compiler, probing a student's file against prototypes,
- * building a harness program around the student's objects, running it
- * and reading what it printed.
- *
- * The harness protocol: before each call the generated program says
- * "call NAME K" and flushes, after it "result NAME K V1 V2 ..." (numbers
- * as %.9g, or words); "missing NAME" when a weak function is absent,
- * "done" at the end of its main.  So a crash or a hang is pinned on the
- * last call announced.  The student's code runs in the same process and
- * writes to the same standard output, so each line the harness says
- * begins with a per-run nonce that the grader writes into its standard
- * input and that it reads before any of the student's code runs
- * (harness_prelude); a "result" line without it, or a second result of
- * one case, is the finding "the program wrote into the grader's
- * channel".  What the cases are and what they expect is each
- * exercise's own business (functions_ej1.c, functions_ej2.c,
- * functions_ej3.c).
- *
- * Private to src/grade; not a public interface.
+ * harness.h - the machinery of the functions engine (engine.c): a
+ * growing text, the (trusted) compiler, probes of a student's file
+ * against prototypes, building a harness (harness/) around the
+ * student's objects, running it and reading its log.  The protocol:
+ * the harness says "call NAME K" before each call and "result NAME K
+ * V1 V2 ..." after it, "missing NAME" for an absent function and
+ * "done" at the end, each line framed by a per-run nonce it reads from
+ * standard input before any of the student's code runs; a result line
+ * without it, or a second result of one case, is the finding "the
+ * program wrote into the grader's channel".  Private to src/grade.
  */
 #ifndef RAYO_GRADE_HARNESS_H
 #define RAYO_GRADE_HARNESS_H
 
 #include <stddef.h>
 
-#include "grade_impl.h"
+#include "../grade_impl.h"
 
 #define HARNESS_REASON 400 /* room for one probe's reason */
 #define HARNESS_NONCE 32   /* hexadecimal digits of the channel's nonce */
@@ -43,6 +32,16 @@ typedef struct harness_text {
 
 void harness_append(harness_text *t, const char *format, ...)
     GRADE_PRINTF(2, 3);
+
+/* " %.9g" for each of v[0..n-1]: numbers of a harness record, each
+   read back as the float it was. */
+void harness_numbers(harness_text *t, const double *v, size_t n);
+
+/* The record "c NAME K" of a call on three vectors and a scalar, the
+   shape EJ2's and EJ3's value cases share. */
+void harness_vector_record(harness_text *t, const char *name, unsigned k,
+                           const double *a, const double *b,
+                           const double *c, double s);
 
 /* Runs the compiler words (its own first) in the current directory: ok
    when it exits 0; its standard error in *errors (allocated). */
@@ -73,27 +72,23 @@ void harness_previous_type(const char *errors, const char *name, char *out,
                            size_t room);
 
 /* Compiles each source with main renamed to rayo_student_main, then
-   source (the harness) with them into ctx->dir/harness, with the extra
-   link words (e.g. -Wl,--wrap=realloc) before -lm.  ok when both worked;
-   else the compiler's messages in *errors. */
-rayo_status harness_build(grade_context *ctx, const char *source,
-                          const char *const *extra, size_t extra_count,
-                          int *ok, char **errors, rayo_error *err);
+   the harness (its source's size bytes, with harness/rayo_harness.h
+   beside it) with them into ctx->dir/harness, with the extra link words
+   (e.g. -Wl,--wrap=realloc) before -lm.  ok when both worked; else the
+   compiler's messages in *errors. */
+rayo_status harness_build(grade_context *ctx, const unsigned char *source,
+                          size_t size, const char *const *extra,
+                          size_t extra_count, int *ok, char **errors,
+                          rayo_error *err);
 
-/* The start of every harness source: the headers it needs, the nonce
-   read from standard input (from .preinit_array, before any constructor
-   of the student's; standard input then closed), and
-   rayo_say(format, ...), which prints one line framed by the nonce and
-   flushes.  The generated code says every protocol line with it. */
-void harness_prelude(harness_text *t);
-
-/* Runs the harness under the program's limits with a fresh nonce on its
-   standard input: in *log (allocated, NUL-terminated) the protocol lines
+/* Runs the harness under the program's limits with a fresh nonce and
+   then its calls (records, harness/rayo_harness.h) on its standard
+   input: in *log (allocated, NUL-terminated) the protocol lines
    it said, unframed (of each case the last result), and the student's
    own output; how it ended in *outcome (HARNESS_EXITED_EARLY when it
    exited 0 before "done").  Lines posing as the harness's fail the
    criterion with the channel finding. */
-rayo_status harness_run(grade_context *ctx, char **log,
+rayo_status harness_run(grade_context *ctx, const char *calls, char **log,
                         grade_outcome *outcome, rayo_error *err);
 
 /* 1 when the log has "missing NAME". */
@@ -146,16 +141,5 @@ void harness_shorten(char *text, size_t max);
 
 /* Escapes control bytes and bounds the length: for untrusted text. */
 void harness_clean(const char *in, size_t length, char *out, size_t room);
-
-/* The harness source of ej2 and ej3 with every function called
-   (allocated; NULL when memory runs out): for the tests, which check
-   that the course's scene it passes is the course module's. */
-char *grade_functions_ej2_source(void);
-char *grade_functions_ej3_source(void);
-
-/* The step for each exercise (functions_ejN.c). */
-rayo_status grade_functions_ej1(grade_context *ctx, rayo_error *err);
-rayo_status grade_functions_ej2(grade_context *ctx, rayo_error *err);
-rayo_status grade_functions_ej3(grade_context *ctx, rayo_error *err);
 
 #endif

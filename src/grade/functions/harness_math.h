@@ -1,6 +1,6 @@
 /*
  * harness_math.h - the arithmetic the functions criterion's expected
- * values are computed with (functions_ej2.c, functions_ej3.c): double
+ * values are computed with (ej2*.c, ej3*.c): double
  * precision on arguments rounded to float as the student's call rounds
  * them, the tolerance a float result is held to, and a vector in a
  * reason line.  Private to src/grade.
@@ -37,6 +37,28 @@ static inline void unit(const double *in, double *out)
     out[0] = in[0] / n;
     out[1] = in[1] / n;
     out[2] = in[2] / n;
+}
+
+/* The t at which the ray o + t d (d a unit vector) meets the sphere
+   (c, r): the near root when > 0, else the far one, else INFINITY;
+   far: the far root only. */
+static inline double sphere_t(const double *c, double r, const double *o,
+                              const double *d, int far)
+{
+    double oc[3], beta, delta, s;
+    oc[0] = c[0] - o[0];
+    oc[1] = c[1] - o[1];
+    oc[2] = c[2] - o[2];
+    beta = dot(oc, d);
+    delta = beta * beta - dot(oc, oc) + r * r;
+    if (delta < 0)
+        return INFINITY;
+    s = sqrt(delta);
+    if (!far && beta - s > 0)
+        return beta - s;
+    if (beta + s > 0)
+        return beta + s;
+    return INFINITY;
 }
 
 /* A float result within 1e-5 + 1e-4 relative of the expected value. */
