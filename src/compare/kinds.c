@@ -141,11 +141,11 @@ void cmp_put_kinds_json(cmp_sink *s, const rayo_compare_report *r)
 {
     if (!kinds_differ(r))
         return;
-    cmp_put(s, ", \"kinds\": {\"reference\": \"%s\", \"image\": \"%s\"",
+    cmp_json(s, ", \"kinds\": {\"reference\": \"%s\", \"image\": \"%s\"",
             rayo_picture_kind_name(r->reference_picture),
             rayo_picture_kind_name(r->image_picture));
     if (r->reference_is_course)
-        cmp_put(s, ", \"reference_course\": \"%s\"",
+        cmp_json(s, ", \"reference_course\": \"%s\"",
                 rayo_course_name(r->reference_course));
-    cmp_put(s, "}");
+    cmp_json(s, "}");
 }

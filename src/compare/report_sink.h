@@ -9,13 +9,34 @@
 
 #include <stddef.h>
 
+#include "rayo/lang.h"
+
 typedef struct cmp_sink {
     char *buffer;
     size_t size, length;
+    rayo_lang lang; /* the text's language; English for JSON */
 } cmp_sink;
 
-/* Appends a formatted text (report_format.c). */
+/* Appends a sentence of the text report: the format looked up in the
+   sink's language, numbers written as it writes them ("0,5"); the
+   format is extracted by xgettext (report_format.c). */
 void cmp_put(cmp_sink *s, const char *format, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* cmp_put with the singular or plural format for count. */
+void cmp_putn(cmp_sink *s, unsigned long long count, const char *singular,
+              const char *plural, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* Appends JSON (or other machine text): never translated, numbers as C
+   writes them (report_format.c). */
+void cmp_json(cmp_sink *s, const char *format, ...)
 #if defined(__GNUC__) || defined(__clang__)
     __attribute__((format(printf, 2, 3)))
 #endif

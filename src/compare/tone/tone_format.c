@@ -247,16 +247,16 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
 static void put_number(cmp_sink *s, double v)
 {
     if (isfinite(v))
-        cmp_put(s, "%.6f", v);
+        cmp_json(s, "%.6f", v);
     else
-        cmp_put(s, "null");
+        cmp_json(s, "null");
 }
 
 void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
-    cmp_put(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, "
+    cmp_json(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, "
                "\"height\": %u, \"channels\": %u}, \"image\": {\"width\": %u, "
                "\"height\": %u, \"channels\": %u}, \"pixels\": %llu, "
                "\"levels\": %u, \"tolerance\": %.6g, \"channels\": [",
@@ -265,14 +265,14 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         (unsigned long long)r->pixels, t->levels, r->tolerance);
     for (c = 0; c < t->channels; c++) {
         const rayo_compare_channel *ch = &t->channel[c];
-        cmp_put(s, "%s{\"name\": \"%s\", \"beyond\": %llu, "
+        cmp_json(s, "%s{\"name\": \"%s\", \"beyond\": %llu, "
                    "\"max_difference\": %u, \"rmse\": %.6f, \"psnr\": ",
             c ? ", " : "", channel_name(t, c), (unsigned long long)ch->beyond,
             ch->max_difference, ch->rmse);
         put_number(s, ch->psnr);
-        cmp_put(s, "}");
+        cmp_json(s, "}");
     }
-    cmp_put(s, "], \"differing\": %llu, \"mismatches\": %llu, "
+    cmp_json(s, "], \"differing\": %llu, \"mismatches\": %llu, "
                "\"mismatch_percent\": %.6f, \"at_edges\": %llu, "
                "\"max_edge_difference\": %u, \"in_shading\": %llu, "
                "\"unexplained\": %llu, \"beyond_tolerance\": %llu",
@@ -283,48 +283,48 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         (unsigned long long)r->beyond_tolerance);
     cmp_put_crowded_json(s, r);
     if (t->first_x >= 0)
-        cmp_put(s, ", \"first_unexplained\": {\"x\": %d, \"y\": %d}",
+        cmp_json(s, ", \"first_unexplained\": {\"x\": %d, \"y\": %d}",
             (int)t->first_x, (int)t->first_y);
     else
-        cmp_put(s, ", \"first_unexplained\": null");
-    cmp_put(s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
+        cmp_json(s, ", \"first_unexplained\": null");
+    cmp_json(s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
         (unsigned long long)r->reference_surplus,
         (unsigned long long)r->image_surplus);
     cmp_put_clamped_json(s, r);
-    cmp_put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, "
+    cmp_json(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, "
                "\"course\": ",
         t->scale_fit, (unsigned long long)t->differing_scaled);
     if (t->course >= 0)
-        cmp_put(s, "\"%s\"",
+        cmp_json(s, "\"%s\"",
             rayo_course_name((rayo_course_exercise)t->course));
     else
-        cmp_put(s, "null");
-    cmp_put(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
+        cmp_json(s, "null");
+    cmp_json(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
                "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),
         rayo_compare_diagnosis_name(r->diagnosis),
         r->diagnosis_exact ? "true" : "false");
     if (r->diagnosis == RAYO_DIAGNOSIS_MISTAKE)
-        cmp_put(s, ", \"mistake\": \"%s\"",
+        cmp_json(s, ", \"mistake\": \"%s\"",
             rayo_course_mistake_name(t->mistake));
     if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
-        cmp_put(s, ", \"shift\": {\"x\": %d, \"y\": %d}",
+        cmp_json(s, ", \"shift\": {\"x\": %d, \"y\": %d}",
             r->shift_x, r->shift_y);
     if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
-        cmp_put(s, ", \"scale\": %.6f", r->scale_found);
+        cmp_json(s, ", \"scale\": %.6f", r->scale_found);
     if (r->diagnosis == RAYO_DIAGNOSIS_CHANNELS_SWAPPED)
-        cmp_put(s, ", \"order\": [%u, %u, %u]",
+        cmp_json(s, ", \"order\": [%u, %u, %u]",
             t->order[0], t->order[1], t->order[2]);
     if (r->diagnosis == RAYO_DIAGNOSIS_OFFSET) {
-        cmp_put(s, ", \"offset\": [");
+        cmp_json(s, ", \"offset\": [");
         for (c = 0; c < t->channels; c++)
-            cmp_put(s, "%s%d", c ? ", " : "", t->offset[c]);
-        cmp_put(s, "], \"on_shapes\": %s",
+            cmp_json(s, "%s%d", c ? ", " : "", t->offset[c]);
+        cmp_json(s, "], \"on_shapes\": %s",
             t->offset_on_shapes ? "true" : "false");
     }
     if (t->findings > 0)
         tone_put_findings_json(r, s);
-    cmp_put(s, ", \"text\": \"");
+    cmp_json(s, ", \"text\": \"");
     tone_put_diagnosis(r, s);
-    cmp_put(s, "\"}}\n");
+    cmp_json(s, "\"}}\n");
 }
