@@ -78,18 +78,25 @@ void cmp_json(cmp_sink *s, const char *format, ...)
 }
 
 /* The note about pixels beyond a raster, for each file that had any. */
-static void put_surplus(cmp_sink *s, const char *which, uint64_t pixels,
+static void put_surplus(cmp_sink *s, int reference, uint64_t pixels,
                         uint32_t width)
 {
+    unsigned long long n = pixels;
     if (pixels == 0)
         return;
-    cmp_put(s, "note: the %s's file holds %llu pixel%s beyond the raster its "
-               "header promises",
-        which, (unsigned long long)pixels, pixels == 1 ? "" : "s");
+    if (reference)
+        cmp_putn(s, n, "note: the reference's file holds %llu pixel beyond "
+                       "the raster its header promises",
+                 "note: the reference's file holds %llu pixels beyond the "
+                 "raster its header promises", n);
+    else
+        cmp_putn(s, n, "note: the image's file holds %llu pixel beyond the "
+                       "raster its header promises",
+                 "note: the image's file holds %llu pixels beyond the "
+                 "raster its header promises", n);
     if (width > 0 && pixels % width == 0)
-        cmp_put(s, " (%llu more row%s)",
-            (unsigned long long)(pixels / width),
-            pixels / width == 1 ? "" : "s");
+        cmp_putn(s, n / width, " (%llu more row)", " (%llu more rows)",
+                 n / width);
     cmp_put(s, "; they were not compared\n");
 }
 
@@ -135,25 +142,34 @@ void cmp_put_clamped_json(cmp_sink *s, const rayo_compare_report *r)
 void cmp_put_out_of_range(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->image_clamped_high > 0) {
-        cmp_put(s, "%llu sample%s above the maximum (the first on line %llu, "
-                   "the largest %ld): ",
-            (unsigned long long)r->image_clamped_high,
-            r->image_clamped_high == 1 ? "" : "s",
-            (unsigned long long)r->image_first_high_line, r->image_largest);
+        cmp_putn(s, r->image_clamped_high,
+                 "%llu sample above the maximum (the first on line %llu, "
+                 "the largest %ld): ",
+                 "%llu samples above the maximum (the first on line %llu, "
+                 "the largest %ld): ",
+                 (unsigned long long)r->image_clamped_high,
+                 (unsigned long long)r->image_first_high_line,
+                 r->image_largest);
         if (r->image_largest == 256)
             cmp_put(s, "0..1 scaled by 256 instead of 255, or ");
         cmp_put(s, "values not clamped: the statements say values above 255 "
                    "become 255 (each channel above 1 becomes 1)");
     }
+    if (r->image_clamped_low > 0 && r->image_clamped_high > 0)
+        cmp_json(s, "; ");
     if (r->image_clamped_low > 0)
-        cmp_put(s, "%s%llu negative sample%s (the first on line %llu, the "
-                   "smallest %ld): a negative intensity, the diffuse term "
-                   "added where L.N < 0; the statements add it only when L.N "
-                   "> 0",
-            r->image_clamped_high > 0 ? "; " : "",
-            (unsigned long long)r->image_clamped_low,
-            r->image_clamped_low == 1 ? "" : "s",
-            (unsigned long long)r->image_first_low_line, r->image_smallest);
+        cmp_putn(s, r->image_clamped_low,
+                 "%llu negative sample (the first on line %llu, the "
+                 "smallest %ld): a negative intensity, the diffuse term "
+                 "added where L.N < 0; the statements add it only when L.N "
+                 "> 0",
+                 "%llu negative samples (the first on line %llu, the "
+                 "smallest %ld): a negative intensity, the diffuse term "
+                 "added where L.N < 0; the statements add it only when L.N "
+                 "> 0",
+                 (unsigned long long)r->image_clamped_low,
+                 (unsigned long long)r->image_first_low_line,
+                 r->image_smallest);
 }
 
 void cmp_put_surplus(char *buffer, size_t size, size_t *length,
@@ -165,14 +181,14 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
     s.lang = r->lang;
     s.length = *length;
     cmp_put_kinds(&s, r);
-    put_surplus(&s, "reference", r->reference_surplus, r->reference_width);
-    put_surplus(&s, "image", r->image_surplus, r->image_width);
+    put_surplus(&s, 1, r->reference_surplus, r->reference_width);
+    put_surplus(&s, 0, r->image_surplus, r->image_width);
     if (r->image_clamped_high + r->image_clamped_low > 0 &&
         r->diagnosis != RAYO_DIAGNOSIS_OUT_OF_RANGE) {
         cmp_put(&s, "note: the image was compared with its samples clamped to "
                     "0..maxval: ");
         cmp_put_out_of_range(&s, r);
-        cmp_put(&s, "\n");
+        cmp_json(&s, "\n");
     }
     if (r->image_lossy_levels > 0)
         cmp_put(&s, "note: the image is a JPEG, which is lossy: values were "
@@ -199,6 +215,21 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
                     "has 24 (B, G, R)\n",
                 r->image_bmp_bits);
     *length = s.length;
+}
+
+void cmp_put_verdict(cmp_sink *s, int verdict)
+{
+    switch (verdict) {
+    case RAYO_VERDICT_IDENTICAL:
+        cmp_put(s, "verdict: identical\n");
+        break;
+    case RAYO_VERDICT_CONSISTENT:
+        cmp_put(s, "verdict: consistent\n");
+        break;
+    default:
+        cmp_put(s, "verdict: inconsistent\n");
+        break;
+    }
 }
 
 /* One sentence (no quotes, no backslashes) saying what went wrong. */
@@ -369,11 +400,11 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
                     "them has no black pixel)\n");
     put_crowded_text(&s, r);
     put_focal_text(&s, r);
-    cmp_put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
+    cmp_put_verdict(&s, r->verdict);
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
         cmp_put(&s, "diagnosis: ");
         put_diagnosis(&s, r);
-        cmp_put(&s, "\n");
+        cmp_json(&s, "\n");
     }
     cmp_put_surplus(buffer, size, &s.length, r);
     return s.length;

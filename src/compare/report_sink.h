@@ -34,8 +34,8 @@ void cmp_putn(cmp_sink *s, unsigned long long count, const char *singular,
 #endif
     ;
 
-/* Appends JSON (or other machine text): never translated, numbers as C
-   writes them (report_format.c). */
+/* Appends JSON, or punctuation between sentences: never translated,
+   numbers as C writes them (report_format.c). */
 void cmp_json(cmp_sink *s, const char *format, ...)
 #if defined(__GNUC__) || defined(__clang__)
     __attribute__((format(printf, 2, 3)))
@@ -43,6 +43,10 @@ void cmp_json(cmp_sink *s, const char *format, ...)
     ;
 
 struct rayo_compare_report;
+
+/* "verdict: consistent" and its newline, in the sink's language (the
+   JSON's token stays English: report_format.c). */
+void cmp_put_verdict(cmp_sink *s, int verdict);
 
 /* The sentence about samples clamped out of 0..maxval, and their JSON
    member (report_format.c). */

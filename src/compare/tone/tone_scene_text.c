@@ -217,7 +217,7 @@ void tone_put_findings(const rayo_compare_report *r, cmp_sink *s)
     unsigned i;
     for (i = 0; i < r->tone.findings; i++) {
         if (i > 0)
-            cmp_put(s, "; ");
+            cmp_json(s, "; ");
         put_one(s, r, &r->tone.finding[i]);
     }
 }
