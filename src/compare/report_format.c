@@ -57,11 +57,10 @@ void cmp_putn(cmp_sink *s, unsigned long long count, const char *singular,
               const char *plural, ...)
 {
     va_list ap;
-    const char *format = rayo_ngettext(s->lang, singular, plural,
-                                       (unsigned long)count);
     va_start(ap, plural);
     /* already translated: looking it up again finds nothing and keeps it */
-    put_translated(s, format, ap);
+    put_translated(s, rayo_ngettext(s->lang, singular, plural,
+                                    (unsigned long)count), ap);
     va_end(ap);
 }
 

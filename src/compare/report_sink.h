@@ -30,7 +30,7 @@ void cmp_put(cmp_sink *s, const char *format, ...)
 void cmp_putn(cmp_sink *s, unsigned long long count, const char *singular,
               const char *plural, ...)
 #if defined(__GNUC__) || defined(__clang__)
-    __attribute__((format(printf, 4, 5)))
+    __attribute__((format(printf, 3, 5))) __attribute__((format(printf, 4, 5)))
 #endif
     ;
 
