@@ -5,7 +5,9 @@
  * Both forms carry the same numbers; the text adds a sentence saying what
  * the diagnosis means and what to look at in one's code.  Writing goes
  * into the caller's buffer with snprintf semantics (the full length is
- * returned, the text is cut to fit), so the library never prints.
+ * returned, the text is cut to fit), so the library never prints.  The
+ * text is in the report's language (cmp_put looks each sentence up);
+ * the JSON always in English (cmp_json), for programs.
  */
 #include <stdarg.h>
 #include <stdio.h>
