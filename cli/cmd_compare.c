@@ -357,6 +357,7 @@ int cli_compare(int argc, char **argv)
     memset(&reference, 0, sizeof reference);
     memset(&image, 0, sizeof image);
     rayo_compare_options_init(&req.options);
+    req.options.lang = cli_lang();
     status = parse_request(argc, argv, &req);
     if (status != CLI_EXIT_OK)
         return status < 0 ? CLI_EXIT_OK : status;

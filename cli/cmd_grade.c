@@ -386,6 +386,7 @@ int cli_grade(int argc, char **argv)
     int status;
     memset(&req, 0, sizeof req);
     rayo_grade_options_init(&req.options);
+    req.options.lang = cli_lang();
     cli_grade_points_default(&req.points);
     status = parse_request(argc, argv, &req);
     if (status != CLI_EXIT_OK)

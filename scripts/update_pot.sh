@@ -34,6 +34,9 @@ LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
     --keyword=scene_lexer_fail:4 --flag=scene_lexer_fail:4:c-format \
     --keyword=roster_leave_out:3 --keyword=pnm_found_error:4 \
     --keyword=rayo_source_end_error:2 \
+    --keyword=cmp_put:2 --flag=cmp_put:2:c-format \
+    --keyword=cmp_putn:3,4 --flag=cmp_putn:3:c-format \
+    --flag=cmp_putn:4:c-format \
     --add-comments=TRANSLATORS: --add-location=file --no-wrap --sort-by-file \
     --output="$tmp" $files
 if [ -f "$out" ] &&

@@ -19,6 +19,7 @@
 #include "rayo/course.h"
 #include "rayo/export.h"
 #include "rayo/image.h"
+#include "rayo/lang_id.h"
 #include "rayo/output.h"
 #include "rayo/reader.h"
 #include "rayo/status.h"
@@ -145,6 +146,8 @@ typedef struct rayo_compare_options {
                          least, and against a bilevel reference the image
                          is taken as black where darker than half;
                          default 0 */
+    rayo_lang lang;   /* the language of the report's text (never of its
+                         JSON); default RAYO_LANG_EN */
 } rayo_compare_options;
 
 /* The levels a lossy image's values are compared within, at least: a
@@ -325,6 +328,10 @@ typedef struct rayo_compare_report {
     int reference_is_course;  /* the reference is the course's image of
                                  reference_course */
     rayo_course_exercise reference_course;
+
+    /* The language rayo_compare_format_text and
+       rayo_compare_format_diagnosis write in (the options'). */
+    rayo_lang lang;
 } rayo_compare_report;
 
 /*

@@ -20,6 +20,7 @@
 #include "rayo/course.h"
 #include "rayo/export.h"
 #include "rayo/image.h"
+#include "rayo/lang_id.h"
 #include "rayo/status.h"
 
 /*
@@ -122,6 +123,9 @@ typedef struct rayo_grade_options {
        grading, kills what runs and fails with RAYO_ERR_CANCELLED. */
     int (*cancelled)(void *context);
     void *cancel_context;
+    /* The language of the image comparison's sentences in the report
+       (grade's own lines are English still); default RAYO_LANG_EN. */
+    rayo_lang lang;
 } rayo_grade_options;
 
 /* The defaults above, for exercise ej1 and no sources. */

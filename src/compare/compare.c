@@ -35,6 +35,7 @@ void rayo_compare_options_init(rayo_compare_options *options)
     options->levels = 1;
     options->course = RAYO_COMPARE_COURSE_AUTO;
     options->lossy = 0;
+    options->lang = RAYO_LANG_EN;
 }
 
 static void fill_counts(const cmp_counts *c, int has_edges,
@@ -130,6 +131,7 @@ rayo_status rayo_compare_images(const rayo_image *reference,
     rayo_compare_options defaults;
     rayo_status s;
     memset(report, 0, sizeof *report);
+    report->lang = options != NULL ? options->lang : RAYO_LANG_EN;
     rayo_compare_options_init(&defaults);
     if (options == NULL)
         options = &defaults;

@@ -95,15 +95,18 @@ void rayo_compare_note_kinds(rayo_compare_report *report,
 }
 
 /* The picture's kind as the note says it. */
-static const char *kind_words(rayo_picture_kind kind)
+static const char *kind_words(rayo_lang lang, rayo_picture_kind kind)
 {
     switch (kind) {
     case RAYO_PICTURE_BILEVEL:
-        return "black and white";
+        /* TRANSLATORS: "your image is black and white" */
+        return rayo_gettext(lang, "black and white");
     case RAYO_PICTURE_GRAY:
-        return "gray";
+        /* TRANSLATORS: "your image is gray" */
+        return rayo_gettext(lang, "gray");
     default:
-        return "in colour";
+        /* TRANSLATORS: "your image is in colour" */
+        return rayo_gettext(lang, "in colour");
     }
 }
 
@@ -126,26 +129,27 @@ void cmp_put_kinds(cmp_sink *s, const rayo_compare_report *r)
         cmp_put(s, "note: your image is %s; this reference is exercise "
                    "%d's %s (course:%s): is your image exercise %d's? "
                    "Compare it with course:%s\n",
-                kind_words(r->image_picture), shown->number, shown->picture,
+                kind_words(s->lang, r->image_picture), shown->number,
+                rayo_gettext(s->lang, shown->picture),
                 shown->name, guess->number, guess->name);
     else
         cmp_put(s, "note: your image is %s and the reference is %s: are they "
                    "pictures of the same exercise? A black and white picture "
                    "is exercise 1's, a gray one exercise 2's, a colour one "
                    "exercise 3's\n",
-                kind_words(r->image_picture),
-                kind_words(r->reference_picture));
+                kind_words(s->lang, r->image_picture),
+                kind_words(s->lang, r->reference_picture));
 }
 
 void cmp_put_kinds_json(cmp_sink *s, const rayo_compare_report *r)
 {
     if (!kinds_differ(r))
         return;
-    cmp_put(s, ", \"kinds\": {\"reference\": \"%s\", \"image\": \"%s\"",
+    cmp_json(s, ", \"kinds\": {\"reference\": \"%s\", \"image\": \"%s\"",
             rayo_picture_kind_name(r->reference_picture),
             rayo_picture_kind_name(r->image_picture));
     if (r->reference_is_course)
-        cmp_put(s, ", \"reference_course\": \"%s\"",
+        cmp_json(s, ", \"reference_course\": \"%s\"",
                 rayo_course_name(r->reference_course));
-    cmp_put(s, "}");
+    cmp_json(s, "}");
 }

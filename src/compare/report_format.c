@@ -5,7 +5,9 @@
  * Both forms carry the same numbers; the text adds a sentence saying what
  * the diagnosis means and what to look at in one's code.  Writing goes
  * into the caller's buffer with snprintf semantics (the full length is
- * returned, the text is cut to fit), so the library never prints.
+ * returned, the text is cut to fit), so the library never prints.  The
+ * text is in the report's language (cmp_put looks each sentence up);
+ * the JSON always in English (cmp_json), for programs.
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -15,7 +17,56 @@
 #include "report_sink.h"
 #include "tone/tone_impl.h"
 
+/* Appends text (already formatted) as snprintf would: counted whole,
+   cut to the room left. */
+static void append(cmp_sink *s, const char *text)
+{
+    size_t n = strlen(text);
+    size_t room = s->length < s->size ? s->size - s->length : 0;
+    if (room > 0) {
+        size_t fit = n < room - 1 ? n : room - 1;
+        memcpy(s->buffer + s->length, text, fit);
+        s->buffer[s->length + fit] = '\0';
+    }
+    s->length += n;
+}
+
+/* A sentence of the report is well under this (the longest, a course
+   mistake's, is some 300 bytes). */
+#define CMP_SENTENCE_MAX 4096
+
+static void put_translated(cmp_sink *s, const char *format, va_list ap)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 2, 0)))
+#endif
+    ;
+static void put_translated(cmp_sink *s, const char *format, va_list ap)
+{
+    char text[CMP_SENTENCE_MAX];
+    rayo_lang_vformat(s->lang, text, sizeof text, format, ap);
+    append(s, text);
+}
+
 void cmp_put(cmp_sink *s, const char *format, ...)
+{
+    va_list ap;
+    va_start(ap, format);
+    put_translated(s, format, ap);
+    va_end(ap);
+}
+
+void cmp_putn(cmp_sink *s, unsigned long long count, const char *singular,
+              const char *plural, ...)
+{
+    va_list ap;
+    va_start(ap, plural);
+    /* already translated: looking it up again finds nothing and keeps it */
+    put_translated(s, rayo_ngettext(s->lang, singular, plural,
+                                    (unsigned long)count), ap);
+    va_end(ap);
+}
+
+void cmp_json(cmp_sink *s, const char *format, ...)
 {
     va_list ap;
     int n;
@@ -28,18 +79,25 @@ void cmp_put(cmp_sink *s, const char *format, ...)
 }
 
 /* The note about pixels beyond a raster, for each file that had any. */
-static void put_surplus(cmp_sink *s, const char *which, uint64_t pixels,
+static void put_surplus(cmp_sink *s, int reference, uint64_t pixels,
                         uint32_t width)
 {
+    unsigned long long n = pixels;
     if (pixels == 0)
         return;
-    cmp_put(s, "note: the %s's file holds %llu pixel%s beyond the raster its "
-               "header promises",
-        which, (unsigned long long)pixels, pixels == 1 ? "" : "s");
+    if (reference)
+        cmp_putn(s, n, "note: the reference's file holds %llu pixel beyond "
+                       "the raster its header promises",
+                 "note: the reference's file holds %llu pixels beyond the "
+                 "raster its header promises", n);
+    else
+        cmp_putn(s, n, "note: the image's file holds %llu pixel beyond the "
+                       "raster its header promises",
+                 "note: the image's file holds %llu pixels beyond the "
+                 "raster its header promises", n);
     if (width > 0 && pixels % width == 0)
-        cmp_put(s, " (%llu more row%s)",
-            (unsigned long long)(pixels / width),
-            pixels / width == 1 ? "" : "s");
+        cmp_putn(s, n / width, " (%llu more row)", " (%llu more rows)",
+                 n / width);
     cmp_put(s, "; they were not compared\n");
 }
 
@@ -52,7 +110,7 @@ double cmp_band_percent(unsigned long long differences,
 void cmp_put_crowded_json(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->crowded)
-        cmp_put(s, ", \"band\": %llu, \"crowded\": true",
+        cmp_json(s, ", \"band\": %llu, \"crowded\": true",
             (unsigned long long)r->band);
 }
 
@@ -62,7 +120,7 @@ static void put_file_json(cmp_sink *s, const rayo_compare_report *r)
     if (r->image_lossy_levels == 0 && r->image_bmp_bits == 0 &&
         !r->image_bmp_top_down && !r->image_bmp_unpadded)
         return;
-    cmp_put(s, ", \"image_file\": {\"lossy_levels\": %u, \"bmp_bits\": %u, "
+    cmp_json(s, ", \"image_file\": {\"lossy_levels\": %u, \"bmp_bits\": %u, "
                "\"bmp_top_down\": %s, \"bmp_unpadded\": %s}",
             r->image_lossy_levels, r->image_bmp_bits,
             r->image_bmp_top_down ? "true" : "false",
@@ -75,7 +133,7 @@ void cmp_put_clamped_json(cmp_sink *s, const rayo_compare_report *r)
     put_file_json(s, r);
     if (r->image_clamped_high + r->image_clamped_low == 0)
         return;
-    cmp_put(s, ", \"image_clamped\": {\"high\": %llu, \"low\": %llu, "
+    cmp_json(s, ", \"image_clamped\": {\"high\": %llu, \"low\": %llu, "
                "\"largest\": %ld, \"smallest\": %ld}",
         (unsigned long long)r->image_clamped_high,
         (unsigned long long)r->image_clamped_low, r->image_largest,
@@ -85,25 +143,34 @@ void cmp_put_clamped_json(cmp_sink *s, const rayo_compare_report *r)
 void cmp_put_out_of_range(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->image_clamped_high > 0) {
-        cmp_put(s, "%llu sample%s above the maximum (the first on line %llu, "
-                   "the largest %ld): ",
-            (unsigned long long)r->image_clamped_high,
-            r->image_clamped_high == 1 ? "" : "s",
-            (unsigned long long)r->image_first_high_line, r->image_largest);
+        cmp_putn(s, r->image_clamped_high,
+                 "%llu sample above the maximum (the first on line %llu, "
+                 "the largest %ld): ",
+                 "%llu samples above the maximum (the first on line %llu, "
+                 "the largest %ld): ",
+                 (unsigned long long)r->image_clamped_high,
+                 (unsigned long long)r->image_first_high_line,
+                 r->image_largest);
         if (r->image_largest == 256)
             cmp_put(s, "0..1 scaled by 256 instead of 255, or ");
         cmp_put(s, "values not clamped: the statements say values above 255 "
                    "become 255 (each channel above 1 becomes 1)");
     }
+    if (r->image_clamped_low > 0 && r->image_clamped_high > 0)
+        cmp_json(s, "; ");
     if (r->image_clamped_low > 0)
-        cmp_put(s, "%s%llu negative sample%s (the first on line %llu, the "
-                   "smallest %ld): a negative intensity, the diffuse term "
-                   "added where L.N < 0; the statements add it only when L.N "
-                   "> 0",
-            r->image_clamped_high > 0 ? "; " : "",
-            (unsigned long long)r->image_clamped_low,
-            r->image_clamped_low == 1 ? "" : "s",
-            (unsigned long long)r->image_first_low_line, r->image_smallest);
+        cmp_putn(s, r->image_clamped_low,
+                 "%llu negative sample (the first on line %llu, the "
+                 "smallest %ld): a negative intensity, the diffuse term "
+                 "added where L.N < 0; the statements add it only when L.N "
+                 "> 0",
+                 "%llu negative samples (the first on line %llu, the "
+                 "smallest %ld): a negative intensity, the diffuse term "
+                 "added where L.N < 0; the statements add it only when L.N "
+                 "> 0",
+                 (unsigned long long)r->image_clamped_low,
+                 (unsigned long long)r->image_first_low_line,
+                 r->image_smallest);
 }
 
 void cmp_put_surplus(char *buffer, size_t size, size_t *length,
@@ -112,16 +179,17 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
     cmp_sink s;
     s.buffer = buffer;
     s.size = size;
+    s.lang = r->lang;
     s.length = *length;
     cmp_put_kinds(&s, r);
-    put_surplus(&s, "reference", r->reference_surplus, r->reference_width);
-    put_surplus(&s, "image", r->image_surplus, r->image_width);
+    put_surplus(&s, 1, r->reference_surplus, r->reference_width);
+    put_surplus(&s, 0, r->image_surplus, r->image_width);
     if (r->image_clamped_high + r->image_clamped_low > 0 &&
         r->diagnosis != RAYO_DIAGNOSIS_OUT_OF_RANGE) {
         cmp_put(&s, "note: the image was compared with its samples clamped to "
                     "0..maxval: ");
         cmp_put_out_of_range(&s, r);
-        cmp_put(&s, "\n");
+        cmp_json(&s, "\n");
     }
     if (r->image_lossy_levels > 0)
         cmp_put(&s, "note: the image is a JPEG, which is lossy: values were "
@@ -148,6 +216,21 @@ void cmp_put_surplus(char *buffer, size_t size, size_t *length,
                     "has 24 (B, G, R)\n",
                 r->image_bmp_bits);
     *length = s.length;
+}
+
+void cmp_put_verdict(cmp_sink *s, int verdict)
+{
+    switch (verdict) {
+    case RAYO_VERDICT_IDENTICAL:
+        cmp_put(s, "verdict: identical\n");
+        break;
+    case RAYO_VERDICT_CONSISTENT:
+        cmp_put(s, "verdict: consistent\n");
+        break;
+    default:
+        cmp_put(s, "verdict: inconsistent\n");
+        break;
+    }
 }
 
 /* One sentence (no quotes, no backslashes) saying what went wrong. */
@@ -288,11 +371,11 @@ static void put_distance_text(cmp_sink *s, const rayo_compare_report *r)
 size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
                                 size_t size)
 {
-    cmp_sink s = {buffer, size, 0};
+    cmp_sink s = {buffer, size, 0, r->lang};
     if (size > 0)
         buffer[0] = '\0';
     if (r->kind == RAYO_COMPARE_TONE) {
-        cmp_sink t = {buffer, size, 0};
+        cmp_sink t = {buffer, size, 0, r->lang};
         tone_format_text(r, &t);
         cmp_put_surplus(buffer, size, &t.length, r);
         return t.length;
@@ -318,11 +401,11 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
                     "them has no black pixel)\n");
     put_crowded_text(&s, r);
     put_focal_text(&s, r);
-    cmp_put(&s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
+    cmp_put_verdict(&s, r->verdict);
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
         cmp_put(&s, "diagnosis: ");
         put_diagnosis(&s, r);
-        cmp_put(&s, "\n");
+        cmp_json(&s, "\n");
     }
     cmp_put_surplus(buffer, size, &s.length, r);
     return s.length;
@@ -331,68 +414,68 @@ size_t rayo_compare_format_text(const rayo_compare_report *r, char *buffer,
 size_t rayo_compare_format_json(const rayo_compare_report *r, char *buffer,
                                 size_t size)
 {
-    cmp_sink s = {buffer, size, 0};
+    cmp_sink s = {buffer, size, 0, RAYO_LANG_EN};
     if (size > 0)
         buffer[0] = '\0';
     if (r->kind == RAYO_COMPARE_TONE) {
-        cmp_sink t = {buffer, size, 0};
+        cmp_sink t = {buffer, size, 0, RAYO_LANG_EN};
         tone_format_json(r, &t);
         return t.length;
     }
-    cmp_put(&s, "{\"reference\": {\"width\": %u, \"height\": %u, \"black\": "
+    cmp_json(&s, "{\"reference\": {\"width\": %u, \"height\": %u, \"black\": "
                 "%llu}, \"image\": {\"width\": %u, \"height\": %u, \"black\": "
                 "%llu}",
         r->reference_width, r->reference_height,
         (unsigned long long)r->reference_black, r->image_width,
         r->image_height, (unsigned long long)r->image_black);
-    cmp_put(&s, ", \"pixels\": %llu, \"mismatches\": %llu, "
+    cmp_json(&s, ", \"pixels\": %llu, \"mismatches\": %llu, "
                 "\"reference_only\": %llu, \"image_only\": %llu, "
                 "\"mismatch_percent\": %.6f, \"iou\": %.6f",
         (unsigned long long)r->pixels, (unsigned long long)r->mismatches,
         (unsigned long long)r->reference_only,
         (unsigned long long)r->image_only, r->mismatch_percent, r->iou);
     if (r->max_distance < 0)
-        cmp_put(&s, ", \"max_distance\": null");
+        cmp_json(&s, ", \"max_distance\": null");
     else
-        cmp_put(&s, ", \"max_distance\": %.6f", r->max_distance);
-    cmp_put(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": %llu",
+        cmp_json(&s, ", \"max_distance\": %.6f", r->max_distance);
+    cmp_json(&s, ", \"tolerance\": %.6g, \"beyond_tolerance\": %llu",
         r->tolerance, (unsigned long long)r->beyond_tolerance);
     cmp_put_crowded_json(&s, r);
     if (r->shapes_measured)
-        cmp_put(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, "
+        cmp_json(&s, ", \"offset\": {\"x\": %.6f, \"y\": %.6f}, "
                     "\"scale\": %.6f",
             r->offset_x, r->offset_y, r->scale);
     else
-        cmp_put(&s, ", \"offset\": null, \"scale\": null");
+        cmp_json(&s, ", \"offset\": null, \"scale\": null");
     if (r->reference_surplus != 0 || r->image_surplus != 0)
-        cmp_put(&s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
+        cmp_json(&s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
             (unsigned long long)r->reference_surplus,
             (unsigned long long)r->image_surplus);
     cmp_put_clamped_json(&s, r);
-    cmp_put(&s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
+    cmp_json(&s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
                 "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),
         rayo_compare_diagnosis_name(r->diagnosis),
         r->diagnosis_exact ? "true" : "false");
     if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
-        cmp_put(&s, ", \"shift\": {\"x\": %d, \"y\": %d}",
+        cmp_json(&s, ", \"shift\": {\"x\": %d, \"y\": %d}",
             r->shift_x, r->shift_y);
     if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
-        cmp_put(&s, ", \"scale\": %.6f", r->scale_found);
-    cmp_put(&s, ", \"text\": \"");
+        cmp_json(&s, ", \"scale\": %.6f", r->scale_found);
+    cmp_json(&s, ", \"text\": \"");
     put_diagnosis(&s, r);
-    cmp_put(&s, "\"}}\n");
+    cmp_json(&s, "\"}}\n");
     return s.length;
 }
 
 size_t rayo_compare_format_diagnosis(const rayo_compare_report *r,
                                      char *buffer, size_t size)
 {
-    cmp_sink s = {buffer, size, 0};
+    cmp_sink s = {buffer, size, 0, r->lang};
     if (size > 0)
         buffer[0] = '\0';
     if (r->kind == RAYO_COMPARE_TONE) {
-        cmp_sink t = {buffer, size, 0};
+        cmp_sink t = {buffer, size, 0, r->lang};
         tone_put_diagnosis(r, &t);
         return t.length;
     }

@@ -12,7 +12,13 @@
 #include <math.h>
 #include <string.h>
 
+#include "rayo/lang.h"
+
 #include "course_impl.h"
+
+/* Marks a sentence for xgettext (scripts/update_pot.sh); the lookup is
+   rayo_course_mistake_text_lang's. */
+#define N_(text) text
 
 static const char *const mistake_names[RAYO_MISTAKE_COUNT] = {
     "none",
@@ -39,101 +45,101 @@ static const char *const mistake_names[RAYO_MISTAKE_COUNT] = {
  */
 static const char *const ej2_texts[RAYO_MISTAKE_COUNT] = {
     [RAYO_MISTAKE_NONE] =
-        "no mistake: each pixel is I = IA + II (L.N) at the nearest sphere "
+        N_("no mistake: each pixel is I = IA + II (L.N) at the nearest sphere "
         "when L.N > 0 and no other sphere lies on the ray from P towards "
-        "L, else IA, and 0 where the ray meets no sphere",
+        "L, else IA, and 0 where the ray meets no sphere"),
     [RAYO_MISTAKE_NO_SHADOWS] =
-        "there are no shadows: II (L.N) counts only when no other sphere "
+        N_("there are no shadows: II (L.N) counts only when no other sphere "
         "lies on the ray from P towards L, so test every other sphere with "
-        "distancia_esfera from P along L and give IA when one is hit",
+        "distancia_esfera from P along L and give IA when one is hit"),
     [RAYO_MISTAKE_SELF_SHADOW] =
-        "the lit side is speckled with shadow: the shadow ray from P also "
+        N_("the lit side is speckled with shadow: the shadow ray from P also "
         "tests the sphere P lies on, whose root near t = 0 counts as a hit "
         "as rounding falls; skip that sphere (no OTHER sphere on the ray "
-        "from P towards L)",
+        "from P towards L)"),
     [RAYO_MISTAKE_NO_AMBIENT] =
-        "the ambient term is missing: I = IA + II (L.N) where lit and "
+        N_("the ambient term is missing: I = IA + II (L.N) where lit and "
         "I = IA where not, so the unlit parts of the spheres must be IA, "
-        "not black",
+        "not black"),
     [RAYO_MISTAKE_LIGHT_REVERSED] =
-        "the spheres are lit from the wrong side: L is the direction from "
+        N_("the spheres are lit from the wrong side: L is the direction from "
         "P towards the light, luz as given, not its negative, both in L.N "
-        "and in the shadow ray",
+        "and in the shadow ray"),
     [RAYO_MISTAKE_NO_LN_TEST] =
-        "the side facing away from the light is darker than IA: II (L.N) "
-        "is added only when L.N > 0, and a negative L.N must give I = IA",
+        N_("the side facing away from the light is darker than IA: II (L.N) "
+        "is added only when L.N > 0, and a negative L.N must give I = IA"),
     [RAYO_MISTAKE_WRAPPED] =
-        "the brightest spots turn black: values of I above 255 must become "
-        "255 before the conversion to an integer, not wrap around 256",
+        N_("the brightest spots turn black: values of I above 255 must become "
+        "255 before the conversion to an integer, not wrap around 256"),
     [RAYO_MISTAKE_FAR_ROOT] =
-        "the spheres show their far side: t = beta - sqrt(delta) when that "
-        "is positive, and beta + sqrt(delta) only when it is not",
+        N_("the spheres show their far side: t = beta - sqrt(delta) when that "
+        "is positive, and beta + sqrt(delta) only when it is not"),
     [RAYO_MISTAKE_UNNORMALISED_NORMAL] =
-        "the shading is wrong in brightness: N = (P - C) / r must be the "
+        N_("the shading is wrong in brightness: N = (P - C) / r must be the "
         "unit normal in I = IA + II (L.N), with normal_esfera dividing by "
-        "the radius",
+        "the radius"),
 };
 
 /* EJ3's sentences: every mistake applies. */
 static const char *const ej3_texts[RAYO_MISTAKE_COUNT] = {
     [RAYO_MISTAKE_NONE] =
-        "no mistake: each pixel is C = Ia ka + sum delta_i Ii kd (Li.N) at "
+        N_("no mistake: each pixel is C = Ia ka + sum delta_i Ii kd (Li.N) at "
         "the nearest sphere, then C (x) M, each channel above 1 becoming 1 "
-        "and the byte the integer part of 255 c",
+        "and the byte the integer part of 255 c"),
     [RAYO_MISTAKE_NO_SHADOWS] =
-        "there are no shadows: a light counts only when no other sphere "
+        N_("there are no shadows: a light counts only when no other sphere "
         "lies on the ray from P towards it (delta_i in C = Ia ka + sum "
-        "delta_i Ii kd (Li.N))",
+        "delta_i Ii kd (Li.N))"),
     [RAYO_MISTAKE_SELF_SHADOW] =
-        "the lit side is speckled with shadow: the shadow ray from P also "
+        N_("the lit side is speckled with shadow: the shadow ray from P also "
         "tests the sphere P lies on, whose root near t = 0 counts as a hit "
         "as rounding falls; delta_i asks whether another sphere lies on "
-        "the ray from P towards light i",
+        "the ray from P towards light i"),
     [RAYO_MISTAKE_NO_AMBIENT] =
-        "the ambient term is missing: C = Ia ka + sum delta_i Ii kd (Li.N) "
-        "starts at Ia ka, so the unlit parts must not be black",
+        N_("the ambient term is missing: C = Ia ka + sum delta_i Ii kd (Li.N) "
+        "starts at Ia ka, so the unlit parts must not be black"),
     [RAYO_MISTAKE_AMBIENT_NOT_ABSORBED] =
-        "the ambient light is not tinted by the colour of the sphere: "
-        "Ia ka belongs in C before the product C (x) M, not added after it",
+        N_("the ambient light is not tinted by the colour of the sphere: "
+        "Ia ka belongs in C before the product C (x) M, not added after it"),
     [RAYO_MISTAKE_LIGHT_REVERSED] =
-        "the spheres are lit from the wrong side: Li points from P towards "
+        N_("the spheres are lit from the wrong side: Li points from P towards "
         "light i, normalise(posicion - P) for a point light and the given "
-        "direction for a directional one, not their negatives",
+        "direction for a directional one, not their negatives"),
     [RAYO_MISTAKE_NO_LN_TEST] =
-        "the sides facing away from a light are darkened: a light counts "
+        N_("the sides facing away from a light are darkened: a light counts "
         "only when Li.N > 0 (delta_i = 0 otherwise), so a negative Li.N "
-        "must add nothing to C",
+        "must add nothing to C"),
     [RAYO_MISTAKE_WRAPPED] =
-        "the brightest channels wrap around to dark: a channel above 1 "
+        N_("the brightest channels wrap around to dark: a channel above 1 "
         "must become 1 (printed as 255) before the byte, the integer part "
-        "of 255 c, is taken",
+        "of 255 c, is taken"),
     [RAYO_MISTAKE_FIRST_SPHERE] =
-        "a farther sphere covers a nearer one: the pixel shows the sphere "
+        N_("a farther sphere covers a nearer one: the pixel shows the sphere "
         "with the smallest t that esfera_distancia returns, not the first "
-        "one of the array the ray meets",
+        "one of the array the ray meets"),
     [RAYO_MISTAKE_FAR_ROOT] =
-        "the spheres show their far side: t = beta - sqrt(delta) when that "
-        "is positive, and beta + sqrt(delta) only when it is not",
+        N_("the spheres show their far side: t = beta - sqrt(delta) when that "
+        "is positive, and beta + sqrt(delta) only when it is not"),
     [RAYO_MISTAKE_POINT_AS_DIRECTIONAL] =
-        "the point lights are used as directions: for a light with "
+        N_("the point lights are used as directions: for a light with "
         "es_puntual, Li = normalise(posicion - P), computed at each P, not "
-        "normalise(posicion)",
+        "normalise(posicion)"),
     [RAYO_MISTAKE_KA_KD_SWAPPED] =
-        "ka and kd are swapped: C = Ia ka + sum delta_i Ii kd (Li.N), ka "
-        "with the ambient light and kd with each light",
+        N_("ka and kd are swapped: C = Ia ka + sum delta_i Ii kd (Li.N), ka "
+        "with the ambient light and kd with each light"),
     [RAYO_MISTAKE_UNNORMALISED_NORMAL] =
-        "the shading is wrong in brightness: N = (P - C) / r must be the "
-        "unit normal in (Li.N), the one esfera_distancia returns",
+        N_("the shading is wrong in brightness: N = (P - C) / r must be the "
+        "unit normal in (Li.N), the one esfera_distancia returns"),
     [RAYO_MISTAKE_UNNORMALISED_LIGHT] =
-        "the point lights are too bright: Li = normalise(posicion - P) "
-        "must be a unit vector, both in (Li.N) and in the shadow ray",
+        N_("the point lights are too bright: Li = normalise(posicion - P) "
+        "must be a unit vector, both in (Li.N) and in the shadow ray"),
 };
 
 /* EJ1's only sentence: no mistake is modelled for the sphere. */
 static const char *const ej1_texts[RAYO_MISTAKE_COUNT] = {
     [RAYO_MISTAKE_NONE] =
-        "no mistake: a pixel is black exactly where its ray meets the "
-        "sphere, as intersecta_esfera tests with (C.d)^2 - C.C + R^2 >= 0",
+        N_("no mistake: a pixel is black exactly where its ray meets the "
+        "sphere, as intersecta_esfera tests with (C.d)^2 - C.C + R^2 >= 0"),
 };
 
 /* Each exercise's sentences, NULL where a mistake does not apply. */
@@ -161,6 +167,14 @@ const char *rayo_course_mistake_text(rayo_course_exercise exercise,
         (unsigned)mistake >= RAYO_MISTAKE_COUNT)
         return NULL;
     return texts[exercise][mistake];
+}
+
+const char *rayo_course_mistake_text_lang(rayo_course_exercise exercise,
+                                          rayo_course_mistake mistake,
+                                          rayo_lang lang)
+{
+    const char *text = rayo_course_mistake_text(exercise, mistake);
+    return text != NULL ? rayo_gettext(lang, text) : NULL;
 }
 
 int rayo_course_mistake_applies(rayo_course_exercise exercise,

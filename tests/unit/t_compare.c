@@ -216,7 +216,7 @@ static void test_format(void)
 {
     rayo_image a = bitmap_make(9, 9), b = bitmap_make(9, 9);
     rayo_compare_report r;
-    char small[16], text[2048];
+    char small[16], text[2048], json_en[2048];
     size_t need;
     bitmap_put(&a, 4, 4, 1);
     bitmap_put(&b, 4, 4, 1);
@@ -231,6 +231,19 @@ static void test_format(void)
     rayo_compare_format_text(&r, text, sizeof text);
     ok(strstr(text, "\nverdict: consistent\n") != NULL, "text: verdict line");
     ok(strstr(text, "mismatched pixels: 1 of 81 (1.235%)") != NULL, "text: 1 of 81 = 1.235%%");
+    /* The report's language: the text in Spanish with decimal commas,
+       cut to a small buffer as snprintf would; the JSON unchanged. */
+    rayo_compare_format_json(&r, json_en, sizeof json_en);
+    r.lang = RAYO_LANG_ES;
+    need = rayo_compare_format_text(&r, text, sizeof text);
+    is_int(strlen(text), need, "Spanish text: its whole length returned");
+    ok(strstr(text, "\nveredicto: coincide\n") != NULL, "Spanish text: verdict line");
+    ok(strstr(text, "píxeles distintos: 1 de 81 (1,235 %)") != NULL, "Spanish text: 1 de 81 = 1,235 %%");
+    is_int(rayo_compare_format_text(&r, small, sizeof small), need, "Spanish text into a small buffer: the same length");
+    is_int(strlen(small), sizeof small - 1, "  the small buffer filled and terminated");
+    ok(strncmp(small, text, sizeof small - 1) == 0, "  with the text's first bytes");
+    rayo_compare_format_json(&r, text, sizeof text);
+    is_string(text, json_en, "Spanish report: the JSON byte for byte the English one");
     is_string(rayo_compare_diagnosis_name(RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY), "flipped-horizontally", "diagnosis names");
     is_string(rayo_compare_verdict_name(RAYO_VERDICT_IDENTICAL), "identical", "verdict names");
     rayo_image_free(&a);

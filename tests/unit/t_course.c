@@ -512,6 +512,19 @@ static void test_names(void)
                                            RAYO_MISTAKE_NO_SHADOWS),
                   "delta_i") != NULL,
        "the texts name each exercise's formula");
+    ok(rayo_course_mistake_text_lang(RAYO_COURSE_EJ2, RAYO_MISTAKE_NO_SHADOWS,
+                                     RAYO_LANG_EN) ==
+               rayo_course_mistake_text(RAYO_COURSE_EJ2,
+                                        RAYO_MISTAKE_NO_SHADOWS) &&
+           strcmp(rayo_course_mistake_text_lang(RAYO_COURSE_EJ3,
+                                                RAYO_MISTAKE_KA_KD_SWAPPED,
+                                                RAYO_LANG_ES),
+                  "ka y kd están intercambiados: C = Ia ka + sum delta_i Ii "
+                  "kd (Li.N), ka con la luz ambiente y kd con cada luz") == 0 &&
+           rayo_course_mistake_text_lang(RAYO_COURSE_EJ2,
+                                         RAYO_MISTAKE_FIRST_SPHERE,
+                                         RAYO_LANG_ES) == NULL,
+       "a text in English and in Spanish, none where it does not apply");
     ok(!rayo_course_mistake_applies(RAYO_COURSE_EJ2, RAYO_MISTAKE_COUNT) &&
            !rayo_course_mistake_applies(RAYO_COURSE_EXERCISES,
                                         RAYO_MISTAKE_NONE),

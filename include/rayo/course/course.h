@@ -19,6 +19,7 @@
 
 #include "rayo/export.h"
 #include "rayo/image.h"
+#include "rayo/lang_id.h"
 #include "rayo/render.h"
 #include "rayo/status.h"
 
@@ -132,6 +133,11 @@ RAYO_API const char *rayo_course_mistake_name(rayo_course_mistake mistake);
  */
 RAYO_API const char *rayo_course_mistake_text(rayo_course_exercise exercise,
                                               rayo_course_mistake mistake);
+
+/* The same sentence in lang (po/; English where it has no translation). */
+RAYO_API const char *rayo_course_mistake_text_lang(
+    rayo_course_exercise exercise, rayo_course_mistake mistake,
+    rayo_lang lang);
 
 /*
  * Renders the exercise's image into a new image of its size and kind:

@@ -19,9 +19,16 @@ static const char *channel_name(const rayo_compare_tone *t, unsigned c)
     return t->channels == 1 ? "gray" : rgb[c];
 }
 
-static const char *kind_of(unsigned channels)
+/* A channel's name as the text's rows show it. */
+static const char *channel_words(const cmp_sink *s,
+                                 const rayo_compare_tone *t, unsigned c)
 {
-    return channels == 1 ? "gray" : "colour";
+    switch (t->channels == 1 ? 3 : c) {
+    case 0: return rayo_gettext(s->lang, "red");
+    case 1: return rayo_gettext(s->lang, "green");
+    case 2: return rayo_gettext(s->lang, "blue");
+    default: return rayo_gettext(s->lang, "gray");
+    }
 }
 
 /* The focal distance the course's references were drawn with: about
@@ -38,38 +45,43 @@ static void put_scale(cmp_sink *s, const rayo_compare_report *r)
     double larger = 1.0 / t->scale_fit;
     if (t->scale_fit == 1)
         return;
-    cmp_put(s, "scale: the reference is this picture %s %.4f times about the "
-               "centre (%llu pixels differ then, not %llu): its focal "
-               "distance is about %.2f%% %s",
-        larger > 1 ? "enlarged" : "shrunk", larger,
-        (unsigned long long)t->differing_scaled,
-        (unsigned long long)t->differing, fabs(larger - 1) * 100,
-        larger > 1 ? "longer" : "shorter");
+    if (larger > 1)
+        cmp_put(s, "scale: the reference is this picture enlarged %.4f times "
+                   "about the centre (%llu pixels differ then, not %llu): its "
+                   "focal distance is about %.2f%% longer",
+                larger, (unsigned long long)t->differing_scaled,
+                (unsigned long long)t->differing, fabs(larger - 1) * 100);
+    else
+        cmp_put(s, "scale: the reference is this picture shrunk %.4f times "
+                   "about the centre (%llu pixels differ then, not %llu): its "
+                   "focal distance is about %.2f%% shorter",
+                larger, (unsigned long long)t->differing_scaled,
+                (unsigned long long)t->differing, fabs(larger - 1) * 100);
     if (looks_like_course_focal(r))
         cmp_put(s, "; at 640 pixels and 90 degrees the formula gives z = 320 "
                    "and the reference was most likely drawn with z = 321.5, "
                    "as the course's references for EJ1 and EJ2 were: that is "
                    "why outlines and shadow edges differ");
-    cmp_put(s, "\n");
+    cmp_json(s, "\n");
 }
 
-static const char *flip_text(rayo_compare_diagnosis d)
+static const char *flip_text(rayo_lang lang, rayo_compare_diagnosis d)
 {
     switch (d) {
     case RAYO_DIAGNOSIS_FLIPPED_VERTICALLY:
-        return "the image is upside down: rows must run from the top (y = "
+        return rayo_gettext(lang, "the image is upside down: rows must run from the top (y = "
                "ALTO/2) down, and the direction is (x, y, z) with y "
-               "decreasing down the picture";
+               "decreasing down the picture");
     case RAYO_DIAGNOSIS_FLIPPED_HORIZONTALLY:
-        return "the image is mirrored left to right: columns must run from "
-               "x = -ANCHO/2 to the right";
+        return rayo_gettext(lang, "the image is mirrored left to right: columns must run from "
+               "x = -ANCHO/2 to the right");
     case RAYO_DIAGNOSIS_ROTATED_180:
-        return "the image is upside down and mirrored (a half turn)";
+        return rayo_gettext(lang, "the image is upside down and mirrored (a half turn)");
     case RAYO_DIAGNOSIS_INVERTED:
-        return "the values are inverted (255 - v): 0 is black, 255 white, "
-               "and a ray that hits nothing is black";
+        return rayo_gettext(lang, "the values are inverted (255 - v): 0 is black, 255 white, "
+               "and a ray that hits nothing is black");
     case RAYO_DIAGNOSIS_EMPTY:
-        return "the image is all black: no ray lights anything";
+        return rayo_gettext(lang, "the image is all black: no ray lights anything");
     case RAYO_DIAGNOSIS_WRAPPED:
         return "values past 255 wrapped around to small numbers where the "
                "reference is at its brightest (255): the value was stored "
@@ -82,24 +94,28 @@ static const char *flip_text(rayo_compare_diagnosis d)
 
 static void put_channels(cmp_sink *s, const rayo_compare_tone *t)
 {
-    static const char *const rgb[3] = {"red", "green", "blue"};
+    rayo_compare_tone rgb = *t;
+    rgb.channels = 3;
     cmp_put(s, "the colour channels are in another order: the image's red, "
                "green and blue show the reference's %s, %s and %s; print R G "
                "B in that order (color_imprimir)",
-        rgb[t->order[0]], rgb[t->order[1]], rgb[t->order[2]]);
+        channel_words(s, &rgb, t->order[0]), channel_words(s, &rgb, t->order[1]),
+        channel_words(s, &rgb, t->order[2]));
 }
 
 static void put_offset(cmp_sink *s, const rayo_compare_tone *t)
 {
     unsigned c;
-    cmp_put(s, "every pixel %sis off by a constant: ",
-        t->offset_on_shapes ? "of the objects (not the background) " : "");
+    if (t->offset_on_shapes)
+        cmp_put(s, "every pixel of the objects (not the background) is off "
+                   "by a constant: ");
+    else
+        cmp_put(s, "every pixel is off by a constant: ");
     for (c = 0; c < t->channels; c++)
-        cmp_put(s, "%s%+d", c ? ", " : "", t->offset[c]);
-    cmp_put(s, " level%s",
-        t->channels == 1 && (t->offset[0] == 1 || t->offset[0] == -1)
-            ? ""
-            : "s");
+        cmp_json(s, "%s%+d", c ? ", " : "", t->offset[c]);
+    cmp_putn(s,
+        t->channels == 1 && (t->offset[0] == 1 || t->offset[0] == -1) ? 1 : 2,
+        " level", " levels");
     if (t->offset_on_shapes && t->offset[0] < 0)
         cmp_put(s, " (darker): is the ambient term missing (IA in I = IA + II "
                    "(L.N), Ia ka in C = Ia ka + ...)?");
@@ -110,10 +126,28 @@ static void put_offset(cmp_sink *s, const rayo_compare_tone *t)
         cmp_put(s, ": a constant added to or missing from every value");
 }
 
+/* "the picture is moved 3 pixels left and 1 row down" */
+static void put_moved(cmp_sink *s, int x, int y)
+{
+    unsigned long ax = (unsigned long)(x < 0 ? -x : x);
+    unsigned long ay = (unsigned long)(y < 0 ? -y : y);
+    cmp_put(s, "the picture is moved ");
+    if (x < 0)
+        cmp_putn(s, ax, "%lu pixel left", "%lu pixels left", ax);
+    else if (x > 0)
+        cmp_putn(s, ax, "%lu pixel right", "%lu pixels right", ax);
+    if (x != 0 && y != 0)
+        cmp_put(s, " and ");
+    if (y < 0)
+        cmp_putn(s, ay, "%lu row up", "%lu rows up", ay);
+    else if (y > 0)
+        cmp_putn(s, ay, "%lu row down", "%lu rows down", ay);
+}
+
 void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
-    const char *text = flip_text(r->diagnosis);
+    const char *text = flip_text(s->lang, r->diagnosis);
     if (!r->diagnosis_exact && r->diagnosis != RAYO_DIAGNOSIS_NONE &&
         r->diagnosis != RAYO_DIAGNOSIS_DIFFERENT_SIZE &&
         r->diagnosis != RAYO_DIAGNOSIS_EMPTY &&
@@ -121,7 +155,7 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
         r->diagnosis != RAYO_DIAGNOSIS_SCENE)
         cmp_put(s, "most likely (undoing it comes close, not exact): ");
     if (text != NULL) {
-        cmp_put(s, "%s", text);
+        cmp_json(s, "%s", text);
         return;
     }
     switch (r->diagnosis) {
@@ -132,9 +166,9 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
         cmp_put_out_of_range(s, r);
         break;
     case RAYO_DIAGNOSIS_MISTAKE:
-        cmp_put(s, "%s",
-            rayo_course_mistake_text((rayo_course_exercise)t->course,
-                                     t->mistake));
+        cmp_json(s, "%s",
+            rayo_course_mistake_text_lang((rayo_course_exercise)t->course,
+                                          t->mistake, s->lang));
         break;
     case RAYO_DIAGNOSIS_CHANNELS_SWAPPED:
         put_channels(s, t);
@@ -143,18 +177,7 @@ void tone_put_diagnosis(const rayo_compare_report *r, cmp_sink *s)
         put_offset(s, t);
         break;
     case RAYO_DIAGNOSIS_SHIFTED:
-        cmp_put(s, "the picture is moved ");
-        if (r->shift_x != 0)
-            cmp_put(s, "%d pixel%s %s%s",
-                r->shift_x < 0 ? -r->shift_x : r->shift_x,
-                r->shift_x == 1 || r->shift_x == -1 ? "" : "s",
-                r->shift_x < 0 ? "left" : "right",
-                r->shift_y != 0 ? " and " : "");
-        if (r->shift_y != 0)
-            cmp_put(s, "%d row%s %s",
-                r->shift_y < 0 ? -r->shift_y : r->shift_y,
-                r->shift_y == 1 || r->shift_y == -1 ? "" : "s",
-                r->shift_y < 0 ? "up" : "down");
+        put_moved(s, r->shift_x, r->shift_y);
         cmp_put(s, ": check the pixel grid, x = i - ANCHO/2 and rows from y = "
                    "ALTO/2 at the top");
         break;
@@ -192,20 +215,35 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
-    cmp_put(s, "reference: %ux%u, %s\n",
-        r->reference_width, r->reference_height,
-        kind_of(t->reference_channels));
-    cmp_put(s, "image:     %ux%u, %s\n",
-        r->image_width, r->image_height, kind_of(t->image_channels));
-    cmp_put(s, "compared:  %s values; a pixel differs when off by more than "
-               "%u level%s (of 255)\n",
-        t->channels == 1 ? "gray" : "RGB", t->levels,
-        t->levels == 1 ? "" : "s");
+    if (t->reference_channels == 1)
+        cmp_put(s, "reference: %ux%u, gray\n", r->reference_width,
+                r->reference_height);
+    else
+        cmp_put(s, "reference: %ux%u, colour\n", r->reference_width,
+                r->reference_height);
+    if (t->image_channels == 1)
+        cmp_put(s, "image:     %ux%u, gray\n", r->image_width,
+                r->image_height);
+    else
+        cmp_put(s, "image:     %ux%u, colour\n", r->image_width,
+                r->image_height);
+    if (t->channels == 1)
+        cmp_putn(s, t->levels,
+                 "compared:  gray values; a pixel differs when off by more "
+                 "than %u level (of 255)\n",
+                 "compared:  gray values; a pixel differs when off by more "
+                 "than %u levels (of 255)\n", t->levels);
+    else
+        cmp_putn(s, t->levels,
+                 "compared:  RGB values; a pixel differs when off by more "
+                 "than %u level (of 255)\n",
+                 "compared:  RGB values; a pixel differs when off by more "
+                 "than %u levels (of 255)\n", t->levels);
     for (c = 0; c < t->channels; c++) {
         const rayo_compare_channel *ch = &t->channel[c];
         cmp_put(s, "%-6s %llu pixels off (%.3f%%), largest difference %u, "
                    "RMSE %.3f, ",
-            channel_name(t, c), (unsigned long long)ch->beyond,
+            channel_words(s, t, c), (unsigned long long)ch->beyond,
             r->pixels ? 100.0 * (double)ch->beyond / (double)r->pixels : 0,
             ch->max_difference, ch->rmse);
         if (isinf(ch->psnr))
@@ -236,27 +274,27 @@ void tone_format_text(const rayo_compare_report *r, cmp_sink *s)
             cmp_band_percent(t->differing, r->band),
             (unsigned long long)r->band, r->tolerance,
             100 * RAYO_COMPARE_BAND_SHARE);
-    cmp_put(s, "verdict: %s\n", rayo_compare_verdict_name(r->verdict));
+    cmp_put_verdict(s, r->verdict);
     if (r->diagnosis != RAYO_DIAGNOSIS_NONE) {
         cmp_put(s, "diagnosis: ");
         tone_put_diagnosis(r, s);
-        cmp_put(s, "\n");
+        cmp_json(s, "\n");
     }
 }
 
 static void put_number(cmp_sink *s, double v)
 {
     if (isfinite(v))
-        cmp_put(s, "%.6f", v);
+        cmp_json(s, "%.6f", v);
     else
-        cmp_put(s, "null");
+        cmp_json(s, "null");
 }
 
 void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
 {
     const rayo_compare_tone *t = &r->tone;
     unsigned c;
-    cmp_put(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, "
+    cmp_json(s, "{\"kind\": \"tone\", \"reference\": {\"width\": %u, "
                "\"height\": %u, \"channels\": %u}, \"image\": {\"width\": %u, "
                "\"height\": %u, \"channels\": %u}, \"pixels\": %llu, "
                "\"levels\": %u, \"tolerance\": %.6g, \"channels\": [",
@@ -265,14 +303,14 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         (unsigned long long)r->pixels, t->levels, r->tolerance);
     for (c = 0; c < t->channels; c++) {
         const rayo_compare_channel *ch = &t->channel[c];
-        cmp_put(s, "%s{\"name\": \"%s\", \"beyond\": %llu, "
+        cmp_json(s, "%s{\"name\": \"%s\", \"beyond\": %llu, "
                    "\"max_difference\": %u, \"rmse\": %.6f, \"psnr\": ",
             c ? ", " : "", channel_name(t, c), (unsigned long long)ch->beyond,
             ch->max_difference, ch->rmse);
         put_number(s, ch->psnr);
-        cmp_put(s, "}");
+        cmp_json(s, "}");
     }
-    cmp_put(s, "], \"differing\": %llu, \"mismatches\": %llu, "
+    cmp_json(s, "], \"differing\": %llu, \"mismatches\": %llu, "
                "\"mismatch_percent\": %.6f, \"at_edges\": %llu, "
                "\"max_edge_difference\": %u, \"in_shading\": %llu, "
                "\"unexplained\": %llu, \"beyond_tolerance\": %llu",
@@ -283,48 +321,48 @@ void tone_format_json(const rayo_compare_report *r, cmp_sink *s)
         (unsigned long long)r->beyond_tolerance);
     cmp_put_crowded_json(s, r);
     if (t->first_x >= 0)
-        cmp_put(s, ", \"first_unexplained\": {\"x\": %d, \"y\": %d}",
+        cmp_json(s, ", \"first_unexplained\": {\"x\": %d, \"y\": %d}",
             (int)t->first_x, (int)t->first_y);
     else
-        cmp_put(s, ", \"first_unexplained\": null");
-    cmp_put(s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
+        cmp_json(s, ", \"first_unexplained\": null");
+    cmp_json(s, ", \"reference_surplus\": %llu, \"image_surplus\": %llu",
         (unsigned long long)r->reference_surplus,
         (unsigned long long)r->image_surplus);
     cmp_put_clamped_json(s, r);
-    cmp_put(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, "
+    cmp_json(s, ", \"scale_fit\": %.6f, \"differing_scaled\": %llu, "
                "\"course\": ",
         t->scale_fit, (unsigned long long)t->differing_scaled);
     if (t->course >= 0)
-        cmp_put(s, "\"%s\"",
+        cmp_json(s, "\"%s\"",
             rayo_course_name((rayo_course_exercise)t->course));
     else
-        cmp_put(s, "null");
-    cmp_put(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
+        cmp_json(s, "null");
+    cmp_json(s, ", \"verdict\": \"%s\", \"diagnosis\": {\"kind\": \"%s\", "
                "\"exact\": %s",
         rayo_compare_verdict_name(r->verdict),
         rayo_compare_diagnosis_name(r->diagnosis),
         r->diagnosis_exact ? "true" : "false");
     if (r->diagnosis == RAYO_DIAGNOSIS_MISTAKE)
-        cmp_put(s, ", \"mistake\": \"%s\"",
+        cmp_json(s, ", \"mistake\": \"%s\"",
             rayo_course_mistake_name(t->mistake));
     if (r->diagnosis == RAYO_DIAGNOSIS_SHIFTED)
-        cmp_put(s, ", \"shift\": {\"x\": %d, \"y\": %d}",
+        cmp_json(s, ", \"shift\": {\"x\": %d, \"y\": %d}",
             r->shift_x, r->shift_y);
     if (r->diagnosis == RAYO_DIAGNOSIS_SCALED)
-        cmp_put(s, ", \"scale\": %.6f", r->scale_found);
+        cmp_json(s, ", \"scale\": %.6f", r->scale_found);
     if (r->diagnosis == RAYO_DIAGNOSIS_CHANNELS_SWAPPED)
-        cmp_put(s, ", \"order\": [%u, %u, %u]",
+        cmp_json(s, ", \"order\": [%u, %u, %u]",
             t->order[0], t->order[1], t->order[2]);
     if (r->diagnosis == RAYO_DIAGNOSIS_OFFSET) {
-        cmp_put(s, ", \"offset\": [");
+        cmp_json(s, ", \"offset\": [");
         for (c = 0; c < t->channels; c++)
-            cmp_put(s, "%s%d", c ? ", " : "", t->offset[c]);
-        cmp_put(s, "], \"on_shapes\": %s",
+            cmp_json(s, "%s%d", c ? ", " : "", t->offset[c]);
+        cmp_json(s, "], \"on_shapes\": %s",
             t->offset_on_shapes ? "true" : "false");
     }
     if (t->findings > 0)
         tone_put_findings_json(r, s);
-    cmp_put(s, ", \"text\": \"");
+    cmp_json(s, ", \"text\": \"");
     tone_put_diagnosis(r, s);
-    cmp_put(s, "\"}}\n");
+    cmp_json(s, "\"}}\n");
 }

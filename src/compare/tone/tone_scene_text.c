@@ -226,7 +226,7 @@ void tone_put_findings(const rayo_compare_report *r, cmp_sink *s)
     unsigned i;
     for (i = 0; i < r->tone.findings; i++) {
         if (i > 0)
-            cmp_put(s, "; ");
+            cmp_json(s, "; ");
         put_one(s, r, &r->tone.finding[i]);
     }
 }
@@ -235,40 +235,40 @@ static void put_triple(cmp_sink *s, const char *name, const double *v,
                        unsigned n)
 {
     unsigned c;
-    cmp_put(s, ", \"%s\": [", name);
+    cmp_json(s, ", \"%s\": [", name);
     for (c = 0; c < n; c++)
-        cmp_put(s, "%s%.6g", c ? ", " : "", v[c]);
-    cmp_put(s, "]");
+        cmp_json(s, "%s%.6g", c ? ", " : "", v[c]);
+    cmp_json(s, "]");
 }
 
 void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
 {
     unsigned i, n = r->tone.channels;
-    cmp_put(s, ", \"findings\": [");
+    cmp_json(s, ", \"findings\": [");
     for (i = 0; i < r->tone.findings; i++) {
         const rayo_compare_finding *f = &r->tone.finding[i];
-        cmp_put(s, "%s{\"kind\": \"%s\"", i ? ", " : "",
+        cmp_json(s, "%s{\"kind\": \"%s\"", i ? ", " : "",
             (size_t)f->kind < sizeof kind_names / sizeof kind_names[0]
                 ? kind_names[f->kind]
                 : "unknown");
         if (f->ball >= 0)
-            cmp_put(s, ", \"ball\": %d, \"x\": %.1f, \"y\": %.1f", f->ball,
+            cmp_json(s, ", \"ball\": %d, \"x\": %.1f, \"y\": %.1f", f->ball,
                 f->x, f->y);
         if (f->kind == RAYO_FINDING_ADDED)
-            cmp_put(s, ", \"x\": %.1f, \"y\": %.1f", f->x, f->y);
+            cmp_json(s, ", \"x\": %.1f, \"y\": %.1f", f->x, f->y);
         if (f->kind == RAYO_FINDING_MOVED)
-            cmp_put(s, ", \"to\": {\"x\": %.1f, \"y\": %.1f}", f->value[0],
+            cmp_json(s, ", \"to\": {\"x\": %.1f, \"y\": %.1f}", f->value[0],
                 f->value[1]);
         if (f->kind == RAYO_FINDING_ADDED || f->kind == RAYO_FINDING_MOVED ||
             (f->kind == RAYO_FINDING_WHERE && f->ball < 0))
-            cmp_put(s, ", \"box\": [%d, %d, %d, %d]", (int)f->box[0],
+            cmp_json(s, ", \"box\": [%d, %d, %d, %d]", (int)f->box[0],
                 (int)f->box[1], (int)f->box[2], (int)f->box[3]);
         if (f->kind == RAYO_FINDING_SIZE)
-            cmp_put(s, ", \"radius_px\": %.1f, \"expected_px\": %.1f, "
+            cmp_json(s, ", \"radius_px\": %.1f, \"expected_px\": %.1f, "
                        "\"radius\": %.3g",
                 f->value[0], f->expected[0], f->value[1]);
         if (f->kind == RAYO_FINDING_LAMP_POSITION)
-            cmp_put(s, ", \"lamp\": %d", (int)f->box[0]);
+            cmp_json(s, ", \"lamp\": %d", (int)f->box[0]);
         if (f->kind == RAYO_FINDING_LIGHT_DIRECTION ||
             f->kind == RAYO_FINDING_LAMP_POSITION) {
             put_triple(s, "value", f->value, 3);
@@ -282,17 +282,17 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
             put_triple(s, "expected", f->expected,
                        f->kind == RAYO_FINDING_LIGHT ? 1 : n);
         if (f->kind == RAYO_FINDING_SIZE) {
-            cmp_put(s, "}");
+            cmp_json(s, "}");
             continue; /* no pixels counted */
         }
-        cmp_put(s, ", \"pixels\": %llu", (unsigned long long)f->pixels);
+        cmp_json(s, ", \"pixels\": %llu", (unsigned long long)f->pixels);
         if (f->kind == RAYO_FINDING_BELOW_AMBIENT)
-            cmp_put(s, ", \"on_ball\": %llu, \"shadowed\": %llu",
+            cmp_json(s, ", \"on_ball\": %llu, \"shadowed\": %llu",
                 (unsigned long long)f->total,
                 (unsigned long long)f->shadowed);
         else if (f->kind != RAYO_FINDING_ADDED)
-            cmp_put(s, ", \"of\": %llu", (unsigned long long)f->total);
-        cmp_put(s, "}");
+            cmp_json(s, ", \"of\": %llu", (unsigned long long)f->total);
+        cmp_json(s, "}");
     }
-    cmp_put(s, "]");
+    cmp_json(s, "]");
 }

@@ -364,6 +364,7 @@ rayo_status grade_step_image(grade_context *ctx, const rayo_image *image,
     rayo_status status;
     int literal = 0;
     rayo_compare_options_init(&options);
+    options.lang = ctx->options->lang;
     options.course = (int)ctx->options->exercise->course;
     status = rayo_compare_images(reference, image, &options, &r, err);
     if (status == RAYO_OK)
