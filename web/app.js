@@ -18,7 +18,7 @@ const TEXT = {
     'open.save': 'Guardar como PNG',
     'validate.title': '2. Validar (validación)',
     'validate.reference': 'Referencia:',
-    'validate.note': 'El informe es el de rayo compare, palabra por palabra (en inglés, como lo imprime el comando).',
+    'validate.note': 'El informe es el de rayo compare --lang es, palabra por palabra.',
     'validate.diff': 'La diferencia: rojo, negro sólo en la referencia; azul, negro sólo en la imagen (en grises y color: ámbar, explicada; rojo, no).',
     'ref.auto': 'Automática: según tu imagen',
     'ref.ej1': 'Cátedra: ejercicio 1 (esfera)',
@@ -307,7 +307,7 @@ async function compare() {
   if (!reference) return clearCompare();
   const start = performance.now();
   const course = sceneOf(choice.which);
-  const result = rayo.compare(reference, state.image, course);
+  const result = rayo.compare(reference, state.image, course, lang);
   times.compare = performance.now() - start;
   state.compared = { ...choice, file: referenceNames.file || '', verdict: result.verdict };
   showCompared();
@@ -517,6 +517,7 @@ function wire() {
     lang = lang === 'es' ? 'en' : 'es';
     localStorage.setItem('rayo-lang', lang);
     applyLang();
+    if (state.image) guarded(compare); // the report in the new language
   });
   $('image-input').addEventListener('change', (e) => {
     if (e.target.files[0]) openFile(e.target.files[0]);

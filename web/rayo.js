@@ -179,11 +179,12 @@ class Rayo {
   }
   // `rayo compare reference image`: its text, verdict, diagnosis and the
   // difference picture (PNG bytes).  course: the exercise (0, 1, 2) whose
-  // image the reference is, or -1 for a file.
-  compare(reference, image, course = -1) {
+  // image the reference is, or -1 for a file; lang: 'es' for the report in
+  // Spanish (`rayo compare --lang es`), else English.
+  compare(reference, image, course = -1, lang = 'en') {
     reference.live();
     image.live();
-    const text = this.x.web_compare(reference.ptr, image.ptr, course);
+    const text = this.x.web_compare(reference.ptr, image.ptr, course, lang === 'es' ? 1 : 0);
     if (!text) this.fail();
     const diff = this.x.web_compare_diff();
     const size = this.x.web_compare_diff_size();

@@ -132,7 +132,7 @@ function siteBytes(dir) {
 }
 
 async function main() {
-  const planned = 40 + 2 * LOOKS_TESTS;
+  const planned = 41 + 2 * LOOKS_TESTS;
   console.log(`1..${planned}`);
   const seed = setup();
   const size = siteBytes(WEB);
@@ -193,7 +193,7 @@ async function run(browser, origin, seed) {
     await page.setInputFiles(T('image-input'), path.join(tmp, file));
     await page.waitForFunction((f) => document.getElementById('info').textContent.startsWith(f), file);
     await page.waitForFunction(() => document.getElementById('report').textContent !== '');
-    const want = rayo(['compare', refPath, file]);
+    const want = rayo(['compare', '--lang', 'en', refPath, file]);
     const got = await text('report');
     ok(got === want.out, `${name}: the report is rayo compare's`, `page:\n${got}\ncommand:\n${want.out}`);
     return { verdict: await text('verdict'), diagnosis: await text('diagnosis'), want,
@@ -263,7 +263,7 @@ async function run(browser, origin, seed) {
   // A malformed file: the command's one-line message, in the page.
   await page.setInputFiles(T('image-input'), path.join(tmp, 'malformed.pgm'));
   await page.waitForFunction(() => document.getElementById('error').textContent !== '');
-  const want = rayo(['compare', course(1), 'malformed.pgm']).err.trim();
+  const want = rayo(['compare', '--lang', 'en', course(1), 'malformed.pgm']).err.trim();
   const got = await text('error');
   ok(got === want && !got.includes('\n'), 'a malformed file: the command\'s message', `page: ${got}\ncommand: ${want}`);
 
@@ -413,6 +413,15 @@ async function run(browser, origin, seed) {
   await p2.waitForSelector('body[data-ready="1"]');
   ok((await p2.locator('header p').textContent()).includes('El trazador de rayos del curso'),
      'Spanish text with a Spanish browser');
+  // ... and the report in Spanish: `rayo compare --lang es`, word for word.
+  await p2.selectOption(T('reference'), 'ej1');
+  await p2.setInputFiles(T('image-input'), path.join(tmp, 'flipped.pbm'));
+  await p2.waitForFunction(() => document.getElementById('info').textContent.startsWith('flipped.pbm'));
+  await p2.waitForFunction(() => document.getElementById('report').textContent !== '');
+  const wantEs = rayo(['compare', '--lang', 'es', course(1), 'flipped.pbm']);
+  const gotEs = await p2.locator(T('report')).textContent();
+  ok(gotEs === wantEs.out && /veredicto: /.test(gotEs),
+     "a Spanish page's report is rayo compare --lang es's", `page:\n${gotEs}\ncommand:\n${wantEs.out}`);
   await es.close();
 
   // The README's picture: a mistake found.

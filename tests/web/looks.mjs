@@ -101,7 +101,7 @@ export async function looks(ctx) {
   }
   async function byKind(file, ej, n) {
     await open(file);
-    const want = rayo(['compare', course(n), file]).out;
+    const want = rayo(['compare', '--lang', lang, course(n), file]).out;
     const got = { note: await text('ref-note'), report: await text('report') };
     ok(got.note === W.kind[ej] && got.report === want,
        `${label}: ${file} is compared with ${ej.toUpperCase()}, and the page says why`,
@@ -127,7 +127,7 @@ export async function looks(ctx) {
   await page.evaluate(() => { window.rayoTimes.compare = null; });
   await page.selectOption(T('reference'), 'ej1');
   await page.waitForFunction(() => window.rayoTimes.compare !== null);
-  let want = rayo(['compare', course(1), 'ej2.pgm']).out;
+  let want = rayo(['compare', '--lang', lang, course(1), 'ej2.pgm']).out;
   let got = { note: await text('ref-note'), report: await text('report') };
   ok(got.note === W.picked1 && got.report === want,
      `${label}: a reference picked is the one compared with, and said so`,
@@ -166,7 +166,7 @@ export async function looks(ctx) {
              mark: g('mark').textContent, note: g('ref-note').textContent,
              picture: g('picture').hidden, diff: g('diff-figure').hidden, save: g('save').disabled };
   });
-  const err = rayo(['compare', course(1), 'bad.pbm']).err.trim();
+  const err = rayo(['compare', '--lang', 'en', course(1), 'bad.pbm']).err.trim();
   shotsOk = (await shot('5-failed')) && shotsOk;
   ok((await text('error')) === err && Object.values(left).every((v) => v === '' || v === true),
      `${label}: a file that fails ('p1') shows the command's error and nothing of the previous file`,

@@ -33,7 +33,7 @@ web_image *web_from_png(const unsigned char *png, size_t png_size,
 unsigned web_info(const web_image *im, int field);
 const unsigned char *web_rgba(web_image *im);
 const char *web_compare(const web_image *reference, const web_image *image,
-                        int reference_course);
+                        int reference_course, int spanish);
 const char *web_compare_verdict(void);
 const char *web_compare_diagnosis(void);
 const unsigned char *web_compare_diff(void);

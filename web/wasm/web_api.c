@@ -334,10 +334,11 @@ static char *format(size_t (*fn)(const rayo_compare_report *, char *,
  */
 /* reference_course: the course's exercise (web_course_name) whose image the
    reference is, or -1 for a file of the student's; as the command, the
-   report then notes pictures of different kinds. */
+   report then notes pictures of different kinds.  spanish: 1 for the
+   report in Spanish (`rayo compare --lang es`), 0 for English. */
 WEB_EXPORT("web_compare")
 const char *web_compare(const web_image *reference, const web_image *image,
-                        int reference_course)
+                        int reference_course, int spanish)
 {
     rayo_compare_options options;
     rayo_output *out = NULL;
@@ -354,6 +355,7 @@ const char *web_compare(const web_image *reference, const web_image *image,
                        image->image.info.height) != 0)
         return NULL;
     rayo_compare_options_init(&options);
+    options.lang = spanish ? RAYO_LANG_ES : RAYO_LANG_EN;
     if (rayo_compare_images(&reference->image, &image->image, &options,
                             &compare_report, &err) != RAYO_OK) {
         keep_error(&err);
