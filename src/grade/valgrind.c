@@ -26,7 +26,7 @@
  * (valgrind reserves far more than the program uses) and with ten times
  * the time (memcheck is that much slower); memcheck writes its log into
  * a socket the grader reads while it runs, at a descriptor in the range
- * valgrind keeps out of the program's reach (process.c), and this file
+ * valgrind keeps out of the program's reach (run/process.c), and this file
  * reads the log's lines as bytes (valgrind_log.c), not its exit status.
  * The log is read as if the program could still write into it: every
  * error line counts and the largest leak and error counts win, so added
