@@ -8,7 +8,7 @@
  * never depends on which grading finished first.  The library's grader
  * is safe to run on several threads at once: it keeps no global state,
  * and its children are forked with only async-signal-safe calls before
- * exec (src/grade/process.c).
+ * exec (src/grade/run/process.c).
  */
 #define _POSIX_C_SOURCE 200809L
 

@@ -9,18 +9,8 @@
  * a directory renamed mid-way gets the file, or loses the temporary
  * file, where it now is.
  *
- * An existing file is replaced only where a shell's `>` could write it:
- * one we may not write is refused (RAYO_ERR_IO, "Permission denied")
- * before anything is created, and a replaced file keeps its mode (for
- * root, its owner and group too).  A symbolic link is followed (the link
- * stays, its target is replaced) except where the kernel's
- * protected_symlinks rule forbids it: in a sticky world-writable
- * directory, a link owned by neither us nor the directory's owner.  Standard output ("-"), devices, pipes and
- * sockets are written directly: nothing is ever renamed over /dev/null.
- *
- * Writes are buffered; errors carry the file name and the system's reason.
- * A reader that went away (EPIPE) is reported as RAYO_ERR_PIPE so the
- * command can end quietly.  The caller should ignore SIGPIPE.
+ * Bytes only: images are formatted by the writers (writer.h).  Which
+ * files it replaces, how, and its errors are said after the includes.
  */
 #ifndef RAYO_OUTPUT_H
 #define RAYO_OUTPUT_H
@@ -29,6 +19,22 @@
 
 #include "rayo/export.h"
 #include "rayo/status.h"
+
+/*
+ * An existing file is replaced only where a shell's `>` could write it:
+ * one we may not write is refused (RAYO_ERR_IO, "Permission denied")
+ * before anything is created, and a replaced file keeps its mode (for
+ * root, its owner and group too).  A symbolic link is followed (the link
+ * stays, its target is replaced) except where the kernel's
+ * protected_symlinks rule forbids it: in a sticky world-writable
+ * directory, a link owned by neither us nor the directory's owner.
+ * Standard output ("-"), devices, pipes and sockets are written
+ * directly: nothing is ever renamed over /dev/null.
+ *
+ * Writes are buffered; errors carry the file name and the system's reason.
+ * A reader that went away (EPIPE) is reported as RAYO_ERR_PIPE so the
+ * command can end quietly.  The caller should ignore SIGPIPE.
+ */
 
 #ifdef __cplusplus
 extern "C" {

@@ -3,8 +3,26 @@
  * files into a rayo_image.
  *
  * The format comes from the content's first bytes (P1-P6, the PNG
- * signature or "BM"), never from the file's name.  What each format
- * becomes:
+ * signature or "BM"), never from the file's name.  Limits are checked
+ * before any pixel memory is requested, and a malformed file's error is
+ * one line naming the file and the byte.  Not a writer (writer.h) and
+ * not a converter between layouts (image_convert.h): each format becomes
+ * the layout nearest to it.  Which layout, how each format is read, and
+ * the errors are said after the includes.
+ */
+#ifndef RAYO_READER_H
+#define RAYO_READER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/export.h"
+#include "rayo/image.h"
+#include "rayo/status.h"
+#include "rayo/writer.h"
+
+/*
+ * What each format becomes:
  *
  *   P1, P4               RAYO_SAMPLE_BIT (1 = black)
  *   P2, P5               1 channel, U8 when maxval <= 255, else U16
@@ -61,16 +79,6 @@
  * RAYO_ERR_NOMEM.  The message is one line: "FILE: byte N: found X;
  * expected Y" (plain text positions also give the line).
  */
-#ifndef RAYO_READER_H
-#define RAYO_READER_H
-
-#include <stddef.h>
-#include <stdint.h>
-
-#include "rayo/export.h"
-#include "rayo/image.h"
-#include "rayo/status.h"
-#include "rayo/writer.h"
 
 #ifdef __cplusplus
 extern "C" {

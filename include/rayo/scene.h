@@ -7,6 +7,24 @@
  * point, normal, object and material), and is anything in the way (shadow
  * rays).  It knows nothing of pixels, cameras or shading formulas.
  *
+ * Its life cycle, when it builds a hierarchy, and the conventions the
+ * shading code relies on are said after the includes.
+ */
+#ifndef RAYO_SCENE_H
+#define RAYO_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/export.h"
+#include "rayo/plane.h"
+#include "rayo/ray.h"
+#include "rayo/sphere.h"
+#include "rayo/status.h"
+#include "rayo/mesh.h"
+#include "rayo/triangle.h"
+
+/*
  * Life cycle: create, add everything, rayo_scene_prepare (builds the
  * bounding volume hierarchy), then query from any number of threads.
  * Queries never modify the scene.  A scene that was never prepared, or
@@ -28,19 +46,6 @@
  *     triangle the side facing the ray (normal . direction <= 0);
  *   - t ranges are open: t_min < t < t_max; pass INFINITY for no bound.
  */
-#ifndef RAYO_SCENE_H
-#define RAYO_SCENE_H
-
-#include <stddef.h>
-#include <stdint.h>
-
-#include "rayo/export.h"
-#include "rayo/plane.h"
-#include "rayo/ray.h"
-#include "rayo/sphere.h"
-#include "rayo/status.h"
-#include "rayo/mesh.h"
-#include "rayo/triangle.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -8,6 +8,22 @@
  * rows.  Writers are strict about what they emit: plain Netpbm lines are
  * at most 70 characters, as the format pages ask.
  *
+ * Converting between layouts (say colour to bilevel) is not a writer's
+ * job (image_convert.h).  What each format takes is said after the
+ * includes.
+ */
+#ifndef RAYO_WRITER_H
+#define RAYO_WRITER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rayo/export.h"
+#include "rayo/image.h"
+#include "rayo/output.h"
+#include "rayo/status.h"
+
+/*
  * What each format takes:
  *   PBM  RAYO_SAMPLE_BIT rows;
  *   PGM  one channel, U8 or U16 (the maxval is kept);
@@ -23,19 +39,7 @@
  *   JPEG three channels as colour, one channel and BIT as gray (bilevel
  *        0 and 255), samples over 8 bits scaled; lossy, at the options'
  *        quality.
- * Converting between layouts (say colour to bilevel) is not a writer's
- * job.
  */
-#ifndef RAYO_WRITER_H
-#define RAYO_WRITER_H
-
-#include <stddef.h>
-#include <stdint.h>
-
-#include "rayo/export.h"
-#include "rayo/image.h"
-#include "rayo/output.h"
-#include "rayo/status.h"
 
 #ifdef __cplusplus
 extern "C" {

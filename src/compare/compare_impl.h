@@ -63,7 +63,7 @@ static inline unsigned cmp_popcount64(uint64_t v)
 /* Clears the bits past width in the last byte of a packed row. */
 void cmp_clear_padding(unsigned char *row, uint32_t width);
 
-/* ---- transform.c ---- */
+/* ---- mask/transform.c ---- */
 
 typedef enum cmp_transform_kind {
     CMP_IDENTITY,   /* same frame, or centred on the reference's */
@@ -112,7 +112,7 @@ int cmp_transform_row(const cmp_transform *t, const cmp_mask *image,
                       uint32_t ref_width, uint32_t ref_height, uint32_t y,
                       unsigned char *out, unsigned char *known);
 
-/* ---- outline.c ---- */
+/* ---- mask/outline.c ---- */
 
 typedef struct cmp_outline cmp_outline;
 
@@ -145,7 +145,7 @@ void cmp_outline_mismatch_distances(cmp_outline *outline, uint32_t y,
 void cmp_outline_row_distances(cmp_outline *outline, uint32_t y, int colour,
                                int64_t *d2);
 
-/* ---- near.c ---- */
+/* ---- mask/near.c ---- */
 
 /* Tolerances the near test takes (its cost grows as their square). */
 #define CMP_NEAR_MAX_TOLERANCE 8.0
@@ -162,7 +162,7 @@ void cmp_near_free(cmp_near *near);
 uint64_t cmp_near_count_far(cmp_near *near, uint32_t y, int colour,
                             const unsigned char *diff);
 
-/* ---- band.c ---- */
+/* ---- mask/band.c ---- */
 
 /* *band = the reference pixels within the tolerance of a pixel of the
  * other colour (0 when the reference has one colour).  Rewinds the
@@ -199,7 +199,7 @@ double cmp_chance_limit(uint64_t pixels, uint64_t reference_black,
  * filled). */
 int cmp_mask_crowded(const rayo_compare_report *report);
 
-/* ---- farthest.c ---- */
+/* ---- mask/farthest.c ---- */
 
 typedef struct cmp_farthest cmp_farthest;
 
@@ -228,7 +228,7 @@ void cmp_farthest_row(cmp_farthest *farthest, uint32_t y,
 /* The largest squared distance of a mismatch given, -1 for none. */
 int64_t cmp_farthest_best(const cmp_farthest *farthest);
 
-/* ---- shape.c ---- */
+/* ---- mask/shape.c ---- */
 
 typedef struct cmp_shape {
     uint64_t black;
@@ -245,7 +245,7 @@ void cmp_shape_measure(const cmp_mask *mask, cmp_shape *shape);
  * past limit is not finished: some value past limit is returned. */
 double cmp_shape_ellipse_error(const cmp_mask *mask, double limit);
 
-/* ---- measure.c ---- */
+/* ---- mask/measure.c ---- */
 
 typedef struct cmp_counts {
     uint64_t known;           /* pixels the transform could place */
@@ -265,7 +265,7 @@ rayo_status cmp_measure(const cmp_mask *ref, const cmp_mask *image,
                         int exact, double tolerance, cmp_counts *counts,
                         rayo_error *err);
 
-/* ---- diagnose.c ---- */
+/* ---- mask/diagnose.c ---- */
 
 /*
  * Fills report's verdict and diagnosis, given its measurements (filled by

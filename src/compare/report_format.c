@@ -305,7 +305,7 @@ static void put_diagnosis(cmp_sink *s, const rayo_compare_report *r)
 }
 
 /* A consistent picture whose mismatches the course's focal distance
-   explains (diagnose.c: scale_found, about 1.0048 or its inverse). */
+   explains (mask/diagnose.c: scale_found, about 1.0048 or its inverse). */
 static void put_focal_text(cmp_sink *s, const rayo_compare_report *r)
 {
     if (r->verdict != RAYO_VERDICT_CONSISTENT || r->scale_found == 1)

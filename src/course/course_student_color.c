@@ -6,6 +6,13 @@
  * mistake switched on.  esfera_distancia's normal is
  * vector_normalizar(P - C), the function the student has at hand.
  *
+ * Not where the correct image comes from: rayo_course_render draws that
+ * with rayo's renderer (course_exact.c).  The mistakes as modelled, and
+ * the point light's shadow ray, are said after the include.
+ */
+#include "course_student.h"
+
+/*
  * The mistakes as modelled here:
  *   NO_SHADOWS           the loop over the other spheres left out;
  *   SELF_SHADOW          it does not skip the sphere P lies on;
@@ -32,7 +39,6 @@
  * (t < |posicion - P|); no sphere of scene 3 lies beyond a light, so the
  * image is the one the course's whole-half-line model gives.
  */
-#include "course_student.h"
 
 /* Li for lamp at P, and how far along it a sphere shadows P. */
 static course_fvec light_direction(const course_student *s,

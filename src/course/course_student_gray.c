@@ -5,6 +5,13 @@
  * 255 return 255), in float, with one mistake switched on, and the int
  * that main then prints.
  *
+ * Not where the correct image comes from: rayo_course_render draws that
+ * with rayo's renderer (course_exact.c).  The mistakes as modelled are
+ * said after the include.
+ */
+#include "course_student.h"
+
+/*
  * The mistakes as modelled here:
  *   NO_SHADOWS           the loop over the other spheres left out;
  *   SELF_SHADOW          it does not skip the sphere P lies on;
@@ -19,7 +26,6 @@
  *   FIRST_SPHERE, FAR_ROOT   in the sphere loop (course_student.c);
  *   UNNORMALISED_NORMAL  N = P - C, not divided by r.
  */
-#include "course_student.h"
 
 unsigned char rayo_course_student_gray(const course_student *s,
                                        course_fvec d)

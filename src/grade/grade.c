@@ -6,7 +6,7 @@
  *
  * The reference is loaded before anything runs, so a bad --reference
  * is a usage error, not a failed grade; before that, the sandbox is
- * chosen (sandbox.c) and the report says how the submission is
+ * chosen (run/sandbox.c) and the report says how the submission is
  * isolated.  The temporary directory is removed on every path out.
  */
 #define _XOPEN_SOURCE 700

@@ -60,7 +60,7 @@ rayo_status grade_write_file(const char *path, const char *text,
 rayo_status grade_read_fd(int fd, uint64_t limit, char **data, size_t *size,
                           int *cut, rayo_error *err);
 
-/* output_header.c: what an output's first bytes say it is (Netpbm's
+/* checks/output_header.c: what an output's first bytes say it is (Netpbm's
    magic and size, plain or raw; PNG's IHDR), read without decoding. */
 typedef struct grade_header {
     const char *format;     /* "plain PBM", "raw PPM", "PNG", ... */
@@ -239,7 +239,7 @@ typedef struct grade_context {
     rayo_grade_report *report;
     char *dir;          /* the temporary directory (the build folder) */
     char *work;         /* dir/work: the program's folder */
-    int sandboxed;      /* runs go through bubblewrap (sandbox.c) */
+    int sandboxed;      /* runs go through bubblewrap (run/sandbox.c) */
     char *bwrap;        /* its path */
     char *cwd;          /* the current directory (the compiler's) */
     const char *const *sources; /* the student's files, as given */

@@ -5,11 +5,28 @@
  * lost).  Memory still reachable at exit is a warning: the course's
  * "pasa Valgrind" is about errors and lost blocks.
  *
+ * Not where the program is run (run/) nor where the log's bytes are
+ * split into lines (valgrind_log.c): this file says what the lines
+ * mean.  How the program runs again, how far the log is trusted, and
+ * the statement's terms for a frame are said after the includes.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "functions/table.h"
+#include "grade_impl.h"
+#include "valgrind_log.h"
+
+/*
  * The program runs again, under the same limits except address space
  * (valgrind reserves far more than the program uses) and with ten times
  * the time (memcheck is that much slower); memcheck writes its log into
  * a socket the grader reads while it runs, at a descriptor in the range
- * valgrind keeps out of the program's reach (process.c), and this file
+ * valgrind keeps out of the program's reach (run/process.c), and this file
  * reads the log's lines as bytes (valgrind_log.c), not its exit status.
  * The log is read as if the program could still write into it: every
  * error line counts and the largest leak and error counts win, so added
@@ -25,16 +42,6 @@
  * arreglo_agregar writes past the end of v.  By the frame's function
  * name, whichever exercise is graded.
  */
-#define _POSIX_C_SOURCE 200809L
-
-#include <signal.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-
-#include "functions/table.h"
-#include "grade_impl.h"
-#include "valgrind_log.h"
 
 #define SLOWDOWN 10.0
 #define SHOWN_ERRORS 4

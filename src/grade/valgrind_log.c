@@ -4,7 +4,7 @@
  * cut short, and the signs that the program wrote into the log.
  *
  * The log comes through a socket that the program cannot reach (the
- * descriptor is in the range valgrind keeps for itself, process.c), so
+ * descriptor is in the range valgrind keeps for itself, run/process.c), so
  * those signs should never appear; they are looked for all the same,
  * because what the program could write there would otherwise become the
  * grader's verdict.  What the lines mean is valgrind.c's business.

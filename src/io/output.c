@@ -2,6 +2,27 @@
  * output.c - buffered output (see output.h for the contract): to a
  * descriptor, a file (its creation and replacing: output_file.c) or memory.
  *
+ * It fills one buffer, sized for what it writes to, and writes it out,
+ * gathering the bytes a formatter hands over by reference; it formats
+ * nothing itself (the writers do).  How the buffer is sized, the bytes
+ * by reference, and memory outputs are said after the includes.
+ */
+#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE
+
+#include "rayo/output.h"
+
+#include "output_impl.h"
+#include "output_reserve.h"
+
+#include <errno.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/uio.h>
+#include <unistd.h>
+
+/*
  * The buffer's size suits what is written to, and is chosen (by fstat)
  * at the first write.  A pipe gets one pipe's worth: the reader empties
  * it while the next is being filled, so rendering overlaps with the
@@ -21,20 +42,6 @@
  * An output into memory (rayo_output_open_memory) has no descriptor: the
  * same buffer's flushes append to a growing block, handed over on commit.
  */
-#define _POSIX_C_SOURCE 200809L
-#define _DEFAULT_SOURCE
-
-#include "rayo/output.h"
-
-#include "output_impl.h"
-#include "output_reserve.h"
-
-#include <errno.h>
-#include <stdint.h>
-#include <stdlib.h>
-#include <string.h>
-#include <sys/uio.h>
-#include <unistd.h>
 
 #define OUTPUT_DIRECT_WRITE (64u * 1024u)
 

@@ -5,7 +5,7 @@
  * corners end up on one line (a scan's slivers, or a scale that crushes
  * them) are left out and counted, not refused: one bad facet in a million
  * should not stop a render.  Reading the file is mesh.h's job, parsing the
- * scene line scene_file.c's.
+ * scene line scenefile/scene_file.c's.
  */
 #include <math.h>
 

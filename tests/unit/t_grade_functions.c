@@ -85,7 +85,7 @@ static const rayo_grade_item *item(const graded *g)
 }
 
 /* "NAME: right on N known inputs" is looked for as "NAME (N)" in the
-   one line that sums up the passing functions (functions.c). */
+   one line that sums up the passing functions (functions/engine.c). */
 static int has_line(const graded *g, const char *line)
 {
     static const char sum[] = "right on all their known inputs: ";
@@ -517,7 +517,7 @@ static void test_ej2(void)
         graded g;
         grade_fixture(RAYO_COURSE_EJ2, "ej2_norma_double.c", &g);
         /* The finding comes first, before the functions that were
-           right (functions.c). */
+           right (functions/engine.c). */
         ok(item(&g)->result == RAYO_GRADE_FAIL && item(&g)->line_count > 1 &&
                starts(item(&g)->lines[0],
                        "norma: the signature differs from the statement's "

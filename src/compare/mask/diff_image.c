@@ -23,7 +23,7 @@
  * A 2-bit palette makes a 4096 x 4096 picture 4 MiB of samples instead of
  * 48 MiB of RGB, compressed at zlib's fastest level.  Memory is one
  * packed row.  A gray or colour pair is handed to the tone comparison's
- * own picture (tone_diff.c).
+ * own picture (tone/tone_diff.c).
  */
 
 enum { WHITE, BLACK, REFERENCE_ONLY, IMAGE_ONLY };

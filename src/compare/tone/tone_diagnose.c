@@ -2,7 +2,7 @@
  * tone_diagnose.c - the verdict of a tone comparison and, for an
  * inconsistent image, the one mistake that explains it.
  *
- * As for masks (diagnose.c), each candidate is undone on the image and
+ * As for masks (mask/diagnose.c), each candidate is undone on the image and
  * the images compared again, and named when at most a twentieth of the
  * unexplained pixels is left.  The candidates here: channels in another
  * order, flips, inversion, a whole-pixel shift, a scale about the

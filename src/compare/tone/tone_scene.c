@@ -3,20 +3,12 @@
  * in, when no single mistake explains it: the background, a sphere
  * added, missing, moved, partly drawn or drawn another size, the
  * ambient term, the light's intensity or direction (EJ3: a point
- * light's place, tone_scene_lamps.c), values below the
- * ambient term.
+ * light's place, tone_scene_lamps.c), values below the ambient term.
  *
- * The scene's map (course_map.c: the sphere each pixel shows, each
- * light's L.N and shadow) is read region by region, away from every
- * outline (its core), so a picture drawn a pixel or two apart (the
- * course's z = 321.5) counts the same: the background's most common
- * value, each sphere's pixels that show it, the unlit pixels' most
- * common value (the ambient term), the lit ones' (v - ambient) / (L.N)
- * (II).  Where none of that fits, it says where the differences lie
- * (which sphere, which part of the background).  Not a fit of a scene
- * to a picture: the course's scene, read against the image, and only
- * for the exercises the student model covers (the registry says), at
- * their size.
+ * Not a fit of a scene to a picture: the course's scene, read against
+ * the image, and only for the exercises the student model covers (the
+ * registry says), at their size.  How the scene's map is read is said
+ * after the includes.
  */
 #include <math.h>
 #include <pthread.h>
@@ -24,6 +16,17 @@
 #include <string.h>
 
 #include "tone_scene.h"
+
+/*
+ * The scene's map (course_map.c: the sphere each pixel shows, each
+ * light's L.N and shadow) is read region by region, away from every
+ * outline (its core), so a picture drawn a pixel or two apart (the
+ * course's z = 321.5) counts the same: the background's most common
+ * value, each sphere's pixels that show it, the unlit pixels' most
+ * common value (the ambient term), the lit ones' (v - ambient) / (L.N)
+ * (II).  Where none of that fits, it says where the differences lie
+ * (which sphere, which part of the background).
+ */
 
 /* Pixels below the ambient term are named when they are at least this
    share of the lit, the shadowed or the unlit pixels (not noise) ... */

@@ -9,7 +9,7 @@
  * The compiler runs in the current directory (as the compile step's
  * does); the harness is the student's code and runs in the program's
  * folder under the program's limits; both in the sandbox when there is
- * one (process.c).
+ * one (run/process.c).
  */
 #define _POSIX_C_SOURCE 200809L
 
