@@ -94,15 +94,10 @@ static bool agregar(arreglo_t *objetos, geometria_t tipo, void *g, color_t color
     if (g == NULL)
         return false;
     o = objeto_crear(tipo, g, color, ka, kd, ks, kr);
-    if (o == NULL || !arreglo_agregar(objetos, o)) {
-        /* el objeto se adueña de g: si no se creo, se destruye aparte */
-        if (o != NULL)
-            objeto_destruir(o);
-        else {
-            objeto_t *aux = objeto_crear(tipo, g, color, 0, 0, 0, 0);
-            if (aux != NULL)
-                objeto_destruir(aux);
-        }
+    if (o == NULL)
+        return false;
+    if (!arreglo_agregar(objetos, o)) {
+        objeto_destruir(o);
         return false;
     }
     return true;

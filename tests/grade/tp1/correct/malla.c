@@ -12,28 +12,23 @@ struct malla {
     size_t n;
 };
 
-/* m = Rz Ry Rx */
-static void rotacion(vector_t grados, double m[3][3])
+/* Gira v alrededor de x, luego de y, luego de z, por los angulos en grados
+   (regla de la mano derecha), un giro por vez. */
+static vector_t rotar(vector_t grados, const float v[3])
 {
-    double cx = cos(grados.x * PI / 180), sx = sin(grados.x * PI / 180);
-    double cy = cos(grados.y * PI / 180), sy = sin(grados.y * PI / 180);
-    double cz = cos(grados.z * PI / 180), sz = sin(grados.z * PI / 180);
-    m[0][0] = cz * cy;
-    m[0][1] = cz * sy * sx - sz * cx;
-    m[0][2] = cz * sy * cx + sz * sx;
-    m[1][0] = sz * cy;
-    m[1][1] = sz * sy * sx + cz * cx;
-    m[1][2] = sz * sy * cx - cz * sx;
-    m[2][0] = -sy;
-    m[2][1] = cy * sx;
-    m[2][2] = cy * cx;
-}
-
-static vector_t rotar(double m[3][3], const float v[3])
-{
-    return vector_crear(m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2],
-                        m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
-                        m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]);
+    double ax = grados.x * PI / 180, ay = grados.y * PI / 180;
+    double az = grados.z * PI / 180;
+    double x = v[0], y = v[1], z = v[2], aux;
+    aux = y * cos(ax) - z * sin(ax); /* alrededor de x */
+    z = y * sin(ax) + z * cos(ax);
+    y = aux;
+    aux = z * sin(ay) + x * cos(ay); /* alrededor de y */
+    z = z * cos(ay) - x * sin(ay);
+    x = aux;
+    aux = x * cos(az) - y * sin(az); /* alrededor de z */
+    y = x * sin(az) + y * cos(az);
+    x = aux;
+    return vector_crear(x, y, z);
 }
 
 malla_t *malla_crear_desde_stl(const char *archivo, double s, vector_t grados,
@@ -41,7 +36,6 @@ malla_t *malla_crear_desde_stl(const char *archivo, double s, vector_t grados,
 {
     char encabezado[80];
     uint32_t n, i;
-    double m[3][3];
     malla_t *malla;
     FILE *f = fopen(archivo, "rb");
     if (f == NULL)
@@ -62,7 +56,6 @@ malla_t *malla_crear_desde_stl(const char *archivo, double s, vector_t grados,
         fclose(f);
         return NULL;
     }
-    rotacion(grados, m);
     for (i = 0; i < n; i++) {
         float datos[12];
         uint16_t atributo;
@@ -76,12 +69,12 @@ malla_t *malla_crear_desde_stl(const char *archivo, double s, vector_t grados,
             return NULL;
         }
         for (k = 0; k < 3; k++)
-            p[k] = vector_suma(vector_escalar(rotar(m, datos + 3 + 3 * k), s), t);
+            p[k] = vector_suma(vector_escalar(rotar(grados, datos + 3 + 3 * k), s), t);
         calculada = vector_producto_vectorial(vector_resta(p[1], p[0]),
                                               vector_resta(p[2], p[0]));
         if (vector_norma(calculada) == 0)
             continue; /* degenerado: se descarta */
-        normal = rotar(m, datos);
+        normal = rotar(grados, datos);
         if (vector_norma(normal) == 0)
             normal = calculada;
         tr = triangulo_crear_con_normal(p[0], p[1], p[2], normal);

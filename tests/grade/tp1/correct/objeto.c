@@ -55,8 +55,10 @@ objeto_t *objeto_crear(geometria_t geometria, void *g, color_t color,
                        float ka, float kd, float ks, float kr)
 {
     objeto_t *o = malloc(sizeof(objeto_t));
-    if (o == NULL)
+    if (o == NULL) {
+        destructores[geometria](g);
         return NULL;
+    }
     o->geometria = geometria;
     o->g = g;
     o->color = color;

@@ -12,7 +12,8 @@ typedef enum { ESFERA, PLANO, TRIANGULO, MALLA } geometria_t;
 
 typedef struct objeto objeto_t;
 
-/* El objeto se adueña de la geometria: destruirlo la destruye. */
+/* El objeto se adueña de la geometria: destruirlo la destruye, y si no se
+   puede crear, la destruye enseguida. */
 objeto_t *objeto_crear(geometria_t geometria, void *g, color_t color,
                        float ka, float kd, float ks, float kr);
 void objeto_destruir(objeto_t *objeto);
