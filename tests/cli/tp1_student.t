@@ -45,6 +45,14 @@ for depth in 0 1 2; do
     is "$(jq -r .verdict "$TMP/out")" "$want" "depth $depth: rayo compare says $want"
 done
 
+# The statement's acceptance: no memory error and no leak, in valgrind mode.
+if [ "${RAYO_VALGRIND:-0}" = 1 ]; then
+    (cd "$TMP/tp1" && valgrind -q --error-exitcode=99 --leak-check=full \
+        --errors-for-leak-kinds=definite,indirect,possible \
+        ./20212_tp1 32 24 2 small.bmp)
+    ok $? "the submission runs clean under valgrind"
+fi
+
 # Depth matters in this scene, or the test could not tell the levels apart.
 cmp -s "$TMP/r0.ppm" "$TMP/r1.ppm"
 ok "$([ $? -ne 0 ]; echo $?)" "depth 1 adds reflections to depth 0"
