@@ -13,10 +13,13 @@
 #include <stddef.h>
 #include <stdio.h>
 
-/* x as the student's float holds it. */
+/* x as the student's float holds it.  Through a volatile float: gcc 12
+   at -O2 vectorised two neighbouring (double)(float) conversions into
+   plain divisions, dropping the rounding (clang kept it). */
 static inline double fl(double x)
 {
-    return (double)(float)x;
+    volatile float f = (float)x;
+    return f;
 }
 
 static inline void vfl(const double *in, double *out)
