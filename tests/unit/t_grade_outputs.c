@@ -146,6 +146,15 @@ static void signs(void)
     ok(s.nul, "a NUL byte");
     vg_check("==9== a\nforged\n", 15, 1023, &s);
     ok(s.unframed, "a line without a frame");
+    text = "### unhandled dwarf2 abbrev form code 0x25\n"
+           "get_Form_szB: unhandled 27 (DW_FORM_addrx)\n"
+           "==9== ERROR SUMMARY: 0 errors from 0 contexts\n";
+    vg_check(text, strlen(text), 1023, &s);
+    ok(!s.unframed && !s.duplicate,
+       "valgrind's own notices on clang's DWARF 5: not forged lines");
+    text = "### unhandled dwarf2\n";
+    vg_check(text, strlen(text), 1023, &s);
+    ok(s.unframed, "a line that only starts like such a notice: forged");
     vg_check(twice, sizeof twice - 1, 1023, &s);
     ok(s.duplicate, "two error summaries from one process");
     vg_check(refused, sizeof refused - 1, 1023, &s);
