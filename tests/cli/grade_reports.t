@@ -91,20 +91,23 @@ if [ -n "${RECORD:-}" ]; then
 fi
 
 cases >"$TMP/got"
-# One assert per case, so that a failure names the program.
-csplit_cases() { # FILE DIR: one file per case into DIR, named by line
+# One assert per case, keyed by its name (so that a case added or taken
+# away fails alone and names the program).
+split_cases() { # FILE DIR: each case into DIR, in a file named after it
     mkdir -p "$2"
-    awk -v dir="$2" '/^== / && !/^== exit status/ { n++ } { print > (dir "/" n) }' "$1"
+    awk -v dir="$2" '/^== / && !/^== exit status/ {
+                         file = substr($0, 4); gsub(/[^A-Za-z0-9_.-]/, "_", file) }
+                     { print > (dir "/" file) }' "$1"
 }
-csplit_cases "$TMP/got" "$TMP/g"
-csplit_cases "$WANT" "$TMP/w"
+split_cases "$TMP/got" "$TMP/g"
+split_cases "$WANT" "$TMP/w"
 for want in "$TMP"/w/*; do
     i=$(basename "$want")
     name=$(head -n 1 "$want" | cut -c4-)
     same=1
     cmp -s "$want" "$TMP/g/$i" && same=0
     ok "$same" "$name: the report as recorded"
-    [ "$same" -eq 0 ] || diff "$want" "$TMP/g/$i" | sed 's/^/#   /' | head -20
+    [ "$same" -eq 0 ] || diff "$want" "$TMP/g/$i" 2>&1 | sed 's/^/#   /' | head -20
 done
 is "$(ls "$TMP/g" | wc -l | tr -d ' ')" "$(ls "$TMP/w" | wc -l | tr -d ' ')" \
     "as many cases as recorded"
