@@ -37,6 +37,9 @@ LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
     --keyword=cmp_put:2 --flag=cmp_put:2:c-format \
     --keyword=cmp_putn:3,4 --flag=cmp_putn:3:c-format \
     --flag=cmp_putn:4:c-format \
+    --keyword=grade_say:3 --flag=grade_say:3:c-format \
+    --keyword=grade_fail:3 --flag=grade_fail:3:c-format \
+    --keyword=grade_warn:3 --flag=grade_warn:3:c-format \
     --add-comments=TRANSLATORS: --add-location=file --no-wrap --sort-by-file \
     --output="$tmp" $files
 if [ -f "$out" ] &&

@@ -63,7 +63,7 @@ typedef struct rayo_grade_item {
     rayo_grade_result result;
     char **lines;       /* line_count lines, no newline; owned */
     size_t line_count;
-    size_t warnings;    /* lines that begin "warning: " */
+    size_t warnings;    /* lines that are warnings */
 } rayo_grade_item;
 
 typedef struct rayo_grade_report {

@@ -428,7 +428,7 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
         item->result = RAYO_GRADE_PASS;
         status = say_command(ctx, item, argv, err);
         if (status == RAYO_OK && errors[0] != '\0')
-            status = grade_say(item, err, "warning: the compiler printed "
+            status = grade_warn(item, err, "warning: the compiler printed "
                                           "messages but succeeded:");
         if (status == RAYO_OK && errors[0] != '\0')
             status = grade_quote(item, errors, QUOTED_LINES, err);

@@ -21,13 +21,19 @@
 #define GRADE_PRINTF(f, a)
 #endif
 
-/* report.c: appends one formatted line (a warning when it begins
-   "warning: "); RAYO_ERR_NOMEM when memory runs out. */
+/* report.c: appends one formatted line, format looked up in the catalog
+   of err's language (a catalog message: grade_say, grade_fail and
+   grade_warn are xgettext keywords); RAYO_ERR_NOMEM when memory runs
+   out. */
 rayo_status grade_say(rayo_grade_item *item, rayo_error *err,
                       const char *format, ...) GRADE_PRINTF(3, 4);
 
 /* Sets the result and appends a line, in one call. */
 rayo_status grade_fail(rayo_grade_item *item, rayo_error *err,
+                       const char *format, ...) GRADE_PRINTF(3, 4);
+
+/* Appends a line that is a warning (counted in item->warnings). */
+rayo_status grade_warn(rayo_grade_item *item, rayo_error *err,
                        const char *format, ...) GRADE_PRINTF(3, 4);
 
 /* Appends the first max lines of text (a compiler's messages, a log),

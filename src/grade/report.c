@@ -2,8 +2,10 @@
  * report.c - the grader's report: reason lines added to a criterion,
  * names for criteria and results, the overall result, and freeing.
  *
- * Reasons are whole sentences for a student; the command decides how to
- * lay them out (text or JSON) and escapes their control bytes.  Every
+ * Reasons are whole sentences for a student, looked up in the catalog
+ * of err's language (rayo_error_lang: the caller's choice) and written
+ * with its decimal separator; the command decides how to lay them out
+ * (text or JSON) and escapes their control bytes.  Every
  * line is bounded here (a quoted line to 300 bytes, any line to 1000),
  * so a program that prints megabyte-long lines gets them cut.  Nothing
  * here knows what a criterion checks.
@@ -14,6 +16,7 @@
 #include <string.h>
 
 #include "grade_impl.h"
+#include "rayo/lang.h"
 
 /* The most bytes a reason line keeps; longer ones are cut (at a UTF-8
    character boundary) and end with "...". */
@@ -21,6 +24,9 @@
 /* The most bytes of one quoted line (a compiler message, the program's
    standard error). */
 #define QUOTE_BYTES 300
+/* A line is formatted into this much room first; a longer one (a quoted
+   line of megabytes) is cut by add_line. */
+#define FORMAT_BYTES 4096
 
 /* Where to cut text of length n to at most room bytes without splitting
    a UTF-8 sequence. */
@@ -53,8 +59,6 @@ static rayo_status add_line(rayo_grade_item *item, char *line,
     }
     item->lines = grown;
     item->lines[item->line_count++] = line;
-    if (strncmp(line, "warning: ", 9) == 0)
-        item->warnings++;
     return RAYO_OK;
 }
 
@@ -64,19 +68,11 @@ static rayo_status vsay(rayo_grade_item *item, rayo_error *err,
 static rayo_status vsay(rayo_grade_item *item, rayo_error *err,
                         const char *format, va_list args)
 {
-    char small[1];
-    char *line;
-    va_list copy;
-    int length;
-    va_copy(copy, args);
-    length = vsnprintf(small, sizeof small, format, copy);
-    va_end(copy);
-    if (length < 0)
-        return rayo_error_set(err, RAYO_ERR_INVALID, "grade: bad message");
-    line = malloc((size_t)length + 1);
+    char *line = malloc(FORMAT_BYTES);
     if (line == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    vsnprintf(line, (size_t)length + 1, format, args);
+    rayo_lang_vformat(rayo_error_lang(err), line, FORMAT_BYTES, format,
+                      args);
     return add_line(item, line, err);
 }
 
@@ -103,6 +99,34 @@ rayo_status grade_fail(rayo_grade_item *item, rayo_error *err,
     return status;
 }
 
+rayo_status grade_warn(rayo_grade_item *item, rayo_error *err,
+                       const char *format, ...)
+{
+    rayo_status status;
+    va_list args;
+    va_start(args, format);
+    status = vsay(item, err, format, args);
+    va_end(args);
+    if (status == RAYO_OK)
+        item->warnings++;
+    return status;
+}
+
+/* A quoted line goes in as it is: it is the program's or a tool's text,
+   never a message of the catalog. */
+static rayo_status say_quoted(rayo_grade_item *item, const char *text,
+                              size_t length, const char *more,
+                              rayo_error *err)
+{
+    char *line = malloc(length + strlen(more) + 3);
+    if (line == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    memcpy(line, "  ", 2);
+    memcpy(line + 2, text, length);
+    strcpy(line + 2 + length, more);
+    return add_line(item, line, err);
+}
+
 rayo_status grade_quote(rayo_grade_item *item, const char *text,
                         size_t max, rayo_error *err)
 {
@@ -115,9 +139,8 @@ rayo_status grade_quote(rayo_grade_item *item, const char *text,
             total++;
             if (shown < max) {
                 size_t keep = cut_at(p, length, QUOTE_BYTES);
-                rayo_status status =
-                    grade_say(item, err, "  %.*s%s", (int)keep, p,
-                              keep < length ? "..." : "");
+                rayo_status status = say_quoted(
+                    item, p, keep, keep < length ? "..." : "", err);
                 if (status != RAYO_OK)
                     return status;
                 shown++;
@@ -128,7 +151,12 @@ rayo_status grade_quote(rayo_grade_item *item, const char *text,
             p++;
     }
     if (total > shown)
-        return grade_say(item, err, "  ... (%zu more lines)", total - shown);
+        return grade_say(item, err,
+                         rayo_ngettext(rayo_error_lang(err),
+                                       "  ... (%zu more line)",
+                                       "  ... (%zu more lines)",
+                                       total - shown),
+                         total - shown);
     return RAYO_OK;
 }
 

@@ -278,7 +278,7 @@ static rayo_status report_leaks(rayo_grade_item *item, const vg_text *log,
     }
     bytes = leak_bytes(log, "still reachable", &blocks);
     if (status == RAYO_OK && bytes > 0)
-        status = grade_say(item, err, "warning: %llu bytes in %llu blocks "
+        status = grade_warn(item, err, "warning: %llu bytes in %llu blocks "
                                       "still reachable at exit (a file "
                                       "not closed, memory not freed before "
                                       "returning from main)",

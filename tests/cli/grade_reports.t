@@ -44,7 +44,7 @@ report() {
     "$RAYO" grade --cc cc --timeout 10 "$@" </dev/null >"$file.raw" 2>&1 || status=$?
     {
         echo "== $name"
-        sed -e '1{/^sandbox: /d;}' -e 's/ in [0-9][0-9.]* s\b/ in N s/g' "$file.raw"
+        sed -e '1{/^sandbox: /d;}' -e 's/ in [0-9][0-9.,]* s\b/ in N s/g' "$file.raw"
         echo "== exit status $status"
     } >"$file"
     rm -f "$file.raw"

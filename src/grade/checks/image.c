@@ -390,7 +390,7 @@ rayo_status grade_step_image(grade_context *ctx, const rayo_image *image,
                            ctx->options->exercise->height / 2,
                            ctx->options->exercise->height / 2 - 1);
     if (status == RAYO_OK && salvaged)
-        status = grade_say(item, err, "warning: the pixels were read as if "
+        status = grade_warn(item, err, "warning: the pixels were read as if "
                                       "the output's mistakes above were "
                                       "fixed");
     if (status == RAYO_OK && ctx->options->diff != NULL)

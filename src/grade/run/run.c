@@ -83,7 +83,7 @@ static rayo_status collect_output(grade_context *ctx, grade_captured *got,
         if (ctx->output == NULL)
             return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
     }
-    return grade_say(&ctx->report->items[RAYO_GRADE_RUN], err,
+    return grade_warn(&ctx->report->items[RAYO_GRADE_RUN], err,
                      "warning: wrote nothing on standard output but wrote "
                      "the file '%s'; that file was checked",
                      got->file_name);
