@@ -233,6 +233,9 @@ char *grade_which(const char *name);
 /* "segmentation fault (SIGSEGV)" and the like. */
 const char *grade_signal_name(int signal_number);
 
+/* The most arguments a graded program is given. */
+#define GRADE_ARGS 8
+
 /* The state of a grading in progress, shared by the steps. */
 typedef struct grade_context {
     const rayo_grade_options *options;
@@ -256,6 +259,10 @@ typedef struct grade_context {
     size_t output_size;
     unsigned long run_uid; /* the sandbox's uid of its own (run/uid.c);
                               0 while it has none */
+    int work_kept;      /* the work folder holds the built submission:
+                           the sandbox binds it instead of a fresh tmpfs */
+    char *const *args;  /* the program's arguments under valgrind (at
+                           most GRADE_ARGS), or NULL for none */
 } grade_context;
 
 /* run/uid.c: the uid the sandboxed runs of ctx take (0: the grader's
@@ -281,5 +288,8 @@ rayo_status grade_step_image(grade_context *ctx, const rayo_image *image,
                              const rayo_image *reference, int salvaged,
                              rayo_error *err);
 rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err);
+/* tp1.c: the steps of an exercise whose submission is a whole program
+   built by its own Makefile (rayo_grade_exercise.program). */
+rayo_status grade_tp1_steps(grade_context *ctx, rayo_error *err);
 
 #endif
