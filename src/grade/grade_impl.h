@@ -223,6 +223,8 @@ void grade_sandbox_describe(uint64_t disk, char *text, size_t room);
 
 /* The limits a student's program runs under (run/run.c). */
 grade_limits grade_run_limits(const rayo_grade_options *options);
+/* A tool's run of argv (found on PATH), 1 MiB of its output kept. */
+grade_run grade_tool_run(char *const *argv);
 /* Only a wall clock, for the (trusted) compiler. */
 grade_limits grade_compiler_limits(const rayo_grade_options *options,
                                    double seconds);

@@ -217,11 +217,7 @@ static rayo_status build(grade_context *ctx, rayo_error *err)
     rayo_status status;
     if (cc == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    memset(&run, 0, sizeof run);
-    run.argv = argv;
-    run.search = 1;
-    run.role = GRADE_ROLE_TOOL;
-    run.out_limit = 1u << 20;
+    run = grade_tool_run(argv);
     status = grade_spawn(ctx, &run, &limits, &got, err);
     free(cc);
     if (status != RAYO_OK)
