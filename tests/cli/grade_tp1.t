@@ -58,6 +58,16 @@ grade --no-valgrind
 is "$status:$results" "1:$FIRST output=FAIL image=skipped valgrind=skipped" "bmp_top_down: output fails"
 says "tp1.bmp is tp1.ppm upside down: its rows are stored top first" "bmp_top_down: named"
 
+# The rows top first under a negative height: the same picture, not the
+# course's layout.
+submission bmp_negative_height
+sed -i 's/for (y = im->alto; y-- > 0;) {/for (y = 0; y < im->alto; y++) {/; s/escribir_int32_little_endian(f, (int32_t)im->alto);/escribir_int32_little_endian(f, -(int32_t)im->alto);/' "$dir/imagen.c"
+grade --no-valgrind
+is "$status:$results" "1:$FIRST output=FAIL image=skipped valgrind=skipped" "bmp_negative_height: output fails"
+says "tp1.bmp: its rows are stored top-down \(height -121\); the course's BMP has a positive height" \
+    "bmp_negative_height: named"
+says "tp1.ppm and tp1.bmp hold the same pixels" "bmp_negative_height: the picture itself is right"
+
 # The BMP's rows without their padding to 4 bytes.
 submission bmp_unpadded
 sed -i 's|size_t fila = (3 \* im->ancho + 3) / 4 \* 4;|size_t fila = 3 * im->ancho;|' "$dir/imagen.c"
