@@ -143,16 +143,50 @@ static int has_word(const char *line, size_t n, const char *word)
     return 0;
 }
 
+/* Whether a command line (length n) runs a C compiler: its first word
+   is the grader's, or is named cc, c99, or *gcc* or *clang* (a Makefile
+   that spells gcc itself). */
+static int runs_compiler(const grade_context *ctx, const char *line,
+                         size_t n)
+{
+    size_t w = strcspn(line, " \t"), b;
+    char first[128];
+    const char *base;
+    if (w >= n || w == 0 || w >= sizeof first)
+        return 0;
+    memcpy(first, line, w);
+    first[w] = '\0';
+    if (strcmp(first, ctx->cc[0]) == 0)
+        return 1;
+    base = strrchr(first, '/') != NULL ? strrchr(first, '/') + 1 : first;
+    b = strlen(base);
+    return strcmp(base, "cc") == 0 || strcmp(base, "c99") == 0 ||
+           strstr(base, "gcc") != NULL || strstr(base, "clang") != NULL ||
+           (b > 3 && strcmp(base + b - 3, "-cc") == 0);
+}
+
+/* Whether the line (length n) names a .c file: a compile, not a link of
+   objects alone (which needs no warning flags). */
+static int names_source(const char *line, size_t n)
+{
+    size_t i;
+    for (i = 2; i <= n; i++)
+        if (line[i - 2] == '.' && line[i - 1] == 'c' &&
+            (i == n || line[i] == ' ' || line[i] == '\t'))
+            return 1;
+    return 0;
+}
+
 /* Every compile command make echoed must carry the course's flags. */
 static rayo_status check_flags(grade_context *ctx, const char *out,
                                rayo_error *err)
 {
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_COMPILE];
-    const char *cc = ctx->cc[0], *line = out;
-    size_t commands = 0, c = strlen(cc), i;
+    const char *line = out;
+    size_t commands = 0, i;
     while (*line != '\0') {
         size_t n = strcspn(line, "\n");
-        if (n > c && memcmp(line, cc, c) == 0 && line[c] == ' ') {
+        if (runs_compiler(ctx, line, n) && names_source(line, n)) {
             commands++;
             for (i = 0; i < COURSE_FLAGS; i++)
                 if (!has_word(line, n, course_flags[i]))
@@ -167,10 +201,9 @@ static rayo_status check_flags(grade_context *ctx, const char *out,
     }
     if (commands == 0)
         return grade_fail(item, err,
-                          "make echoed no command that runs %s, so the "
-                          "course's flags could not be checked; let the "
-                          "Makefile show its commands (no @, no -s)",
-                          cc);
+                          "make echoed no command that compiles a .c file, "
+                          "so the course's flags could not be checked; let "
+                          "the Makefile show its commands (no @, no -s)");
     return grade_say(item, err,
                      "make ran %zu compile commands, each with -std=c99 "
                      "-Wall -Werror -pedantic",
@@ -223,10 +256,11 @@ static rayo_status build(grade_context *ctx, rayo_error *err)
     if (status != RAYO_OK)
         return status;
     if (got.outcome.ending != GRADE_EXITED || got.outcome.status != 0) {
+        const char *said = got.errors_size > 0 ? got.errors : got.out;
         status = grade_fail(item, err, "make did not build the program; "
                                        "its first messages:");
         if (status == RAYO_OK)
-            status = grade_quote(item, got.errors != NULL ? got.errors : "",
+            status = grade_quote(item, said != NULL ? said : "",
                                  QUOTED_LINES, err);
     } else {
         item->result = RAYO_GRADE_PASS;

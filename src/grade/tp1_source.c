@@ -199,7 +199,8 @@ rayo_status grade_tp1_sources(grade_context *ctx, rayo_error *err)
         free(text);
     }
     closedir(d);
-    rayo_error_clear(err);
+    if (status == RAYO_OK)
+        rayo_error_clear(err);
     for (i = 0; status == RAYO_OK && i < PROTOTYPES; i++)
         status = found[i] ? grade_say(item, err,
                                       "%s has the statement's prototype",

@@ -41,8 +41,8 @@ if [ "$HAVE_VALGRIND" = 1 ]; then grade; want=pass; else grade --no-valgrind; wa
 is "$status" 0 "correct: exit status 0"
 is "$results" "$FIRST output=pass image=skipped valgrind=$want" \
     "correct: every criterion passes, the image has no reference"
-says '^compile +pass +make ran 12 compile commands, each with -std=c99 -Wall -Werror -pedantic$' \
-    "correct: make's 12 commands carry the course's flags"
+says '^compile +pass +make ran 11 compile commands, each with -std=c99 -Wall -Werror -pedantic$' \
+    "correct: make's 11 compile commands carry the course's flags"
 says "objeto_distancia has the statement's prototype" "correct: objeto_distancia"
 says "computar_intensidad has the statement's prototype" "correct: computar_intensidad"
 says "tp1.ppm and tp1.bmp hold the same pixels" "correct: the PPM and the BMP agree"
@@ -50,6 +50,14 @@ says "both 161x121 as asked" "correct: the size of the arguments"
 says "it printed a message and failed" "correct: wrong arguments"
 grep -q '^ *note: ' "$TMP/out"
 ok "$([ $? -ne 0 ]; echo $?)" "correct: no lookup-table note"
+
+# A Makefile that spells gcc itself and links without the flags: the
+# compiles are what the flags are checked on.
+submission gcc_spelled
+sed -i 's/\$(CC) \$(CFLAGS) \$(OBJS)/gcc $(OBJS)/; s/\$(CC) \$(CFLAGS) -c/gcc $(CFLAGS) -c/' "$dir/Makefile"
+grade --no-valgrind
+is "$status:$results" "0:$FIRST output=pass image=skipped valgrind=skipped" "gcc_spelled: passes"
+says '^compile +pass +make ran 11 compile commands' "gcc_spelled: its 11 compiles checked"
 
 # The BMP's rows written top first under a positive height.
 submission bmp_top_down
