@@ -89,66 +89,61 @@ static int right_pixels(const rayo_image *im)
     return 1;
 }
 
+/* One case: the BMP make() builds, cut short by cut bytes, its header's
+   file size replaced by size (0: kept); whether it fails, the first
+   reason line, and whether its pixels come back right. */
+typedef struct bmp_case {
+    const char *name;
+    long height;
+    size_t stride;
+    int bits;
+    size_t cut;
+    unsigned long size;
+    int fails;
+    const char *first;
+    int decoded;
+} bmp_case;
+
+static const bmp_case cases[] = {
+    {"the course's layout", H, 12, 24, 0, 0, 0, "", 1},
+    {"top-down rows", -H, 12, 24, 0, 0, 1,
+     "x.bmp: its rows are stored top-down (height -2); the course's BMP "
+     "has a positive height and its rows bottom-up",
+     1},
+    {"unpadded rows", H, 9, 24, 0, 0, 1,
+     "x.bmp: its rows are not padded: each has 9 bytes; the course pads "
+     "them with zeros to 12, a multiple of 4",
+     1},
+    {"32 bits", H, 12, 32, 0, 0, 1,
+     "x.bmp: it has 32 bits per pixel; the course's BMP has 24 (B, G, R)",
+     0},
+    {"3x3 for 3x2", H + 1, 12, 24, 0, 0, 1,
+     "x.bmp is 3x3; the program was asked for 3x2", 0},
+    {"a byte short", H, 12, 24, 1, 0, 1,
+     "x.bmp has 23 bytes of pixels; 2 rows of 12 bytes (3 x 3, padded to "
+     "a multiple of 4) are 24",
+     0},
+    {"a wrong file size in the header", H, 12, 24, 0, 1000, 1,
+     "x.bmp: its header says 1000 bytes; the file has 78", 1}};
+
 int main(void)
 {
     unsigned char b[54 + 16 * H];
     char first[300];
     rayo_image im;
-    size_t size = make(b, H, 12, 24);
-
-    is_int(check(b, size, first, sizeof first, &im), 0,
-           "the course's layout passes");
-    is_string(first, "", "  with nothing to say");
-    ok(right_pixels(&im), "  its pixels, bottom-up B G R, read back");
-    rayo_image_free(&im);
-
-    size = make(b, -H, 12, 24);
-    is_int(check(b, size, first, sizeof first, &im), 1, "top-down fails");
-    is_string(first,
-              "x.bmp: its rows are stored top-down (height -2); the "
-              "course's BMP has a positive height and its rows bottom-up",
-              "  named with its height");
-    ok(right_pixels(&im), "  and its pixels still read right");
-    rayo_image_free(&im);
-
-    size = make(b, H, 9, 24);
-    is_int(check(b, size, first, sizeof first, &im), 1, "unpadded fails");
-    is_string(first,
-              "x.bmp: its rows are not padded: each has 9 bytes; the "
-              "course pads them with zeros to 12, a multiple of 4",
-              "  named with both strides");
-    ok(right_pixels(&im), "  and its pixels read at 9 bytes a row");
-    rayo_image_free(&im);
-
-    size = make(b, H, 12, 32);
-    is_int(check(b, size, first, sizeof first, &im), 1, "32 bits fail");
-    is_string(first,
-              "x.bmp: it has 32 bits per pixel; the course's BMP has 24 "
-              "(B, G, R)",
-              "  named");
-    ok(im.pixels == NULL, "  and not decoded");
-
-    size = make(b, H + 1, 12, 24);
-    is_int(check(b, size, first, sizeof first, &im), 1, "3x3 fails");
-    is_string(first, "x.bmp is 3x3; the program was asked for 3x2",
-              "  the size named");
-
-    size = make(b, H, 12, 24);
-    is_int(check(b, size - 1, first, sizeof first, &im), 1,
-           "a byte short fails");
-    is_string(first,
-              "x.bmp has 23 bytes of pixels; 2 rows of 12 bytes (3 x 3, "
-              "padded to a multiple of 4) are 24",
-              "  the bytes counted");
-    ok(im.pixels == NULL, "  and not decoded");
-
-    put32(b + 2, 1000);
-    is_int(check(b, size, first, sizeof first, &im), 1,
-           "a wrong file size in the header fails");
-    is_string(first, "x.bmp: its header says 1000 bytes; the file has 78",
-              "  both sizes named");
-    rayo_image_free(&im);
-
+    size_t i;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const bmp_case *c = &cases[i];
+        size_t size = make(b, c->height, c->stride, c->bits) - c->cut;
+        if (c->size != 0)
+            put32(b + 2, c->size);
+        is_int(check(b, size, first, sizeof first, &im), c->fails,
+               "%s: %s", c->name, c->fails ? "fails" : "passes");
+        is_string(first, c->first, "  %s: its first line", c->name);
+        is_int(right_pixels(&im), c->decoded, "  %s: %s", c->name,
+               c->decoded ? "its pixels read back right" : "not decoded");
+        rayo_image_free(&im);
+    }
     is_int(check((const unsigned char *)"P3\n3 2\n255\n", 11, first,
                  sizeof first, &im),
            1, "a PPM is not a BMP");
