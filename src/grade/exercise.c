@@ -49,9 +49,7 @@ typedef char registry_fits[RAYO_COURSE_EXERCISES <=
 /* The exercises beyond the course's scenes: whole programs with no
    reference image, checked by what their statement fixes. */
 static const rayo_grade_exercise programs[] = {
-    {"tp1",
-     "Trabajo practico 1: the whole ray tracer, its Makefile, PPM and BMP "
-     "161x121",
+    {"tp1", "Trabajo practico 1: the whole ray tracer, a folder with a Makefile",
      161, 121, '3', RAYO_COURSE_EXERCISES, NULL, "20212_tp1"}};
 #define PROGRAMS (sizeof programs / sizeof programs[0])
 
