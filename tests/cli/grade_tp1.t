@@ -106,7 +106,7 @@ sed -i '/^int main(int argc, char \*argv\[\])$/{n;s/$/\n    int sin_usar;/}' "$d
 grade --no-valgrind
 is "$status:$results" "1:compile=FAIL functions=skipped run=skipped output=skipped image=skipped valgrind=skipped" \
     "warning: compile fails"
-says "^compile +FAIL +the compile command 'cc -std=c99 -Wall -pedantic -c main.c' lacks -Werror; the course builds with -std=c99 -Wall -Werror -pedantic$" \
+says "^compile +FAIL +the compile command '[^ ]+ -std=c99 -Wall -pedantic -c main.c' lacks -Werror; the course builds with -std=c99 -Wall -Werror -pedantic$" \
     "warning: the flag missing named"
 says "the build printed warnings; the statement asks for none" "warning: the warning named"
 says "unused variable .sin_usar." "warning: the compiler's warning quoted"
