@@ -91,8 +91,14 @@ typedef struct rayo_grade_exercise {
     char magic;              /* its plain Netpbm format: '1' PBM, '2' PGM,
                                 '3' PPM */
     rayo_course_exercise course; /* its scene (course.h) */
-    /* Renders the exercise's reference image into image. */
+    /* Renders the exercise's reference image into image; NULL for an
+       exercise the course gives no reference for (TP1). */
     rayo_status (*reference)(rayo_image *image, rayo_error *err);
+    /* A whole program's executable, built by the submission's own
+       Makefile (TP1: "20212_tp1"); its submission is a folder and it is
+       checked by what the statement fixes (docs/grading.md, "TP1").
+       NULL for the exercises grade compiles from their sources. */
+    const char *program;
 } rayo_grade_exercise;
 
 /* The exercise called name, or NULL. */

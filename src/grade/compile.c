@@ -415,11 +415,7 @@ rayo_status grade_step_compile(grade_context *ctx, rayo_error *err)
         rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
         goto done;
     }
-    memset(&run, 0, sizeof run);
-    run.argv = argv;
-    run.search = 1;
-    run.role = GRADE_ROLE_TOOL;
-    run.out_limit = 1u << 20;
+    run = grade_tool_run(argv);
     status = grade_spawn(ctx, &run, &limits, &got, err);
     if (status != RAYO_OK)
         goto done;

@@ -2,9 +2,10 @@
  * exercise.c - the exercises rayo can grade, as the course's registry
  * (rayo/course/course.h) gives them: each with its name, title, the
  * image its program must write and its reference, rayo's exact render
- * of the exercise's scene.  Nothing here names an exercise: a new one is
- * an entry in the course's registry (src/course/) and its functions'
- * cases in grade's functions criterion.
+ * of the exercise's scene.  A new exercise of the course's scenes is an
+ * entry in the course's registry (src/course/) and its functions' cases
+ * in grade's functions criterion; a whole program with no reference
+ * (TP1) is an entry of programs[] below, graded by tp1.c.
  *
  * The table is made from the registry once (pthread_once) and constant
  * after; nothing here runs a submission.
@@ -45,7 +46,14 @@ typedef char registry_fits[RAYO_COURSE_EXERCISES <=
                                ? 1
                                : -1];
 
-static rayo_grade_exercise exercises[RAYO_COURSE_EXERCISES];
+/* The exercises beyond the course's scenes: whole programs with no
+   reference image, checked by what their statement fixes. */
+static const rayo_grade_exercise programs[] = {
+    {"tp1", "Trabajo practico 1: the whole ray tracer, a folder with a Makefile",
+     161, 121, '3', RAYO_COURSE_EXERCISES, NULL, "20212_tp1"}};
+#define PROGRAMS (sizeof programs / sizeof programs[0])
+
+static rayo_grade_exercise exercises[RAYO_COURSE_EXERCISES + PROGRAMS];
 static pthread_once_t made = PTHREAD_ONCE_INIT;
 
 static void make(void)
@@ -62,19 +70,28 @@ static void make(void)
         e->magic = c->magic;
         e->course = c->exercise;
         e->reference = references[i];
+        e->program = NULL;
     }
+    for (i = 0; i < PROGRAMS; i++)
+        exercises[RAYO_COURSE_EXERCISES + i] = programs[i];
 }
 
 const rayo_grade_exercise *rayo_grade_exercises(size_t *count)
 {
     pthread_once(&made, make);
-    *count = RAYO_COURSE_EXERCISES;
+    *count = RAYO_COURSE_EXERCISES + PROGRAMS;
     return exercises;
 }
 
 const rayo_grade_exercise *rayo_grade_exercise_find(const char *name)
 {
     rayo_course_exercise e = rayo_course_find(name);
+    size_t i;
     pthread_once(&made, make);
-    return e < RAYO_COURSE_EXERCISES ? &exercises[e] : NULL;
+    if (e < RAYO_COURSE_EXERCISES)
+        return &exercises[e];
+    for (i = 0; name != NULL && i < PROGRAMS; i++)
+        if (strcmp(programs[i].name, name) == 0)
+            return &exercises[RAYO_COURSE_EXERCISES + i];
+    return NULL;
 }

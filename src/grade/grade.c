@@ -160,6 +160,8 @@ static rayo_status load_reference(const rayo_grade_options *o,
 {
     if (o->reference != NULL)
         return rayo_image_read_file(o->reference, reference, NULL, err);
+    if (o->exercise->reference == NULL)
+        return RAYO_OK;
     return o->exercise->reference(reference, err);
 }
 
@@ -236,7 +238,10 @@ static rayo_status run_steps(grade_context *ctx, const rayo_image *reference,
     rayo_grade_report *report = ctx->report;
     rayo_image image;
     int salvaged = 0;
-    rayo_status status = grade_step_compile(ctx, err);
+    rayo_status status;
+    if (ctx->options->exercise->program != NULL)
+        return grade_tp1_steps(ctx, err);
+    status = grade_step_compile(ctx, err);
     memset(&image, 0, sizeof image);
     if (status != RAYO_OK || ctx->program == NULL)
         return status;

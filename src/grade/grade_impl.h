@@ -229,6 +229,8 @@ void grade_sandbox_describe(uint64_t disk, char *text, size_t room);
 
 /* The limits a student's program runs under (run/run.c). */
 grade_limits grade_run_limits(const rayo_grade_options *options);
+/* A tool's run of argv (found on PATH), 1 MiB of its output kept. */
+grade_run grade_tool_run(char *const *argv);
 /* Only a wall clock, for the (trusted) compiler. */
 grade_limits grade_compiler_limits(const rayo_grade_options *options,
                                    double seconds);
@@ -238,6 +240,9 @@ char *grade_which(const char *name);
 
 /* "segmentation fault (SIGSEGV)" and the like. */
 const char *grade_signal_name(int signal_number);
+
+/* The most arguments a graded program is given. */
+#define GRADE_ARGS 8
 
 /* The state of a grading in progress, shared by the steps. */
 typedef struct grade_context {
@@ -262,6 +267,10 @@ typedef struct grade_context {
     size_t output_size;
     unsigned long run_uid; /* the sandbox's uid of its own (run/uid.c);
                               0 while it has none */
+    int work_kept;      /* the work folder holds the built submission:
+                           the sandbox binds it instead of a fresh tmpfs */
+    char *const *args;  /* the program's arguments under valgrind (at
+                           most GRADE_ARGS), or NULL for none */
 } grade_context;
 
 /* run/uid.c: the uid the sandboxed runs of ctx take (0: the grader's
@@ -287,5 +296,8 @@ rayo_status grade_step_image(grade_context *ctx, const rayo_image *image,
                              const rayo_image *reference, int salvaged,
                              rayo_error *err);
 rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err);
+/* tp1.c: the steps of an exercise whose submission is a whole program
+   built by its own Makefile (rayo_grade_exercise.program). */
+rayo_status grade_tp1_steps(grade_context *ctx, rayo_error *err);
 
 #endif

@@ -402,7 +402,8 @@ rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err)
     char *valgrind = grade_which("valgrind");
     int log_fd = grade_log_fd();
     char log_option[32];
-    char *argv[8];
+    char *argv[8 + GRADE_ARGS];
+    size_t a;
     grade_limits limits = grade_run_limits(ctx->options);
     grade_run run;
     grade_captured got;
@@ -424,7 +425,10 @@ rayo_status grade_step_valgrind(grade_context *ctx, rayo_error *err)
     argv[4] = "--trace-children=yes";
     argv[5] = log_option;
     argv[6] = ctx->program;
-    argv[7] = NULL;
+    for (a = 0; ctx->args != NULL && a < GRADE_ARGS && ctx->args[a] != NULL;
+         a++)
+        argv[7 + a] = ctx->args[a];
+    argv[7 + a] = NULL;
     limits.wall *= SLOWDOWN;
     limits.cpu *= SLOWDOWN;
     limits.memory = 0;

@@ -36,9 +36,9 @@ static void grade_fixture(rayo_course_exercise course, const char *name,
                           graded *g)
 {
     static const rayo_grade_exercise ej2 = {
-        "ej2", "test", 640, 480, '2', RAYO_COURSE_EJ2, NULL};
+        "ej2", "test", 640, 480, '2', RAYO_COURSE_EJ2, NULL, NULL};
     static const rayo_grade_exercise ej3 = {
-        "ej3", "test", 640, 480, '3', RAYO_COURSE_EJ3, NULL};
+        "ej3", "test", 640, 480, '3', RAYO_COURSE_EJ3, NULL, NULL};
     const char *root = getenv("RAYO_SOURCE");
     const char *cc = getenv("CC");
     char path[PATH_MAX], ccbuf[256];

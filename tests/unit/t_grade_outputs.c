@@ -21,7 +21,7 @@ static void peeks(void)
         0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13,
         'I', 'H', 'D', 'R', 0, 1, 0, 0, 0, 0, 0x40, 0, 16, 0, 0, 0, 0};
     static const rayo_grade_exercise ej1 = {"ej1", "test", 640, 480, '1',
-                                            RAYO_COURSE_EJ1, NULL};
+                                            RAYO_COURSE_EJ1, NULL, NULL};
     grade_header h;
     rayo_image reference;
     const char *text;

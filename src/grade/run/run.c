@@ -120,6 +120,17 @@ grade_limits grade_compiler_limits(const rayo_grade_options *o,
     return limits;
 }
 
+grade_run grade_tool_run(char *const *argv)
+{
+    grade_run run;
+    memset(&run, 0, sizeof run);
+    run.argv = argv;
+    run.search = 1;
+    run.role = GRADE_ROLE_TOOL;
+    run.out_limit = 1u << 20;
+    return run;
+}
+
 grade_limits grade_run_limits(const rayo_grade_options *o)
 {
     grade_limits limits = common_limits(o, o->timeout);

@@ -221,8 +221,12 @@ char **grade_sandbox_argv(const grade_context *ctx, const grade_run *run,
         add_env(&w, ctx->dir, "/tmp", 1);
         add2(&w, "--chdir", ctx->cwd);
     } else {
-        add2(&w, "--size", number);
-        add2(&w, "--tmpfs", ctx->work);
+        if (ctx->work_kept) {
+            add3(&w, "--bind", ctx->work, ctx->work);
+        } else {
+            add2(&w, "--size", number);
+            add2(&w, "--tmpfs", ctx->work);
+        }
         if (run->program != NULL)
             add3(&w, "--ro-bind", run->program, run->program);
         add(&w, "--remount-ro");
