@@ -6,7 +6,9 @@
  * there exactly; and the lookup-table rule (no switch or if on the
  * geometry's kind to choose a function) is looked for and, where broken,
  * reported as a note for the teacher, who judges the design: it fails
- * nothing.
+ * nothing.  A prototype is its return type and its parameters' types:
+ * the parameters' names do not change a C function's type, so another
+ * name (nivel for profundidad) is the statement's prototype.
  *
  * A reading of the text, not a compilation: it does not call the
  * functions (the harness that would is not written yet).
@@ -143,6 +145,69 @@ static unsigned kind_condition(const char *text, char *shown, size_t room)
     return 0;
 }
 
+/* The next prototype of the function called name in text (squeezed),
+   from *cursor on, with its parameters' names left out:
+   "float(const objeto_t*,vector_t,...)" for "float objeto_distancia(const
+   objeto_t *objeto, vector_t o, ...": into out (room bytes), 1 when one
+   was found (a name followed by a parameter list and preceded by a word:
+   a call's "return" too, which then matches no prototype), 0 at the
+   end. */
+static int next_type(const char *text, const char **cursor,
+                     const char *name, char *out, size_t room)
+{
+    size_t n = strlen(name), used;
+    const char *at, *ret, *p;
+    int depth = 0;
+    for (at = *cursor; (at = strstr(at, name)) != NULL; at += n) {
+        if ((at > text && word_char(at[-1])) || at[n] != '(')
+            continue;
+        ret = at - (at > text && at[-1] == ' ');
+        for (p = ret; p > text && word_char(p[-1]); p--)
+            ;
+        if (p != ret && (size_t)(ret - p) + 2 < room)
+            break;
+    }
+    if (at == NULL)
+        return 0;
+    *cursor = at + n;
+    used = (size_t)(ret - p);
+    memcpy(out, p, used);
+    /* Each parameter copied without its last word when that is a name:
+       a word after a type's word or its '*', ending the parameter. */
+    for (p = at + n; *p != '\0' && used + 2 < room; p++) {
+        depth += *p == '(';
+        depth -= *p == ')';
+        if (word_char(*p) && (p[-1] == ' ' || p[-1] == '*')) {
+            const char *e = p;
+            while (word_char(*e))
+                e++;
+            if (depth == 1 && (*e == ',' || *e == ')') &&
+                strncmp(p, "const", 5) != 0) {
+                if (out[used - 1] == ' ')
+                    used--;
+                p = e - 1;
+                continue;
+            }
+        }
+        out[used++] = *p;
+        if (depth == 0)
+            break;
+    }
+    out[used] = '\0';
+    return 1;
+}
+
+/* 1 when text declares or defines name with the type want. */
+static int has_type(const char *text, const char *name, const char *want)
+{
+    const char *cursor = text;
+    char type[256];
+    while (next_type(text, &cursor, name, type, sizeof type))
+        if (strcmp(type, want) == 0)
+            return 1;
+    return 0;
+}
+
 static int is_source(const char *name)
 {
     size_t n = strlen(name);
@@ -155,8 +220,9 @@ rayo_status grade_tp1_sources(grade_context *ctx, rayo_error *err)
     rayo_grade_item *item = &ctx->report->items[RAYO_GRADE_FUNCTIONS];
     DIR *d = opendir(ctx->work);
     struct dirent *entry;
-    int found[PROTOTYPES] = {0};
+    int found[PROTOTYPES] = {0}, named[PROTOTYPES] = {0};
     char *wanted[PROTOTYPES] = {NULL};
+    char want_type[PROTOTYPES][256] = {{0}};
     size_t i;
     rayo_status status = RAYO_OK;
     if (d == NULL)
@@ -166,6 +232,11 @@ rayo_status grade_tp1_sources(grade_context *ctx, rayo_error *err)
         if ((wanted[i] = squeeze(prototypes[i][1])) == NULL)
             status = rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of "
                                                          "memory");
+        else {
+            const char *cursor = wanted[i];
+            next_type(wanted[i], &cursor, prototypes[i][0], want_type[i],
+                      sizeof want_type[i]);
+        }
     item->result = RAYO_GRADE_PASS;
     while (status == RAYO_OK && (entry = readdir(d)) != NULL) {
         char *path, *text = NULL, *tight;
@@ -183,8 +254,10 @@ rayo_status grade_tp1_sources(grade_context *ctx, rayo_error *err)
         free(path);
         blank(text);
         tight = squeeze(text);
-        for (i = 0; tight != NULL && i < PROTOTYPES; i++)
-            found[i] |= strstr(tight, wanted[i]) != NULL;
+        for (i = 0; tight != NULL && i < PROTOTYPES; i++) {
+            named[i] |= strstr(tight, wanted[i]) != NULL;
+            found[i] |= has_type(tight, prototypes[i][0], want_type[i]);
+        }
         line = entry->d_name[strlen(entry->d_name) - 1] == 'c'
                    ? kind_condition(text, shown, sizeof shown)
                    : 0;
@@ -202,9 +275,15 @@ rayo_status grade_tp1_sources(grade_context *ctx, rayo_error *err)
     if (status == RAYO_OK)
         rayo_error_clear(err);
     for (i = 0; status == RAYO_OK && i < PROTOTYPES; i++)
-        status = found[i] ? grade_say(item, err,
-                                      "%s has the statement's prototype",
-                                      prototypes[i][0])
+        status = found[i] && named[i]
+                     ? grade_say(item, err, "%s has the statement's prototype",
+                                 prototypes[i][0])
+                 : found[i]
+                     ? grade_say(item, err,
+                                 "%s has the statement's prototype, with "
+                                 "other names for its parameters (the names "
+                                 "do not change a function's type): %s",
+                                 prototypes[i][0], prototypes[i][1])
                           : grade_fail(item, err,
                                        "no %s with the statement's "
                                        "prototype, %s",

@@ -131,9 +131,19 @@ is "$status:$results" "0:$FIRST output=pass image=skipped valgrind=skipped" "swi
 says "note: objeto.c:[0-9]+ chooses by the geometry's kind with 'switch \(objeto->geometria\)'; the statement asks for lookup tables" \
     "switch_kind: the note for the teacher"
 
-# The statement's prototype with another parameter's name.
-submission signature
+# The statement's prototype with another parameter's name: the names do
+# not change a function's type, so it is the statement's, with a line
+# that says so.
+submission renamed_parameter
 sed -i '/^color_t computar_intensidad(int profundidad/,/^}/s/profundidad/nivel/g' "$dir/main.c"
+grade --no-valgrind
+is "$(echo "$results" | cut -d' ' -f2)" "functions=pass" "renamed_parameter: functions passes"
+says "computar_intensidad has the statement's prototype, with other names for its parameters" \
+    "renamed_parameter: said"
+
+# A prototype of another type: profundidad unsigned.
+submission signature
+sed -i 's/^color_t computar_intensidad(int profundidad/color_t computar_intensidad(unsigned profundidad/' "$dir/main.c"
 grade --no-valgrind
 is "$(echo "$results" | cut -d' ' -f2)" "functions=FAIL" "signature: functions fails"
 says "no computar_intensidad with the statement's prototype, color_t computar_intensidad\(int profundidad," "signature: named"
