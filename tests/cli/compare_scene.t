@@ -13,7 +13,8 @@
 # from (worked out here from the statement's geometry and the program's
 # own vector); EJ3's point light placed elsewhere by where it seems to
 # be (the program's own place), also through a little noise, and not
-# named in a right image with noise; a sphere whose centre another
+# named in a right image with noise; a point light's colour changed or
+# the light left out, read the same way with its place held; a sphere whose centre another
 # hides, named by its size from the part of it that shows.
 . "$(dirname "$0")/lib.sh"
 
@@ -45,7 +46,8 @@ for p in ej2_correct ej2_ambient_20 ej2_seventh_sphere ej2_background_ambient \
          ej2_shadow_zero ej2_missing_sphere ej2_last_sphere ej3_background_ambient \
          ej3_sphere_moved ej3_ambient_doubled correct pi_course \
          ej2_big_sphere ej2_small_sphere ej2_light_moved ej3_light_moved \
-         ej3_correct ej3_hidden_sphere_bigger; do
+         ej3_correct ej3_hidden_sphere_bigger ej3_light_colour \
+         ej3_light_missing; do
     student "$p"
     ok $? "$p compiles and runs"
 done
@@ -226,6 +228,45 @@ for a in 2 4; do
     scene "ej3_correct_$a" "$C3"
     json '[.diagnosis.findings[]?.kind] | index("lamp-position")' | grep -qx null
     ok $? "a right EJ3 image with noise of $a levels: no light named ($(json .diagnosis.kind))"
+done
+
+# The red light's colour typed (.5, 0, 0): read from the red channel,
+# the light's place held; the program's own colour.
+scene ej3_light_colour "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/lamp-colour" "the red light's colour typed .5: the light's colour"
+is "$(json '.diagnosis.findings[0].lamp')" 1 "  the second of the statement's lights, the red one"
+colour=$(sed -n 's/.*luz_crear((vector_t){-2, 10, 2.5}, (color_t){\([^}]*\)}, true).*/\1/p' "$STUDENTS/ej3_light_colour/main.c")
+for c in 0 1 2; do
+    want=$(echo "$colour" | cut -d, -f$((c + 1)))
+    within "$(json ".diagnosis.findings[0].value[$c]")" "$want" 0.01
+    ok $? "  Ii[$c] $(json ".diagnosis.findings[0].value[$c]"), the program's $want"
+done
+is "$(json '.diagnosis.findings[0].expected | map(tostring) | join(",")')" "0.9,0,0" \
+    "  against the statement's (0.9, 0, 0)"
+json .diagnosis.text | grep -q "^the light at (-2, 10, 2.5) looks like colour (0.50, 0.00, 0.00), not the statement's (0.9, 0, 0): C = Ia ka + Ii kd (L.N) fits [0-9]* of the [0-9]* pixels it lights with that Ii$"
+ok $? "  said as the light's colour"
+
+# The blue light left out: its channel stays at Ia ka where it lit.
+scene ej3_light_missing "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/lamp-missing" "the blue light left out: the light missing"
+is "$(json '.diagnosis.findings[0].lamp')/$(json '.diagnosis.findings[0].value[2]')" "3/0" \
+    "  the fourth of the statement's lights, the blue one, at 0"
+json .diagnosis.text | grep -q "^the light at (0, 10, 5) of the statement is not in your image: "
+ok $? "  said as a light not in the image"
+
+# Through noise of 2 levels the same, and the right image gets neither.
+for p in ej3_light_colour ej3_light_missing; do
+    noisy $p 2
+    scene "${p}_2" "$C3"
+    is "$(json '[.diagnosis.findings[].kind] | join(",")')" "$(echo $p | sed 's/ej3_light_/lamp-/')" \
+        "$p with noise of 2 levels: the same finding"
+done
+for a in 2 4; do
+    scene "ej3_correct_$a" "$C3"
+    json '[.diagnosis.findings[]?.kind] | (index("lamp-colour") // index("lamp-missing"))' | grep -qx null
+    ok $? "a right EJ3 image with noise of $a levels: no light's colour named"
 done
 
 # The blue sphere's centre is behind the cyan one (1, -0.6, 1.26): only

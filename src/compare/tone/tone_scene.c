@@ -416,8 +416,10 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     find_ambient(&w);
     if (w.gray && !tone_scene_light_direction(&w))
         find_light(&w);
-    if (!w.gray)
+    if (!w.gray) {
+        tone_scene_lamp_colours(&w);
         tone_scene_lamp_position(&w);
+    }
     find_below(&w);
     *named = r->tone.findings > 0;
     if (!*named)

@@ -80,6 +80,11 @@ int tone_scene_solve3(double a[3][3], const double *y, double *x);
    elsewhere, read from the channel it alone lights; 1 when named. */
 int tone_scene_lamp_position(scene_work *w);
 
+/* tone_scene_lamp_colour.c (the colour model): a point light of
+   another colour, or left out, read from the channel it alone lights;
+   1 when one is named. */
+int tone_scene_lamp_colours(scene_work *w);
+
 /* tone_scene_light.c (the gray model): the light's direction the shading fits,
    named when it explains the lit pixels much better than the
    statement's; 1 when named. */

@@ -10,8 +10,9 @@
  * P: the fit is that, refitted a few times from the statement's place.
  * It is named only when it explains those pixels much better than the
  * statement's light and is well away from it.  Not for the gray scene
- * (tone_scene_light.c), nor for a light's colour, a directional light
- * or a light left out, which this does not fit.
+ * (tone_scene_light.c), nor for a light's colour or a light left out
+ * (tone_scene_lamp_colour.c, whose finding comes first), nor for the
+ * directional light.
  */
 #include <math.h>
 
@@ -176,6 +177,11 @@ int tone_scene_lamp_position(scene_work *w)
                 lit++;
                 only = c;
             }
+        for (i = 0; i < w->r->tone.findings; i++)
+            if ((w->r->tone.finding[i].kind == RAYO_FINDING_LAMP_COLOUR ||
+                 w->r->tone.finding[i].kind == RAYO_FINDING_LAMP_MISSING) &&
+                w->r->tone.finding[i].box[0] == (int32_t)l)
+                lit = 0; /* its colour explains it */
         if (lit == 1)
             named += (size_t)lamp_place(w, l, only);
     }

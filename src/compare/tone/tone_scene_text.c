@@ -19,7 +19,7 @@
 static const char *const kind_names[] = {
     "background", "added", "missing", "moved", "partly",
     "ambient", "light", "below-ambient", "where", "size",
-    "light-direction", "lamp-position"};
+    "light-direction", "lamp-position", "lamp-colour", "lamp-missing"};
 
 static int gray_course(const rayo_compare_report *r)
 {
@@ -169,6 +169,33 @@ static void put_where(cmp_sink *s, const rayo_compare_finding *f)
             (int)f->box[0], (int)f->box[2], (int)f->box[1], (int)f->box[3]);
 }
 
+/* A point light of the colour scene whose colour differs, or left out,
+   named by its place in the statement. */
+static void put_lamp(cmp_sink *s, const rayo_compare_report *r,
+                     const rayo_compare_finding *f)
+{
+    const rayo_course_data *d =
+        rayo_course_data_of((rayo_course_exercise)r->tone.course);
+    const double *at;
+    if (d == NULL || f->box[0] < 0 || (size_t)f->box[0] >= d->lamp_count)
+        return;
+    at = d->lamps[f->box[0]].vector;
+    if (f->kind == RAYO_FINDING_LAMP_MISSING)
+        cmp_put(s, "the light at (%g, %g, %g) of the statement is not in "
+                   "your image: the channel it alone lights stays at Ia ka "
+                   "(and the other lights) on the %llu pixels it should "
+                   "light",
+            at[0], at[1], at[2], (unsigned long long)f->total);
+    else
+        cmp_put(s, "the light at (%g, %g, %g) looks like colour (%.2f, "
+                   "%.2f, %.2f), not the statement's (%g, %g, %g): C = Ia "
+                   "ka + Ii kd (L.N) fits %llu of the %llu pixels it lights "
+                   "with that Ii",
+            at[0], at[1], at[2], f->value[0], f->value[1], f->value[2],
+            f->expected[0], f->expected[1], f->expected[2],
+            (unsigned long long)f->pixels, (unsigned long long)f->total);
+}
+
 static void put_one(cmp_sink *s, const rayo_compare_report *r,
                     const rayo_compare_finding *f)
 {
@@ -211,6 +238,10 @@ static void put_one(cmp_sink *s, const rayo_compare_report *r,
             f->expected[0], f->expected[1], f->expected[2], f->value[0],
             f->value[1], f->value[2], (unsigned long long)f->pixels,
             (unsigned long long)f->total);
+        break;
+    case RAYO_FINDING_LAMP_COLOUR:
+    case RAYO_FINDING_LAMP_MISSING:
+        put_lamp(s, r, f);
         break;
     case RAYO_FINDING_BELOW_AMBIENT:
         put_below(s, r, f);
@@ -267,10 +298,14 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
             cmp_json(s, ", \"radius_px\": %.1f, \"expected_px\": %.1f, "
                        "\"radius\": %.3g",
                 f->value[0], f->expected[0], f->value[1]);
-        if (f->kind == RAYO_FINDING_LAMP_POSITION)
+        if (f->kind == RAYO_FINDING_LAMP_POSITION ||
+            f->kind == RAYO_FINDING_LAMP_COLOUR ||
+            f->kind == RAYO_FINDING_LAMP_MISSING)
             cmp_json(s, ", \"lamp\": %d", (int)f->box[0]);
         if (f->kind == RAYO_FINDING_LIGHT_DIRECTION ||
-            f->kind == RAYO_FINDING_LAMP_POSITION) {
+            f->kind == RAYO_FINDING_LAMP_POSITION ||
+            f->kind == RAYO_FINDING_LAMP_COLOUR ||
+            f->kind == RAYO_FINDING_LAMP_MISSING) {
             put_triple(s, "value", f->value, 3);
             put_triple(s, "expected", f->expected, 3);
         }
