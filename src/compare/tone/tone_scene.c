@@ -419,6 +419,7 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     if (!w.gray) {
         tone_scene_lamp_colours(&w);
         tone_scene_lamp_position(&w);
+        tone_scene_sun_direction(&w);
     }
     find_below(&w);
     *named = r->tone.findings > 0;

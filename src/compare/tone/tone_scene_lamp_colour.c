@@ -40,26 +40,19 @@ static int colour_term(const scene_work *w, size_t p, size_t lamp,
 {
     const rayo_course_map *m = w->map;
     const rayo_course_lamp *lamps = w->data->lamps;
-    const rayo_course_ball *ball;
+    const rayo_course_ball *ball = tone_scene_unclamped(w, p, c);
     int b = m->ball[p];
     double v = w->image->v[p * w->n + c], rest;
     float f;
-    size_t l;
-    if (!m->core[p] || b < 0 || w->gone[b] || v + w->levels + 1 >= 255)
+    if (ball == NULL)
         return 0;
-    ball = &w->data->balls[b];
     f = m->light[p * m->lamp_count + lamp];
     if (ball->color[c] != 1 || ball->kd < COLOUR_KD || f <= 0)
         return 0;
     *g = ball->kd * f;
     if (255 * *g * lamps[lamp].color[c] <= w->levels + COLOUR_LIT)
         return 0;
-    rest = w->data->ambient[c] * ball->ka;
-    for (l = 0; l < m->lamp_count; l++) {
-        float o = m->light[p * m->lamp_count + l];
-        if (l != lamp && o > 0)
-            rest += ball->kd * lamps[l].color[c] * o;
-    }
+    rest = tone_scene_rest(w, p, b, c, lamp);
     *y = (v + 0.5) / 255 - rest;
     return 1;
 }

@@ -40,21 +40,14 @@ static int lamp_term(const scene_work *w, size_t p, size_t lamp, unsigned c,
 {
     const rayo_course_map *m = w->map;
     const rayo_course_lamp *lamps = w->data->lamps;
-    const rayo_course_ball *ball;
+    const rayo_course_ball *ball = tone_scene_unclamped(w, p, c);
     int b = m->ball[p];
     double v = w->image->v[p * w->n + c], rest;
-    size_t l;
-    if (!m->core[p] || b < 0 || w->gone[b] || v + w->levels + 1 >= 255)
+    if (ball == NULL)
         return 0;
-    ball = &w->data->balls[b];
     if (ball->color[c] != 1 || ball->kd < LAMP_KD)
         return 0;
-    rest = w->data->ambient[c] * ball->ka;
-    for (l = 0; l < m->lamp_count; l++) {
-        float f = m->light[p * m->lamp_count + l];
-        if (l != lamp && f > 0)
-            rest += ball->kd * lamps[l].color[c] * f;
-    }
+    rest = tone_scene_rest(w, p, b, c, lamp);
     *term = (v + 0.5) / 255 - rest;
     if (255 * *term <= w->levels + LAMP_LIT)
         return 0;

@@ -76,6 +76,18 @@ static void put_ball_finding(cmp_sink *s, const rayo_compare_finding *f,
             f->x, f->y, b->center[0], b->center[1], b->center[2], b->radius);
         break;
     case RAYO_FINDING_MOVED:
+        if (f->value[2] > 0) { /* read from its outline, centre hidden */
+            cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, "
+                       "%g) and radius %g in the statement, whose centre is "
+                       "hidden, is drawn centred at about (%.0f, %.0f) px, "
+                       "as a centre of about (%.2f, %.2f, %g) would be: the "
+                       "outline that shows is the scene's moved; check its "
+                       "centre",
+                f->x, f->y, b->center[0], b->center[1], b->center[2],
+                b->radius, f->value[0], f->value[1], f->expected[0],
+                f->expected[1], f->expected[2]);
+            break;
+        }
         cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, %g) "
                    "and radius %g in the statement, is missing there, and "
                    "an object of about its size is at about (%.0f, %.0f) px "
@@ -223,6 +235,16 @@ static void put_one(cmp_sink *s, const rayo_compare_report *r,
             f->value[0], f->expected[0]);
         break;
     case RAYO_FINDING_LIGHT_DIRECTION:
+        if (!gray_course(r)) {
+            cmp_put(s, "the directional light seems to come from (%.2f, "
+                       "%.2f, %.2f), not the statement's (%.3g, %.3g, "
+                       "%.3g): C = Ia ka + Ii kd (L.N) fits %llu of the %llu "
+                       "values it lights with that L",
+                f->value[0], f->value[1], f->value[2], f->expected[0],
+                f->expected[1], f->expected[2],
+                (unsigned long long)f->pixels, (unsigned long long)f->total);
+            break;
+        }
         cmp_put(s, "the light seems to come from (%.2f, %.2f, %.2f), not the "
                    "statement's (%.3g, %.3g, %.3g): I = IA + II (L.N) fits "
                    "%llu of the %llu lit pixels of the spheres with that L",
@@ -290,6 +312,8 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
         if (f->kind == RAYO_FINDING_MOVED)
             cmp_json(s, ", \"to\": {\"x\": %.1f, \"y\": %.1f}", f->value[0],
                 f->value[1]);
+        if (f->kind == RAYO_FINDING_MOVED && f->value[2] > 0)
+            put_triple(s, "centre", f->expected, 3);
         if (f->kind == RAYO_FINDING_ADDED || f->kind == RAYO_FINDING_MOVED ||
             (f->kind == RAYO_FINDING_WHERE && f->ball < 0))
             cmp_json(s, ", \"box\": [%d, %d, %d, %d]", (int)f->box[0],
