@@ -332,6 +332,15 @@ scene fov88 "$C3"
 json '[.diagnosis.findings[]?.kind] | index("moved")' | grep -qx null
 ok $? "EJ3 at fov 88: no sphere named moved"
 
+# Other mistakes of the model: none of these findings, which read the
+# statement's lights and spheres, is named for them.
+for p in ej3_light_reversed ej3_point_as_directional ej3_no_shadows ej3_ka_kd_swapped; do
+    student "$p"
+    scene "$p" "$C3"
+    json '[.diagnosis.findings[]?.kind] | map(select(. == "lamp-colour" or . == "lamp-missing" or . == "light-direction" or . == "moved")) | length' | grep -qx 0
+    ok $? "$p: no light's colour, absence or direction, nor a sphere moved, named ($(json .diagnosis.kind))"
+done
+
 # --- nothing fits: where the differences lie -------------------------------
 scene ej2_last_sphere "$TMP/r2.pgm"
 is "$(json .diagnosis.kind)/$(json '.diagnosis.findings[0].kind')" "unknown/where" \
