@@ -195,10 +195,16 @@ typedef enum rayo_compare_finding_kind {
     RAYO_FINDING_LIGHT_DIRECTION, /* EJ2: value the direction the
                                 shading fits (unit), expected the
                                 statement's; pixels of total fitted */
-    RAYO_FINDING_LAMP_POSITION /* EJ3: box[0] the point light (0 first),
+    RAYO_FINDING_LAMP_POSITION, /* EJ3: box[0] the point light (0 first),
                                 value the place its channel fits,
                                 expected the statement's; pixels of
                                 total fitted */
+    RAYO_FINDING_LAMP_COLOUR, /* EJ3: box[0] the point light, value the
+                                colour Ii its channel fits at its place,
+                                expected the statement's; pixels of
+                                total fitted */
+    RAYO_FINDING_LAMP_MISSING /* EJ3: box[0] the point light, left out
+                                (its Ii fits about 0): as LAMP_COLOUR */
 } rayo_compare_finding_kind;
 
 #define RAYO_COMPARE_FINDINGS 6

@@ -13,8 +13,11 @@
 # from (worked out here from the statement's geometry and the program's
 # own vector); EJ3's point light placed elsewhere by where it seems to
 # be (the program's own place), also through a little noise, and not
-# named in a right image with noise; a sphere whose centre another
-# hides, named by its size from the part of it that shows.
+# named in a right image with noise; a point light's colour changed or
+# the light left out, read the same way with its place held; the
+# directional light's direction, as EJ2's; a sphere whose centre another
+# hides, named by its size from the part of it that shows, or moved,
+# placed from the circle of its outline.
 . "$(dirname "$0")/lib.sh"
 
 STUDENTS="$RAYO_SOURCE/tests/grade"
@@ -23,6 +26,16 @@ CC_STUDENT=${RAYO_CC:-cc}
 json() { jq -r "$1" "$TMP/out"; }
 # within GOT WANT SLACK: |GOT - WANT| <= SLACK (0/1 as a status)
 within() { awk -v g="$1" -v w="$2" -v s="$3" 'BEGIN { d = g - w; if (d < 0) d = -d; exit !(d <= s) }'; }
+
+# near3 WANTS SLACK NAME: the first finding's value[0..2] each within
+# SLACK of the comma-separated WANTS, the program's own numbers
+near3() {
+    for c in 0 1 2; do
+        want=$(echo "$1" | cut -d, -f$((c + 1)))
+        within "$(json ".diagnosis.findings[0].value[$c]")" "$want" "$2"
+        ok $? "  $3[$c] $(json ".diagnosis.findings[0].value[$c]"), the program's $want"
+    done
+}
 
 # student NAME: tests/grade/NAME compiled and run, its image in $TMP/NAME.out
 student() {
@@ -45,7 +58,8 @@ for p in ej2_correct ej2_ambient_20 ej2_seventh_sphere ej2_background_ambient \
          ej2_shadow_zero ej2_missing_sphere ej2_last_sphere ej3_background_ambient \
          ej3_sphere_moved ej3_ambient_doubled correct pi_course \
          ej2_big_sphere ej2_small_sphere ej2_light_moved ej3_light_moved \
-         ej3_correct ej3_hidden_sphere_bigger; do
+         ej3_correct ej3_hidden_sphere_bigger ej3_light_colour \
+         ej3_light_missing ej3_directional_moved ej3_hidden_sphere_moved; do
     student "$p"
     ok $? "$p compiles and runs"
 done
@@ -199,11 +213,7 @@ is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" 
     "scene/lamp-position" "the green light's x lost its sign: the light's place"
 is "$(json '.diagnosis.findings[0].lamp')" 2 "  the third of the statement's lights, the green one"
 place=$(sed -n 's/.*luz_crear((vector_t){\([^}]*\)}, (color_t){0, .9, 0}, true).*/\1/p' "$STUDENTS/ej3_light_moved/main.c")
-for c in 0 1 2; do
-    want=$(echo "$place" | cut -d, -f$((c + 1)))
-    within "$(json ".diagnosis.findings[0].value[$c]")" "$want" 0.02
-    ok $? "  P[$c] $(json ".diagnosis.findings[0].value[$c]"), the program's $want"
-done
+near3 "$place" 0.02 P
 is "$(json '.diagnosis.findings[0].expected | map(tostring) | join(",")')" "2,10,2.5" \
     "  against the statement's (2, 10, 2.5)"
 json .diagnosis.text | grep -q "^the point light at (2, 10, 2.5) in the statement seems to be at about (-2.0, 10.0, 2.5) in the image: C = Ia ka + Ii kd (L.N) fits [0-9]* of the [0-9]* pixels it lights"
@@ -228,6 +238,62 @@ for a in 2 4; do
     ok $? "a right EJ3 image with noise of $a levels: no light named ($(json .diagnosis.kind))"
 done
 
+# The red light's colour typed (.5, 0, 0): read from the red channel,
+# the light's place held; the program's own colour.
+scene ej3_light_colour "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/lamp-colour" "the red light's colour typed .5: the light's colour"
+is "$(json '.diagnosis.findings[0].lamp')" 1 "  the second of the statement's lights, the red one"
+colour=$(sed -n 's/.*luz_crear((vector_t){-2, 10, 2.5}, (color_t){\([^}]*\)}, true).*/\1/p' "$STUDENTS/ej3_light_colour/main.c")
+near3 "$colour" 0.01 Ii
+is "$(json '.diagnosis.findings[0].expected | map(tostring) | join(",")')" "0.9,0,0" \
+    "  against the statement's (0.9, 0, 0)"
+json .diagnosis.text | grep -q "^the light at (-2, 10, 2.5) looks like colour (0.50, 0.00, 0.00), not the statement's (0.9, 0, 0): C = Ia ka + Ii kd (L.N) fits [0-9]* of the [0-9]* pixels it lights with that Ii$"
+ok $? "  said as the light's colour"
+
+# The blue light left out: its channel stays at Ia ka where it lit.
+scene ej3_light_missing "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/lamp-missing" "the blue light left out: the light missing"
+is "$(json '.diagnosis.findings[0].lamp')/$(json '.diagnosis.findings[0].value[2]')" "3/0" \
+    "  the fourth of the statement's lights, the blue one, at 0"
+json .diagnosis.text | grep -q "^the light at (0, 10, 5) of the statement is not in your image: "
+ok $? "  said as a light not in the image"
+
+# Through noise of 2 levels the same, and the right image gets neither.
+for p in ej3_light_colour ej3_light_missing; do
+    noisy $p 2
+    scene "${p}_2" "$C3"
+    is "$(json '[.diagnosis.findings[].kind] | join(",")')" "$(echo $p | sed 's/ej3_light_/lamp-/')" \
+        "$p with noise of 2 levels: the same finding"
+done
+for a in 2 4; do
+    scene "ej3_correct_$a" "$C3"
+    json '[.diagnosis.findings[]?.kind] | (index("lamp-colour") // index("lamp-missing"))' | grep -qx null
+    ok $? "a right EJ3 image with noise of $a levels: no light's colour named"
+done
+
+# The directional light typed (1, 1, 0): its direction read on every
+# channel once the point lights are taken off, the program's own vector
+# normalised; through noise of 2 levels the same.
+scene ej3_directional_moved "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/light-direction" "EJ3's directional light typed (1, 1, 0): its direction"
+near3 "$(awk 'BEGIN { printf "%.4f,%.4f,0", 1 / sqrt(2), 1 / sqrt(2) }')" 0.02 L
+is "$(json '.diagnosis.findings[0].expected | map(tostring) | join(",")')" "0,1,0" \
+    "  against the statement's (0, 1, 0)"
+json .diagnosis.text | grep -q "^the directional light seems to come from (0.71, 0.71, 0.00), not the statement's (0, 1, 0): C = Ia ka + Ii kd (L.N) fits [0-9]* of the [0-9]* values it lights with that L$"
+ok $? "  said as where the directional light comes from"
+noisy ej3_directional_moved 2
+scene ej3_directional_moved_2 "$C3"
+is "$(json '[.diagnosis.findings[].kind] | join(",")')/$(json '.diagnosis.findings[0].value | map(. * 10 | round / 10) | map(tostring) | join(",")')" \
+    "light-direction/0.7,0.7,0" "  through noise of 2 levels: the same direction"
+for a in 2 4; do
+    scene "ej3_correct_$a" "$C3"
+    json '[.diagnosis.findings[]?.kind] | index("light-direction")' | grep -qx null
+    ok $? "a right EJ3 image with noise of $a levels: no direction named"
+done
+
 # The blue sphere's centre is behind the cyan one (1, -0.6, 1.26): only
 # its outer crescent shows, and that is what its size is read from.
 scene ej3_hidden_sphere_bigger "$C3"
@@ -237,6 +303,43 @@ is "$(json '.diagnosis.findings[0].ball')" 7 "  the blue sphere, the eighth of t
 sized 0.4 0.3 1.73 -0.6 2
 json .diagnosis.text | grep -q "^the sphere at about (597, 336) px, centre (1.73, -0.6, 2) and radius 0.3 in the statement, is drawn with a radius of about 0.4[0-9]* ([0-9]* px instead of [0-9]*): check its radius$"
 ok $? "  said in the statement's terms"
+
+# The same blue sphere's centre typed (1.73, -.5, 2): still hidden, its
+# crescent moved up: placed from its outline, not named by its size;
+# the place near where (1.73, -0.5, 2) appears, its centre near it.
+scene ej3_hidden_sphere_moved "$C3"
+is "$(json .diagnosis.kind)/$(json '[.diagnosis.findings[].kind] | join(",")')" \
+    "scene/moved" "a hidden-centred sphere moved 0.1 up: moved, not another size"
+is "$(json '.diagnosis.findings[0].ball')" 7 "  the blue sphere"
+within "$(json '.diagnosis.findings[0].to.x')" "$(column 1.73 2)" 4 &&
+    within "$(json '.diagnosis.findings[0].to.y')" "$(row -0.5 2)" 4
+ok $? "  drawn near where (1.73, -0.5, 2) appears, $(column 1.73 2), $(row -0.5 2): $(json '.diagnosis.findings[0].to.x'), $(json '.diagnosis.findings[0].to.y')"
+within "$(json '.diagnosis.findings[0].centre[1]')" -0.5 0.04
+ok $? "  its centre's y about -0.5: $(json '.diagnosis.findings[0].centre[1]')"
+json .diagnosis.text | grep -q "^the sphere at about (597, 336) px, centre (1.73, -0.6, 2) and radius 0.3 in the statement, whose centre is hidden, is drawn centred at about ([0-9]*, [0-9]*) px, as a centre of about (1.7[0-9], -0.5[0-9], 2) would be: the outline that shows is the scene's moved; check its centre$"
+ok $? "  said as its centre"
+# noise of 2 or 4 levels: no size or move named, on this one or a right one
+for p in ej3_correct ej3_hidden_sphere_moved; do
+    for a in 2 4; do
+        [ -f "$TMP/${p}_$a.out" ] || noisy $p $a
+        scene "${p}_$a" "$C3"
+        json '[.diagnosis.findings[]?.kind] | (index("size") // index("moved"))' | grep -qx null
+        ok $? "$p with noise of $a levels: no sphere named moved or another size ($(json .diagnosis.kind))"
+    done
+done
+# the picture at fov 88 moves every sphere: no hidden one named moved
+scene fov88 "$C3"
+json '[.diagnosis.findings[]?.kind] | index("moved")' | grep -qx null
+ok $? "EJ3 at fov 88: no sphere named moved"
+
+# Other mistakes of the model: none of these findings, which read the
+# statement's lights and spheres, is named for them.
+for p in ej3_light_reversed ej3_point_as_directional ej3_no_shadows ej3_ka_kd_swapped; do
+    student "$p"
+    scene "$p" "$C3"
+    json '[.diagnosis.findings[]?.kind] | map(select(. == "lamp-colour" or . == "lamp-missing" or . == "light-direction" or . == "moved")) | length' | grep -qx 0
+    ok $? "$p: no light's colour, absence or direction, nor a sphere moved, named ($(json .diagnosis.kind))"
+done
 
 # --- nothing fits: where the differences lie -------------------------------
 scene ej2_last_sphere "$TMP/r2.pgm"

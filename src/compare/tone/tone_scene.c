@@ -3,7 +3,9 @@
  * in, when no single mistake explains it: the background, a sphere
  * added, missing, moved, partly drawn or drawn another size, the
  * ambient term, the light's intensity or direction (EJ3: a point
- * light's place, tone_scene_lamps.c), values below the ambient term.
+ * light's colour or absence, tone_scene_lamp_colour.c, its place,
+ * tone_scene_lamps.c, the directional light's direction), values below
+ * the ambient term.
  *
  * Not a fit of a scene to a picture: the course's scene, read against
  * the image, and only for the exercises the student model covers (the
@@ -416,8 +418,11 @@ rayo_status tone_scene_find(const tone_image *ref, const tone_image *image,
     find_ambient(&w);
     if (w.gray && !tone_scene_light_direction(&w))
         find_light(&w);
-    if (!w.gray)
+    if (!w.gray) {
+        tone_scene_lamp_colours(&w);
         tone_scene_lamp_position(&w);
+        tone_scene_sun_direction(&w);
+    }
     find_below(&w);
     *named = r->tone.findings > 0;
     if (!*named)

@@ -10,8 +10,9 @@
  * P: the fit is that, refitted a few times from the statement's place.
  * It is named only when it explains those pixels much better than the
  * statement's light and is well away from it.  Not for the gray scene
- * (tone_scene_light.c), nor for a light's colour, a directional light
- * or a light left out, which this does not fit.
+ * (tone_scene_light.c), nor for a light's colour or a light left out
+ * (tone_scene_lamp_colour.c, whose finding comes first), nor for the
+ * directional light.
  */
 #include <math.h>
 
@@ -39,21 +40,14 @@ static int lamp_term(const scene_work *w, size_t p, size_t lamp, unsigned c,
 {
     const rayo_course_map *m = w->map;
     const rayo_course_lamp *lamps = w->data->lamps;
-    const rayo_course_ball *ball;
+    const rayo_course_ball *ball = tone_scene_unclamped(w, p, c);
     int b = m->ball[p];
     double v = w->image->v[p * w->n + c], rest;
-    size_t l;
-    if (!m->core[p] || b < 0 || w->gone[b] || v + w->levels + 1 >= 255)
+    if (ball == NULL)
         return 0;
-    ball = &w->data->balls[b];
     if (ball->color[c] != 1 || ball->kd < LAMP_KD)
         return 0;
-    rest = w->data->ambient[c] * ball->ka;
-    for (l = 0; l < m->lamp_count; l++) {
-        float f = m->light[p * m->lamp_count + l];
-        if (l != lamp && f > 0)
-            rest += ball->kd * lamps[l].color[c] * f;
-    }
+    rest = tone_scene_rest(w, p, b, c, lamp);
     *term = (v + 0.5) / 255 - rest;
     if (255 * *term <= w->levels + LAMP_LIT)
         return 0;
@@ -176,6 +170,11 @@ int tone_scene_lamp_position(scene_work *w)
                 lit++;
                 only = c;
             }
+        for (i = 0; i < w->r->tone.findings; i++)
+            if ((w->r->tone.finding[i].kind == RAYO_FINDING_LAMP_COLOUR ||
+                 w->r->tone.finding[i].kind == RAYO_FINDING_LAMP_MISSING) &&
+                w->r->tone.finding[i].box[0] == (int32_t)l)
+                lit = 0; /* its colour explains it */
         if (lit == 1)
             named += (size_t)lamp_place(w, l, only);
     }

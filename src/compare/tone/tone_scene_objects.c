@@ -120,6 +120,28 @@ static double statement_radius(const rayo_course_ball *ball, double ratio)
     return d * sin(atan(ratio * tan(asin(ball->radius / d))));
 }
 
+/* A sphere whose centre is hidden, drawn shift (px) away: where it is
+   in the picture (value), its disc's box, and its centre in the
+   statement's units at the statement's depth (expected); pixels 0. */
+static void hidden_moved(const scene_work *w, int b, const double *shift,
+                         rayo_compare_finding *f)
+{
+    const rayo_course_ball *ball = &w->data->balls[b];
+    double r = w->map->focal * ball->radius / ball->center[2];
+    f->value[0] = f->x + shift[0];
+    f->value[1] = f->y + shift[1];
+    f->value[2] = r;
+    f->box[0] = (int32_t)lround(f->value[0] - r);
+    f->box[1] = (int32_t)lround(f->value[1] - r);
+    f->box[2] = (int32_t)lround(f->value[0] + r);
+    f->box[3] = (int32_t)lround(f->value[1] + r);
+    f->expected[0] = (f->value[0] - w->map->width / 2.0) * ball->center[2] /
+                     w->map->focal;
+    f->expected[1] = (w->map->height / 2.0 - f->value[1]) *
+                     ball->center[2] / w->map->focal;
+    f->expected[2] = ball->center[2];
+}
+
 /* Each sphere's pixels that show the background (where the scene's do
    not), and the objects where the scene shows only background; a
    sphere missing with an object of its size elsewhere is moved. */
@@ -132,7 +154,7 @@ rayo_status tone_scene_objects(scene_work *w, rayo_error *err)
     int black[3] = {0, 0, 0};
     region regions[ADDED_MAX + 1];
     int used[ADDED_MAX + 1], off[SCENE_BALLS];
-    double scene_r[SCENE_BALLS], seen_r[SCENE_BALLS];
+    double scene_r[SCENE_BALLS], seen_r[SCENE_BALLS], shift[SCENE_BALLS][2];
     unsigned char *mark;
     rayo_status s;
     memset(area, 0, sizeof area);
@@ -169,7 +191,7 @@ rayo_status tone_scene_objects(scene_work *w, rayo_error *err)
         return s;
     if (found > ADDED_MAX)
         found = 0; /* a background of noise, not objects */
-    tone_scene_sizes(w, scene_r, seen_r, off);
+    tone_scene_sizes(w, scene_r, seen_r, off, shift);
     for (i = 0; i < balls; i++) {
         /* its whole disc, hidden parts too: the size it has moved */
         const rayo_course_ball *ball = &w->data->balls[i];
@@ -180,6 +202,22 @@ rayo_status tone_scene_objects(scene_work *w, rayo_error *err)
         rayo_compare_finding *f;
         double share;
         size_t k, best = found;
+        if (off[i] == 2) {
+            /* its centre hidden: placed from the outline that shows */
+            f = tone_scene_add(w->r, RAYO_FINDING_MOVED);
+            if (f == NULL)
+                break;
+            tone_scene_ball_at(w, (int)i, f);
+            hidden_moved(w, (int)i, shift[i], f);
+            w->gone[i] = 1;
+            for (k = 0; k < found; k++)
+                if (regions[k].box[0] <= f->box[2] + 2 &&
+                    regions[k].box[2] >= f->box[0] - 2 &&
+                    regions[k].box[1] <= f->box[3] + 2 &&
+                    regions[k].box[3] >= f->box[1] - 2)
+                    used[k] = 1;
+            continue;
+        }
         if (off[i]) {
             f = tone_scene_add(w->r, RAYO_FINDING_SIZE);
             if (f == NULL)

@@ -56,7 +56,8 @@ static int cmp_double(const void *a, const void *b)
    where the scene's outline meets the background, and that times the
    median ratio of the image's reach to the scene's on each; 0 when too
    few such rays or when the ratios do not agree. */
-static void measure(const scene_work *w, int b, double *scene, double *seen)
+static void measure(const scene_work *w, int b, double *scene, double *seen,
+                    int *moved, double *shift)
 {
     const rayo_course_map *m = w->map;
     const rayo_course_ball *ball = &w->data->balls[b];
@@ -65,6 +66,7 @@ static void measure(const scene_work *w, int b, double *scene, double *seen)
     size_t p, n = 0, k, pairs = 0;
     int hidden;
     *scene = *seen = 0;
+    *moved = 0;
     rayo_course_ball_pixel(m, ball, &cx, &cy);
     /* hidden: the stretch of each ray the sphere shows is looked for as
        far as twice its radius in the picture, and a little more */
@@ -133,6 +135,24 @@ static void measure(const scene_work *w, int b, double *scene, double *seen)
     }
     if (n < RAYS_MIN)
         return;
+    if (hidden) {
+        /* its outline's circle moved, not grown: a place, not a size */
+        double sx[RAYS], sy[RAYS], ix[RAYS], iy[RAYS];
+        size_t q = 0;
+        for (k = 0; k < RAYS; k++)
+            if (rm_at[k] > 0) {
+                double a = 6.283185307179586 * (double)k / RAYS;
+                sx[q] = rm_at[k] * cos(a);
+                sy[q] = rm_at[k] * sin(a);
+                ix[q] = is_at[k] * cos(a);
+                iy[q] = is_at[k] * sin(a);
+                q++;
+            }
+        if (tone_scene_outline_moved(sx, sy, ix, iy, q, shift)) {
+            *moved = 1;
+            return;
+        }
+    }
     /* opposite rays: a disc moved by s reaches s.u farther on one and
        s.u nearer on the other */
     for (k = 0; k < RAYS / 2; k++)
@@ -162,11 +182,13 @@ static void measure(const scene_work *w, int b, double *scene, double *seen)
 }
 
 void tone_scene_sizes(const scene_work *w, double *scene, double *seen,
-                      int *off)
+                      int *off, double (*shift)[2])
 {
     size_t i, balls = w->data->ball_count, measured = 0, odd = 0;
+    size_t shifted = 0;
+    int moved[SCENE_BALLS];
     for (i = 0; i < balls; i++) {
-        measure(w, (int)i, &scene[i], &seen[i]);
+        measure(w, (int)i, &scene[i], &seen[i], &moved[i], shift[i]);
         off[i] = 0;
         if (scene[i] <= 0)
             continue;
@@ -181,4 +203,12 @@ void tone_scene_sizes(const scene_work *w, double *scene, double *seen,
        their radii */
     if (odd > 2 && (double)odd > SIZE_MOST * (double)measured)
         memset(off, 0, balls * sizeof *off);
+    for (i = 0; i < balls; i++)
+        shifted += (size_t)moved[i];
+    /* and many hidden ones moved: the camera too */
+    if (shifted > 1)
+        return;
+    for (i = 0; i < balls; i++)
+        if (moved[i])
+            off[i] = 2;
 }

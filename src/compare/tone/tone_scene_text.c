@@ -19,7 +19,7 @@
 static const char *const kind_names[] = {
     "background", "added", "missing", "moved", "partly",
     "ambient", "light", "below-ambient", "where", "size",
-    "light-direction", "lamp-position"};
+    "light-direction", "lamp-position", "lamp-colour", "lamp-missing"};
 
 static int gray_course(const rayo_compare_report *r)
 {
@@ -76,6 +76,18 @@ static void put_ball_finding(cmp_sink *s, const rayo_compare_finding *f,
             f->x, f->y, b->center[0], b->center[1], b->center[2], b->radius);
         break;
     case RAYO_FINDING_MOVED:
+        if (f->value[2] > 0) { /* read from its outline, centre hidden */
+            cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, "
+                       "%g) and radius %g in the statement, whose centre is "
+                       "hidden, is drawn centred at about (%.0f, %.0f) px, "
+                       "as a centre of about (%.2f, %.2f, %g) would be: the "
+                       "outline that shows is the scene's moved; check its "
+                       "centre",
+                f->x, f->y, b->center[0], b->center[1], b->center[2],
+                b->radius, f->value[0], f->value[1], f->expected[0],
+                f->expected[1], f->expected[2]);
+            break;
+        }
         cmp_put(s, "the sphere at about (%.0f, %.0f) px, centre (%g, %g, %g) "
                    "and radius %g in the statement, is missing there, and "
                    "an object of about its size is at about (%.0f, %.0f) px "
@@ -169,6 +181,33 @@ static void put_where(cmp_sink *s, const rayo_compare_finding *f)
             (int)f->box[0], (int)f->box[2], (int)f->box[1], (int)f->box[3]);
 }
 
+/* A point light of the colour scene whose colour differs, or left out,
+   named by its place in the statement. */
+static void put_lamp(cmp_sink *s, const rayo_compare_report *r,
+                     const rayo_compare_finding *f)
+{
+    const rayo_course_data *d =
+        rayo_course_data_of((rayo_course_exercise)r->tone.course);
+    const double *at;
+    if (d == NULL || f->box[0] < 0 || (size_t)f->box[0] >= d->lamp_count)
+        return;
+    at = d->lamps[f->box[0]].vector;
+    if (f->kind == RAYO_FINDING_LAMP_MISSING)
+        cmp_put(s, "the light at (%g, %g, %g) of the statement is not in "
+                   "your image: the channel it alone lights stays at Ia ka "
+                   "(and the other lights) on the %llu pixels it should "
+                   "light",
+            at[0], at[1], at[2], (unsigned long long)f->total);
+    else
+        cmp_put(s, "the light at (%g, %g, %g) looks like colour (%.2f, "
+                   "%.2f, %.2f), not the statement's (%g, %g, %g): C = Ia "
+                   "ka + Ii kd (L.N) fits %llu of the %llu pixels it lights "
+                   "with that Ii",
+            at[0], at[1], at[2], f->value[0], f->value[1], f->value[2],
+            f->expected[0], f->expected[1], f->expected[2],
+            (unsigned long long)f->pixels, (unsigned long long)f->total);
+}
+
 static void put_one(cmp_sink *s, const rayo_compare_report *r,
                     const rayo_compare_finding *f)
 {
@@ -196,6 +235,16 @@ static void put_one(cmp_sink *s, const rayo_compare_report *r,
             f->value[0], f->expected[0]);
         break;
     case RAYO_FINDING_LIGHT_DIRECTION:
+        if (!gray_course(r)) {
+            cmp_put(s, "the directional light seems to come from (%.2f, "
+                       "%.2f, %.2f), not the statement's (%.3g, %.3g, "
+                       "%.3g): C = Ia ka + Ii kd (L.N) fits %llu of the %llu "
+                       "values it lights with that L",
+                f->value[0], f->value[1], f->value[2], f->expected[0],
+                f->expected[1], f->expected[2],
+                (unsigned long long)f->pixels, (unsigned long long)f->total);
+            break;
+        }
         cmp_put(s, "the light seems to come from (%.2f, %.2f, %.2f), not the "
                    "statement's (%.3g, %.3g, %.3g): I = IA + II (L.N) fits "
                    "%llu of the %llu lit pixels of the spheres with that L",
@@ -211,6 +260,10 @@ static void put_one(cmp_sink *s, const rayo_compare_report *r,
             f->expected[0], f->expected[1], f->expected[2], f->value[0],
             f->value[1], f->value[2], (unsigned long long)f->pixels,
             (unsigned long long)f->total);
+        break;
+    case RAYO_FINDING_LAMP_COLOUR:
+    case RAYO_FINDING_LAMP_MISSING:
+        put_lamp(s, r, f);
         break;
     case RAYO_FINDING_BELOW_AMBIENT:
         put_below(s, r, f);
@@ -259,6 +312,8 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
         if (f->kind == RAYO_FINDING_MOVED)
             cmp_json(s, ", \"to\": {\"x\": %.1f, \"y\": %.1f}", f->value[0],
                 f->value[1]);
+        if (f->kind == RAYO_FINDING_MOVED && f->value[2] > 0)
+            put_triple(s, "centre", f->expected, 3);
         if (f->kind == RAYO_FINDING_ADDED || f->kind == RAYO_FINDING_MOVED ||
             (f->kind == RAYO_FINDING_WHERE && f->ball < 0))
             cmp_json(s, ", \"box\": [%d, %d, %d, %d]", (int)f->box[0],
@@ -267,10 +322,14 @@ void tone_put_findings_json(const rayo_compare_report *r, cmp_sink *s)
             cmp_json(s, ", \"radius_px\": %.1f, \"expected_px\": %.1f, "
                        "\"radius\": %.3g",
                 f->value[0], f->expected[0], f->value[1]);
-        if (f->kind == RAYO_FINDING_LAMP_POSITION)
+        if (f->kind == RAYO_FINDING_LAMP_POSITION ||
+            f->kind == RAYO_FINDING_LAMP_COLOUR ||
+            f->kind == RAYO_FINDING_LAMP_MISSING)
             cmp_json(s, ", \"lamp\": %d", (int)f->box[0]);
         if (f->kind == RAYO_FINDING_LIGHT_DIRECTION ||
-            f->kind == RAYO_FINDING_LAMP_POSITION) {
+            f->kind == RAYO_FINDING_LAMP_POSITION ||
+            f->kind == RAYO_FINDING_LAMP_COLOUR ||
+            f->kind == RAYO_FINDING_LAMP_MISSING) {
             put_triple(s, "value", f->value, 3);
             put_triple(s, "expected", f->expected, 3);
         }
