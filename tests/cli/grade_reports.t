@@ -67,7 +67,7 @@ case_list() {
     # Spanish, every criterion's own lines (grade's catalogue outside
     # functions/): a compile error and a warning made one, a crash and a
     # limit, a header, the image's mistakes and its notes.
-    for dir in werror macro_parameter infinite_loop dimensions_x degrees pi_course literal_rows no_normalise extra_row ej2_pi_course ej2_correct; do
+    for dir in werror macro_parameter infinite_loop dimensions_x lowercase_magic degrees pi_course literal_rows no_normalise extra_row ej2_pi_course ej2_correct; do
         printf 'tests/grade/%s es\t--lang es --no-valgrind --exercise %s tests/grade/%s/main.c\n' "$dir" "$(exercise "$dir")" "$dir"
     done
     if command -v valgrind >/dev/null 2>&1; then
