@@ -23,6 +23,10 @@
 #include "rayo/reader.h"
 
 #include "grade_impl.h"
+#include "rayo/lang.h"
+
+/* Marks a reason for xgettext; skip looks it up in err's language. */
+#define N_(text) text
 
 void rayo_grade_options_init(rayo_grade_options *options)
 {
@@ -45,7 +49,8 @@ static void skip(grade_context *ctx, rayo_grade_criterion c,
     if (*status != RAYO_OK || item->result != RAYO_GRADE_SKIPPED ||
         item->line_count > 0)
         return;
-    *status = grade_say(item, err, "%s", reason);
+    *status = grade_say(item, err, "%s",
+                        rayo_gettext(rayo_error_lang(err), reason));
 }
 
 /* Splits the compiler command on spaces ("gcc -m32" is two words). */
@@ -254,8 +259,8 @@ static rayo_status run_steps(grade_context *ctx, const rayo_image *reference,
     if (status == RAYO_OK && image.pixels != NULL)
         status = grade_step_image(ctx, &image, reference, salvaged, err);
     else if (report->items[RAYO_GRADE_RUN].result == RAYO_GRADE_PASS)
-        skip(ctx, RAYO_GRADE_IMAGE, "not compared: the output is not an "
-                                    "image that can be read",
+        skip(ctx, RAYO_GRADE_IMAGE,
+             N_("not compared: the output is not an image that can be read"),
              err, &status);
     rayo_image_free(&image);
     if (status == RAYO_OK && ctx->options->valgrind && !ctx->stopped)
@@ -268,28 +273,31 @@ static void skip_the_rest(grade_context *ctx, rayo_error *err,
 {
     const rayo_grade_report *r = ctx->report;
     if (r->items[RAYO_GRADE_COMPILE].result != RAYO_GRADE_PASS) {
-        skip(ctx, RAYO_GRADE_FUNCTIONS, "not checked: it did not compile",
+        skip(ctx, RAYO_GRADE_FUNCTIONS,
+             N_("not checked: it did not compile"), err, status);
+        skip(ctx, RAYO_GRADE_RUN, N_("not run: it did not compile"), err,
+             status);
+        skip(ctx, RAYO_GRADE_OUTPUT, N_("not checked: it did not compile"),
              err, status);
-        skip(ctx, RAYO_GRADE_RUN, "not run: it did not compile", err, status);
-        skip(ctx, RAYO_GRADE_OUTPUT, "not checked: it did not compile", err,
-             status);
-        skip(ctx, RAYO_GRADE_IMAGE, "not compared: it did not compile", err,
-             status);
-        skip(ctx, RAYO_GRADE_VALGRIND, "not run: it did not compile", err,
-             status);
+        skip(ctx, RAYO_GRADE_IMAGE, N_("not compared: it did not compile"),
+             err, status);
+        skip(ctx, RAYO_GRADE_VALGRIND, N_("not run: it did not compile"),
+             err, status);
         return;
     }
     if (r->items[RAYO_GRADE_RUN].result != RAYO_GRADE_PASS)
-        skip(ctx, RAYO_GRADE_OUTPUT, "not checked: the program did not run "
-                                     "to the end", err, status);
-    skip(ctx, RAYO_GRADE_IMAGE, "not compared: the program did not run to "
-                                "the end", err, status);
+        skip(ctx, RAYO_GRADE_OUTPUT,
+             N_("not checked: the program did not run to the end"), err,
+             status);
+    skip(ctx, RAYO_GRADE_IMAGE,
+         N_("not compared: the program did not run to the end"), err,
+         status);
     if (!ctx->options->valgrind)
-        skip(ctx, RAYO_GRADE_VALGRIND, "not run (--no-valgrind)", err,
+        skip(ctx, RAYO_GRADE_VALGRIND, N_("not run (--no-valgrind)"), err,
              status);
     else
-        skip(ctx, RAYO_GRADE_VALGRIND, "not run: the program was stopped "
-                                       "by a limit", err, status);
+        skip(ctx, RAYO_GRADE_VALGRIND,
+             N_("not run: the program was stopped by a limit"), err, status);
 }
 
 rayo_status rayo_grade(const rayo_grade_options *options,

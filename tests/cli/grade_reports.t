@@ -10,7 +10,8 @@
 #
 # Two things vary from run to run and machine to machine and are
 # normalised before comparing: the report's first line (how this
-# machine isolates a run) and the seconds a run took ("in 0.08 s").
+# machine isolates a run) and the seconds a run took ("in 0.08 s",
+# "en 0,08 s").
 #
 # To record them again, only after a deliberate change of a report:
 #   RECORD=1 RAYO=build/rayo RAYO_SOURCE=. sh tests/cli/grade_reports.t \
@@ -44,7 +45,7 @@ report() {
     "$RAYO" grade --cc cc --timeout 10 "$@" </dev/null >"$file.raw" 2>&1 || status=$?
     {
         echo "== $name"
-        sed -e '1{/^sandbox: /d;}' -e 's/ in [0-9][0-9.,]* s\b/ in N s/g' "$file.raw"
+        sed -e '1{/^sandbox: /d;}' -e 's/ \(in\|en\) [0-9][0-9.,]* s\b/ \1 N s/g' "$file.raw"
         echo "== exit status $status"
     } >"$file"
     rm -f "$file.raw"
@@ -63,6 +64,17 @@ case_list() {
     for dir in correct segfault rows_flipped ej2_no_shadows ej2_nan_miss ej3_correct ej3_sphere_moved; do
         printf 'tests/grade/%s es\t--lang es --no-valgrind --exercise %s tests/grade/%s/main.c\n' "$dir" "$(exercise "$dir")" "$dir"
     done
+    # Spanish, every criterion's own lines (grade's catalogue outside
+    # functions/): a compile error and a warning made one, a crash and a
+    # limit, a header, the image's mistakes and its notes.
+    for dir in werror macro_parameter infinite_loop dimensions_x lowercase_magic degrees pi_course literal_rows no_normalise extra_row ej2_pi_course ej2_correct; do
+        printf 'tests/grade/%s es\t--lang es --no-valgrind --exercise %s tests/grade/%s/main.c\n' "$dir" "$(exercise "$dir")" "$dir"
+    done
+    if command -v valgrind >/dev/null 2>&1; then
+        for dir in leak ej3_write_past_end; do
+            printf 'tests/grade/%s valgrind es\t--lang es --exercise %s tests/grade/%s/main.c\n' "$dir" "$(exercise "$dir")" "$dir"
+        done
+    fi
     if command -v valgrind >/dev/null 2>&1; then
         for dir in leak interior_pointer ej3_leak ej3_realloc_loses ej3_write_past_end; do
             printf 'tests/grade/%s valgrind\t--exercise %s tests/grade/%s/main.c\n' "$dir" "$(exercise "$dir")" "$dir"

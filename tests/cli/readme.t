@@ -5,7 +5,7 @@
 # a folder laid out like the source tree (build/rayo is the rayo under
 # test; examples/ and tests/ are the repository's).  Every ```sh block's
 # lines must exit 0; every ```console block is run as one script and its
-# output must be the README's, line for line (times such as "0.11 s" are
+# output must be the README's, line for line (times such as "0.11 s" or "0,11 s" are
 # compared as numbers of seconds, a line "..." stands for any lines; a
 # grade report's "; limits: ..." clause, which depends on the machine's
 # cgroups, is compared up to its first words).
@@ -80,7 +80,7 @@ def run(script, merge=False):
 def seconds(text):
     text = re.sub(r"; limits: (cgroup v[12] on the whole tree|per process "
                   r"only)[^\n]*", "; limits: ...", text)
-    return re.sub(r"\b\d+\.\d+ s\b", "N.NN s", text)
+    return re.sub(r"\b\d+[.,]\d+ s\b", "N.NN s", text)
 
 slow = ("--exercise ej3", "--each")
 for doc, kind, line, body in blocks:

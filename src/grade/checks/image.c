@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "rayo/compare.h"
+#include "rayo/lang.h"
 #include "rayo/output.h"
 #include "rayo/reader.h"
 
@@ -25,17 +26,48 @@
    smaller. */
 #define DEGREES_AS_RADIANS_SCALE (1.0 / tan(45.0))
 
-/* The shift in words: "one row up", "2 pixels left and one row down". */
-static void say_shift(int32_t dx, int32_t dy, char *out, size_t room)
+/* The shift in words, "2 pixels left", "1 row down", each a phrase of
+   the catalog with its plural, put into a whole sentence by say_shift. */
+static void shift_phrase(rayo_lang lang, int32_t d, int across, char *out,
+                         size_t room)
 {
-    char h[64] = "", v[64] = "";
+    unsigned long n = (unsigned long)(d < 0 ? -(long)d : (long)d);
+    if (across && d < 0)
+        snprintf(out, room,
+                 rayo_ngettext(lang, "%lu pixel left", "%lu pixels left", n),
+                 n);
+    else if (across)
+        snprintf(out, room,
+                 rayo_ngettext(lang, "%lu pixel right", "%lu pixels right",
+                               n),
+                 n);
+    else if (d < 0)
+        snprintf(out, room,
+                 rayo_ngettext(lang, "%lu row up", "%lu rows up", n), n);
+    else
+        snprintf(out, room,
+                 rayo_ngettext(lang, "%lu row down", "%lu rows down", n), n);
+}
+
+static rayo_status say_shift(rayo_grade_item *item, int32_t dx, int32_t dy,
+                             rayo_error *err)
+{
+    rayo_lang lang = rayo_error_lang(err);
+    char h[96] = "", v[96] = "";
     if (dx != 0)
-        snprintf(h, sizeof h, "%d pixel%s %s", dx < 0 ? -dx : dx,
-                 dx == 1 || dx == -1 ? "" : "s", dx < 0 ? "left" : "right");
+        shift_phrase(lang, dx, 1, h, sizeof h);
     if (dy != 0)
-        snprintf(v, sizeof v, "%d row%s %s", dy < 0 ? -dy : dy,
-                 dy == 1 || dy == -1 ? "" : "s", dy < 0 ? "up" : "down");
-    snprintf(out, room, "%s%s%s", h, h[0] && v[0] ? " and " : "", v);
+        shift_phrase(lang, dy, 0, v, sizeof v);
+    if (dx != 0 && dy != 0)
+        return grade_fail(item, err, "the image is moved %s and %s: the "
+                                     "centre of the picture must be x = 0, "
+                                     "y = 0 (x = i - ANCHO/2, y = j - "
+                                     "ALTO/2)",
+                          h, v);
+    return grade_fail(item, err, "the image is moved %s: the centre of "
+                                 "the picture must be x = 0, y = 0 (x "
+                                 "= i - ANCHO/2, y = j - ALTO/2)",
+                      dx != 0 ? h : v);
 }
 
 static rayo_status say_scaled(rayo_grade_item *item,
@@ -80,14 +112,8 @@ static rayo_status say_diagnosis(rayo_grade_item *item,
         return grade_fail(item, err, "rows and columns are swapped: write "
                                      "the image row by row, each row from "
                                      "left to right");
-    case RAYO_DIAGNOSIS_SHIFTED: {
-        char moved[160];
-        say_shift(r->shift_x, r->shift_y, moved, sizeof moved);
-        return grade_fail(item, err, "the image is moved %s: the centre of "
-                                     "the picture must be x = 0, y = 0 (x "
-                                     "= i - ANCHO/2, y = j - ALTO/2)",
-                          moved);
-    }
+    case RAYO_DIAGNOSIS_SHIFTED:
+        return say_shift(item, r->shift_x, r->shift_y, err);
     case RAYO_DIAGNOSIS_SCALED:
         return say_scaled(item, r, err);
     case RAYO_DIAGNOSIS_DIFFERENT_SIZE:
@@ -101,13 +127,15 @@ static rayo_status say_diagnosis(rayo_grade_item *item,
         return grade_fail(item, err, "the image is all white: no ray hits "
                                      "the sphere");
     case RAYO_DIAGNOSIS_NOT_A_SPHERE:
+        if (r->image_black * 2 > r->pixels)
+            return grade_fail(item, err, "the black region is not round "
+                                         "like a sphere seen through the "
+                                         "camera; most of the image is "
+                                         "black: is the direction "
+                                         "normalised before "
+                                         "intersecta_esfera?");
         return grade_fail(item, err, "the black region is not round like a "
-                                     "sphere seen through the camera%s",
-                          r->image_black * 2 > r->pixels
-                              ? "; most of the image is black: is the "
-                                "direction normalised before "
-                                "intersecta_esfera?"
-                              : "");
+                                     "sphere seen through the camera");
     case RAYO_DIAGNOSIS_OTHER_SPHERE:
         return grade_fail(item, err, "there is a sphere, but elsewhere or "
                                      "of another size: its centre is "
@@ -123,13 +151,13 @@ static rayo_status say_diagnosis(rayo_grade_item *item,
     case RAYO_DIAGNOSIS_SCENE:
         break;
     }
+    if (r->image_black * 2 > r->pixels)
+        return grade_fail(item, err, "no simple mistake explains the "
+                                     "difference; most of the image is "
+                                     "black: is the direction normalised "
+                                     "before intersecta_esfera?");
     return grade_fail(item, err, "no simple mistake explains the "
-                                 "difference%s",
-                      r->image_black * 2 > r->pixels
-                          ? "; most of the image is black: is the "
-                            "direction normalised before "
-                            "intersecta_esfera?"
-                          : "");
+                                 "difference");
 }
 
 static rayo_status judge_mask(rayo_grade_item *item,
@@ -206,22 +234,44 @@ static rayo_status judge_tone(rayo_grade_item *item,
     }
     if (r->verdict == RAYO_VERDICT_IDENTICAL) {
         item->result = RAYO_GRADE_PASS;
-        return grade_say(item, err, "the same as the reference to within "
-                                    "%u level%s in every %s (rounding, "
-                                    "float precision)",
-                         t->levels, t->levels == 1 ? "" : "s",
-                         t->channels == 1 ? "pixel" : "channel");
+        if (t->channels == 1)
+            return grade_say(
+                item, err,
+                rayo_ngettext(rayo_error_lang(err),
+                              "the same as the reference to within %u level "
+                              "in every pixel (rounding, float precision)",
+                              "the same as the reference to within %u levels "
+                              "in every pixel (rounding, float precision)",
+                              t->levels),
+                t->levels);
+        return grade_say(
+            item, err,
+            rayo_ngettext(rayo_error_lang(err),
+                          "the same as the reference to within %u level in "
+                          "every channel (rounding, float precision)",
+                          "the same as the reference to within %u levels in "
+                          "every channel (rounding, float precision)",
+                          t->levels),
+            t->levels);
     }
     if (r->verdict == RAYO_VERDICT_CONSISTENT) {
         item->result = RAYO_GRADE_PASS;
-        return grade_say(item, err, "consistent with the reference: %llu "
-                                    "pixels differ by more than %u level%s "
-                                    "(%.3f%%), %llu at outlines and shadow "
-                                    "edges, %llu in shading within %g "
-                                    "pixels of the same value (rounding, "
-                                    "float precision, the focal distance)",
+        return grade_say(
+            item, err,
+            rayo_ngettext(rayo_error_lang(err),
+                          "consistent with the reference: %llu pixels differ "
+                          "by more than %u level (%.3f%%), %llu at outlines "
+                          "and shadow edges, %llu in shading within %g "
+                          "pixels of the same value (rounding, float "
+                          "precision, the focal distance)",
+                          "consistent with the reference: %llu pixels differ "
+                          "by more than %u levels (%.3f%%), %llu at outlines "
+                          "and shadow edges, %llu in shading within %g "
+                          "pixels of the same value (rounding, float "
+                          "precision, the focal distance)",
+                          t->levels),
                          (unsigned long long)t->differing, t->levels,
-                         t->levels == 1 ? "" : "s", r->mismatch_percent,
+                         r->mismatch_percent,
                          (unsigned long long)t->at_edges,
                          (unsigned long long)t->in_shading, r->tolerance);
     }
@@ -232,12 +282,18 @@ static rayo_status judge_tone(rayo_grade_item *item,
                           sentence);
     {
         rayo_status status = grade_fail(
-            item, err, "inconsistent with the reference: %llu pixels differ "
-                       "by more than %u level%s (%.2f%%), %llu of them away "
-                       "from any outline or shadow edge and from any "
-                       "pixel of the same value",
-            (unsigned long long)t->differing, t->levels,
-            t->levels == 1 ? "" : "s", r->mismatch_percent,
+            item, err,
+            rayo_ngettext(rayo_error_lang(err),
+                          "inconsistent with the reference: %llu pixels "
+                          "differ by more than %u level (%.2f%%), %llu of "
+                          "them away from any outline or shadow edge and "
+                          "from any pixel of the same value",
+                          "inconsistent with the reference: %llu pixels "
+                          "differ by more than %u levels (%.2f%%), %llu of "
+                          "them away from any outline or shadow edge and "
+                          "from any pixel of the same value",
+                          t->levels),
+            (unsigned long long)t->differing, t->levels, r->mismatch_percent,
             (unsigned long long)t->unexplained);
         if (status != RAYO_OK)
             return status;

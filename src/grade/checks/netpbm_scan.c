@@ -12,13 +12,14 @@
 #include "rayo/limits.h"
 
 #include "netpbm_scan.h"
+#include "rayo/lang.h"
 
 #define NETPBM_LINE_LIMIT 70
 
 static const netpbm_kind kinds[] = {
-    {'1', "PBM", "digits", "imagen.pbm", 1},
-    {'2', "PGM", "numbers", "imagen.pgm", 1},
-    {'3', "PPM", "numbers", "imagen.ppm", 3},
+    {'1', "PBM", N_("digits"), "imagen.pbm", 1},
+    {'2', "PGM", N_("numbers"), "imagen.pgm", 1},
+    {'3', "PPM", N_("numbers"), "imagen.ppm", 3},
 };
 
 const netpbm_kind *netpbm_kind_of(char magic)
@@ -138,30 +139,31 @@ netpbm_magic netpbm_check_magic(netpbm_scan *s, const netpbm_kind *kind)
     s->pos = start;
     m = s->data + start;
     if (s->size - start >= 4 && memcmp(m, png, 4) == 0) {
-        NETPBM_FAIL(s, "the output is a PNG image; the exercise asks for "
-                       "plain %s ('P%c' and %s) on standard output",
-                    kind->name, kind->magic, kind->samples);
+        NETPBM_FAIL(s, N_("the output is a PNG image; the exercise asks for "
+                       "plain %s ('P%c' and %s) on standard output"),
+                    kind->name, kind->magic,
+                    rayo_gettext(rayo_error_lang(s->err), kind->samples));
         return NETPBM_MAGIC_REFUSED;
     }
     if (s->size - start >= 2 && m[1] != kind->magic &&
         netpbm_format_name(m) != NULL)
         return NETPBM_MAGIC_OTHER;
     if (s->size - start >= 2 && m[0] == 'p' && m[1] == kind->magic) {
-        NETPBM_FAIL(s, "the magic number is 'p%c' in lowercase; Netpbm "
-                       "needs a capital 'P%c', and viewers refuse the file",
+        NETPBM_FAIL(s, N_("the magic number is 'p%c' in lowercase; Netpbm "
+                       "needs a capital 'P%c', and viewers refuse the file"),
                     kind->magic, kind->magic);
     } else if (s->size - start < 2 || m[0] != 'P' || m[1] != kind->magic) {
         netpbm_excerpt(s, start, 16, seen, sizeof seen);
-        NETPBM_FAIL(s, "the output does not begin with the magic number "
-                       "'P%c'; it begins with '%s'",
+        NETPBM_FAIL(s, N_("the output does not begin with the magic number "
+                       "'P%c'; it begins with '%s'"),
                     kind->magic, seen);
         return NETPBM_MAGIC_REFUSED;
     }
     s->pos = start + 2;
     if (s->pos < s->size && !netpbm_is_space(netpbm_peek(s)) &&
         netpbm_peek(s) != '#')
-        NETPBM_FAIL(s, "there is no whitespace after the magic number "
-                       "'P%c'",
+        NETPBM_FAIL(s, N_("there is no whitespace after the magic number "
+                       "'P%c'"),
                     kind->magic);
     return NETPBM_MAGIC_WANTED;
 }
@@ -199,8 +201,8 @@ int netpbm_check_dimensions(netpbm_scan *s, const netpbm_kind *kind,
         int separator = netpbm_peek(s);
         s->pos++;
         netpbm_read_number(s, h);
-        NETPBM_FAIL(s, "the dimensions are written '%lu%c%lu'; Netpbm needs "
-                       "two numbers separated by whitespace: '%lu %lu'",
+        NETPBM_FAIL(s, N_("the dimensions are written '%lu%c%lu'; Netpbm needs "
+                       "two numbers separated by whitespace: '%lu %lu'"),
                     *w, separator, *h, *w, *h);
     } else if (!netpbm_expect_number(s, "height", "the width", h)) {
         return 0;
@@ -208,19 +210,19 @@ int netpbm_check_dimensions(netpbm_scan *s, const netpbm_kind *kind,
     if (*w == 0 || *h == 0 || *w > RAYO_MAX_DIMENSION ||
         *h > RAYO_MAX_DIMENSION ||
         (unsigned long long)*w * *h > RAYO_MAX_PIXELS) {
-        NETPBM_FAIL(s, "the header promises a %lux%lu image, which no "
-                       "reader accepts; the exercise asks for %ux%u",
+        NETPBM_FAIL(s, N_("the header promises a %lux%lu image, which no "
+                       "reader accepts; the exercise asks for %ux%u"),
                     *w, *h, (unsigned)want_w, (unsigned)want_h);
         return 0;
     }
     if (*w == want_h && *h == want_w && want_w != want_h)
-        NETPBM_FAIL(s, "the header says %lu %lu (width %lu, height %lu); "
+        NETPBM_FAIL(s, N_("the header says %lu %lu (width %lu, height %lu); "
                        "the exercise asks for %u %u: width and height are "
-                       "swapped",
+                       "swapped"),
                     *w, *h, *w, *h, (unsigned)want_w, (unsigned)want_h);
     else if (*w != want_w || *h != want_h)
-        NETPBM_FAIL(s, "the header says %lux%lu; the exercise asks for "
-                       "%ux%u",
+        NETPBM_FAIL(s, N_("the header says %lux%lu; the exercise asks for "
+                       "%ux%u"),
                     *w, *h, (unsigned)want_w, (unsigned)want_h);
     return 1;
 }

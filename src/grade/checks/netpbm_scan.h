@@ -44,6 +44,12 @@ typedef enum netpbm_magic {
     NETPBM_MAGIC_OTHER    /* another Netpbm magic; nothing said yet */
 } netpbm_magic;
 
+/* Marks a whole sentence for xgettext; grade_fail and grade_say look it
+   up in err's language. */
+#ifndef N_
+#define N_(text) text
+#endif
+
 #define NETPBM_FAIL(s, ...)                                                  \
     do {                                                                     \
         if ((s)->status == RAYO_OK)                                          \

@@ -61,8 +61,8 @@ static void check_raster_tally(netpbm_scan *s, const raster_tally *t)
     }
     if (t->comments > 0) {
         netpbm_where(s, t->first_comment, &line, &column);
-        NETPBM_FAIL(s, "a '#' comment among the pixels (line %lu); Netpbm "
-                       "allows comments only in the header",
+        NETPBM_FAIL(s, N_("a '#' comment among the pixels (line %lu); Netpbm "
+                       "allows comments only in the header"),
                     line);
     }
 }
@@ -83,8 +83,8 @@ void netpbm_check_p1(netpbm_scan *s, uint32_t width, uint32_t height,
         rayo_image_info info = rayo_image_info_bit((uint32_t)w,
                                                    (uint32_t)h);
         if (s->pos < s->size && !netpbm_is_space(netpbm_peek(s)))
-            NETPBM_FAIL(s, "there is no whitespace between the height and "
-                           "the pixels");
+            NETPBM_FAIL(s, N_("there is no whitespace between the height and "
+                           "the pixels"));
         if (s->status == RAYO_OK)
             s->status = rayo_image_create(image, &info, s->err);
         if (s->status != RAYO_OK)
@@ -95,7 +95,7 @@ void netpbm_check_p1(netpbm_scan *s, uint32_t width, uint32_t height,
     }
     netpbm_note_line_lengths(s);
     if (s->item->result == RAYO_GRADE_PASS)
-        NETPBM_SAY(s, "plain PBM (P1), %lux%lu, %llu pixels", w, h,
+        NETPBM_SAY(s, N_("plain PBM (P1), %lux%lu, %llu pixels"), w, h,
                    tally.pixels);
 }
 

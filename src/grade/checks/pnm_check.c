@@ -353,25 +353,25 @@ static int check_maxval_and_raster(netpbm_scan *s, const netpbm_kind *kind,
                               &maxval))
         return 0;
     if (s->pos < s->size && !netpbm_is_space(netpbm_peek(s)))
-        NETPBM_FAIL(s, "there is no whitespace between the maximum value "
-                       "and the numbers");
+        NETPBM_FAIL(s, N_("there is no whitespace between the maximum value "
+                       "and the numbers"));
     walk_samples(s, image, t);
     if (maxval == STATEMENT_MAXVAL)
         return 1;
     netpbm_where(s, at, &line, &column);
     if (t->samples + 1 == want) {
-        NETPBM_FAIL(s, "the header has no maximum value: after the height "
+        NETPBM_FAIL(s, N_("the header has no maximum value: after the height "
                        "comes %lu (line %lu, column %lu), and as the "
                        "maximum value it would leave one number missing, "
                        "so it is the first pixel's; the header must end "
-                       "with 255 ('P%c', width, height, 255)",
+                       "with 255 ('P%c', width, height, 255)"),
                     maxval, line, column, kind->magic);
         memset(image->pixels, 0, image->stride * image->info.height);
         s->pos = at;
         walk_samples(s, image, t);
     } else {
-        NETPBM_FAIL(s, "the maximum value is %lu (line %lu, column %lu); "
-                       "the statement says it is always 255",
+        NETPBM_FAIL(s, N_("the maximum value is %lu (line %lu, column %lu); "
+                       "the statement says it is always 255"),
                     maxval, line, column);
     }
     return 1;
@@ -408,11 +408,11 @@ void netpbm_check_p2_p3(netpbm_scan *s, const netpbm_kind *kind,
     if (s->item->result != RAYO_GRADE_PASS)
         return;
     if (kind->channels == 3)
-        NETPBM_SAY(s, "plain PPM (P3), %lux%lu, maxval 255, %llu pixels "
-                      "(%llu numbers)",
+        NETPBM_SAY(s, N_("plain PPM (P3), %lux%lu, maxval 255, %llu pixels "
+                      "(%llu numbers)"),
                    w, h, tally.samples / 3, tally.samples);
     else
-        NETPBM_SAY(s, "plain PGM (P2), %lux%lu, maxval 255, %llu pixels", w,
+        NETPBM_SAY(s, N_("plain PGM (P2), %lux%lu, maxval 255, %llu pixels"), w,
                    h, tally.samples);
 }
 
@@ -436,8 +436,8 @@ rayo_status rayo_pnm_check(const void *data, size_t size, char magic,
     s.status = RAYO_OK;
     item->result = RAYO_GRADE_PASS;
     if (size == 0)
-        NETPBM_FAIL(&s, "the program wrote nothing on standard output; it "
-                        "must write the image there (./programa > %s)",
+        NETPBM_FAIL(&s, N_("the program wrote nothing on standard output; it "
+                        "must write the image there (./programa > %s)"),
                     kind->file);
     else if (magic == '1')
         netpbm_check_p1(&s, width, height, image);

@@ -29,23 +29,26 @@
 
 extern char **environ;
 
+/* Marks a message for xgettext; the caller looks it up in its language. */
+#define N_(text) text
+
 const char *grade_signal_name(int signal_number)
 {
     switch (signal_number) {
-    case SIGSEGV: return "segmentation fault (SIGSEGV)";
-    case SIGBUS: return "bus error (SIGBUS)";
-    case SIGFPE: return "arithmetic exception (SIGFPE)";
-    case SIGILL: return "illegal instruction (SIGILL)";
-    case SIGABRT: return "abort (SIGABRT), e.g. a failed assert or a "
-                         "corrupted heap";
-    case SIGKILL: return "killed (SIGKILL)";
-    case SIGTERM: return "terminated (SIGTERM)";
-    case SIGXCPU: return "CPU time limit exceeded (SIGXCPU)";
-    case SIGXFSZ: return "file size limit exceeded (SIGXFSZ)";
-    case SIGPIPE: return "broken pipe (SIGPIPE)";
-    case SIGTRAP: return "trap (SIGTRAP)";
+    case SIGSEGV: return N_("segmentation fault (SIGSEGV)");
+    case SIGBUS: return N_("bus error (SIGBUS)");
+    case SIGFPE: return N_("arithmetic exception (SIGFPE)");
+    case SIGILL: return N_("illegal instruction (SIGILL)");
+    case SIGABRT: return N_("abort (SIGABRT), e.g. a failed assert or a "
+                         "corrupted heap");
+    case SIGKILL: return N_("killed (SIGKILL)");
+    case SIGTERM: return N_("terminated (SIGTERM)");
+    case SIGXCPU: return N_("CPU time limit exceeded (SIGXCPU)");
+    case SIGXFSZ: return N_("file size limit exceeded (SIGXFSZ)");
+    case SIGPIPE: return N_("broken pipe (SIGPIPE)");
+    case SIGTRAP: return N_("trap (SIGTRAP)");
     }
-    return "a signal";
+    return N_("a signal");
 }
 
 /* Resolves a command name on PATH in the parent (execvp is not

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "../grade_impl.h"
+#include "rayo/lang.h"
 
 #define QUOTED_LINES 5
 
@@ -37,6 +38,8 @@ static rayo_status say_ending(grade_context *ctx, const grade_captured *got,
                           o->timeout);
     if (outcome->ending == GRADE_SIGNALED) {
         int sig = outcome->status;
+        const char *name =
+            rayo_gettext(rayo_error_lang(err), grade_signal_name(sig));
         if (sig == SIGXCPU)
             return grade_fail(item, err, "used more than %g s of CPU time "
                                          "and was stopped: an infinite "
@@ -47,11 +50,12 @@ static rayo_status say_ending(grade_context *ctx, const grade_captured *got,
                                          "output limit) and was stopped: "
                                          "output in an endless loop?",
                               (unsigned long long)o->output_limit);
-        return grade_fail(item, err, "crashed: %s%s", grade_signal_name(sig),
-                          sig == SIGSEGV
-                              ? "; an invalid pointer or an index out of "
-                                "an array's bounds (valgrind may say where)"
-                              : "");
+        if (sig == SIGSEGV)
+            return grade_fail(item, err, "crashed: %s; an invalid pointer "
+                                         "or an index out of an array's "
+                                         "bounds (valgrind may say where)",
+                              name);
+        return grade_fail(item, err, "crashed: %s", name);
     }
     if (outcome->status != 0)
         return grade_fail(item, err, "exited with status %d; main must "
