@@ -102,9 +102,9 @@ static rayo_status write_one(grade_context *ctx, const char *name,
             status = say_failed(ctx, name, &got, err);
         else if (lstat(path, &st) != 0 || !S_ISREG(st.st_mode))
             status = grade_fail(&ctx->report->items[RAYO_GRADE_RUN], err,
-                                "'%s %s %s " DEPTH " %s' exited with status "
-                                "0 but wrote no file %s",
-                                e->program, w, h, name, name);
+                                "'%s %s %s %s %s' exited with status 0 but "
+                                "wrote no file %s",
+                                e->program, w, h, DEPTH, name, name);
         else
             status = grade_read_file(path, ctx->options->output_limit, data,
                                      size, err);
@@ -331,10 +331,10 @@ rayo_status grade_tp1_runs(grade_context *ctx, rayo_error *err)
     if (status == RAYO_OK && ppm != NULL && bmp != NULL) {
         r->items[RAYO_GRADE_RUN].result = RAYO_GRADE_PASS;
         status = grade_say(&r->items[RAYO_GRADE_RUN], err,
-                           "'%s %lu %lu " DEPTH " tp1.ppm' and '... "
-                           "tp1.bmp' ran to the end and wrote their files",
+                           "'%s %lu %lu %s tp1.ppm' and '... tp1.bmp' ran "
+                           "to the end and wrote their files",
                            e->program, (unsigned long)e->width,
-                           (unsigned long)e->height);
+                           (unsigned long)e->height, DEPTH);
         if (status == RAYO_OK)
             status = check_files(ctx, ppm, ppm_size, bmp, bmp_size, err);
     }
