@@ -24,7 +24,7 @@
 set -eu
 out=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 cd "$(dirname "$0")/.."
-files=$(find cli src -name '*.[ch]' | LC_ALL=C sort)
+files=$(find cli src web/wasm -name '*.[ch]' | LC_ALL=C sort)
 tmp="$out.tmp"
 # shellcheck disable=SC2086
 LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \

@@ -516,6 +516,7 @@ function wire() {
   $('lang').addEventListener('click', () => {
     lang = lang === 'es' ? 'en' : 'es';
     localStorage.setItem('rayo-lang', lang);
+    if (rayo) rayo.setLang(lang);
     applyLang();
     if (state.image) guarded(compare); // the report in the new language
   });
@@ -587,6 +588,7 @@ async function start() {
   applyLang();
   try {
     rayo = await RayoWeb.loadRayo(bytesOf(window.RAYO_ASSETS.wasm));
+    rayo.setLang(lang);
     readCourses();
   } catch (e) {
     showError(`rayo: ${e.message}`);

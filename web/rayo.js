@@ -101,8 +101,15 @@ class Rayo {
     this.ready = instantiate(this.module).then((instance) => {
       this.bind(instance);
       this.restarting = false;
+      if (this.lang) this.setLang(this.lang);
       if (this.onRestart) this.onRestart();
     });
+  }
+  // The language of the module's error lines ('es' or 'en'), kept across
+  // a restart.
+  setLang(lang) {
+    this.lang = lang;
+    this.x.web_set_lang(lang === 'es' ? 1 : 0);
   }
   // width x height, a file named name, fits the page (else a RayoError).
   sizeCheck(name, width, height) {

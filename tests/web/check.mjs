@@ -132,7 +132,7 @@ function siteBytes(dir) {
 }
 
 async function main() {
-  const planned = 41 + 2 * LOOKS_TESTS;
+  const planned = 43 + 2 * LOOKS_TESTS;
   console.log(`1..${planned}`);
   const seed = setup();
   const size = siteBytes(WEB);
@@ -422,6 +422,18 @@ async function run(browser, origin, seed) {
   const gotEs = await p2.locator(T('report')).textContent();
   ok(gotEs === wantEs.out && /veredicto: /.test(gotEs),
      "a Spanish page's report is rayo compare --lang es's", `page:\n${gotEs}\ncommand:\n${wantEs.out}`);
+  // ... and its error line in Spanish: the command's, and the page's own.
+  await p2.setInputFiles(T('image-input'), path.join(tmp, 'malformed.pgm'));
+  await p2.waitForFunction(() => document.getElementById('error').textContent !== '');
+  const wantErrEs = rayo(['compare', '--lang', 'es', course(1), 'malformed.pgm']).err.trim();
+  const gotErrEs = await p2.locator(T('error')).textContent();
+  ok(gotErrEs === wantErrEs && gotErrEs !== want,
+     "a Spanish page's error line is rayo compare --lang es's", `page: ${gotErrEs}\ncommand: ${wantErrEs}`);
+  await p2.setInputFiles(T('image-input'), path.join(tmp, 'wide.pbm'));
+  await p2.waitForFunction(() => /8193x4096/.test(document.getElementById('error').textContent));
+  const refusedEs = await p2.locator(T('error')).textContent();
+  ok(refusedEs === 'rayo: wide.pbm: la imagen es de 8193x4096, 33558528 píxeles; la página acepta hasta 33554432 (por ejemplo 8192x4096): comparala con el comando, rayo compare',
+     "a Spanish page's own refusal in Spanish", refusedEs);
   await es.close();
 
   // The README's picture: a mistake found.

@@ -23,6 +23,7 @@ typedef struct web_image web_image;
 void *web_alloc(size_t size);
 void web_free(void *p);
 const char *web_error(void);
+void web_set_lang(int spanish);
 int web_size_check(const char *name, uint32_t width, uint32_t height);
 int web_error_is_png(void);
 void web_image_free(web_image *im);

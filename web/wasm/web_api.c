@@ -19,6 +19,7 @@
  * file compute for it under 2^32 (the static assertion below).
  */
 #include <math.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,6 +29,7 @@
 #include "rayo/compare.h"
 #include "rayo/course/course.h"
 #include "rayo/course/course_scene.h"
+#include "rayo/lang.h"
 #include "rayo/limits.h"
 #include "rayo/output.h"
 #include "rayo/reader.h"
@@ -46,6 +48,9 @@ struct web_image {
 
 static char last_error[RAYO_ERROR_MESSAGE_SIZE + 8];
 static int last_was_png;
+/* The language of web_error's lines: English until the page gives its
+   own (web_set_lang), as the library has no language of its own. */
+static rayo_lang page_lang = RAYO_LANG_EN;
 
 /* The largest image the page takes (2^25 pixels, e.g. 8192x4096), and the
  * most bytes one pixel can hold in the module at once while two such
@@ -63,6 +68,26 @@ _Static_assert(WEB_MAX_PIXELS * WEB_PIXEL_BYTES <= SIZE_MAX,
 static void keep_error(const rayo_error *err)
 {
     snprintf(last_error, sizeof last_error, "rayo: %s", err->message);
+}
+
+/* web_error's line from one of the page's own messages, in its language. */
+static void say_error(const char *format, ...)
+    __attribute__((format(printf, 1, 2)));
+static void say_error(const char *format, ...)
+{
+    va_list args;
+    memcpy(last_error, "rayo: ", 7);
+    va_start(args, format);
+    rayo_lang_vformat(page_lang, last_error + 6, sizeof last_error - 6,
+                      format, args);
+    va_end(args);
+}
+
+/* The language of the lines web_error gives from now on, the page's:
+   1 for Spanish, 0 for English (compare's report takes its own). */
+WEB_EXPORT("web_set_lang") void web_set_lang(int spanish)
+{
+    page_lang = spanish ? RAYO_LANG_ES : RAYO_LANG_EN;
 }
 
 WEB_EXPORT("web_alloc") void *web_alloc(size_t size)
@@ -102,11 +127,11 @@ int web_size_check(const char *name, uint32_t width, uint32_t height)
     uint64_t pixels = (uint64_t)width * height;
     if (pixels <= WEB_MAX_PIXELS)
         return 0;
-    snprintf(last_error, sizeof last_error,
-             "rayo: %s: the image is %lux%lu, %llu pixels; the page takes "
-             "at most %llu (e.g. 8192x4096): compare it with the command, "
-             "rayo compare",
-             name, (unsigned long)width, (unsigned long)height,
+    say_error(rayo_gettext(page_lang,
+                           "%s: the image is %lux%lu, %llu pixels; the page "
+                           "takes at most %llu (e.g. 8192x4096): compare it "
+                           "with the command, rayo compare"),
+              name, (unsigned long)width, (unsigned long)height,
              (unsigned long long)pixels, (unsigned long long)WEB_MAX_PIXELS);
     return -1;
 }
@@ -115,7 +140,7 @@ static web_image *new_image(void)
 {
     web_image *im = calloc(1, sizeof *im);
     if (im == NULL)
-        snprintf(last_error, sizeof last_error, "rayo: out of memory");
+        say_error("%s", rayo_gettext(page_lang, "out of memory"));
     return im;
 }
 
@@ -131,7 +156,7 @@ web_image *web_read(const unsigned char *data, size_t size, const char *name,
 {
     web_image *im = new_image();
     rayo_read_options options;
-    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
+    rayo_error err = RAYO_ERROR_INIT(page_lang);
     rayo_status s;
     last_was_png = 0;
     if (im == NULL)
@@ -148,10 +173,11 @@ web_image *web_read(const unsigned char *data, size_t size, const char *name,
         /* This build reads no JPEG (RAYO_NO_JPEG): said in the page's
            words rather than the build's. */
         if (im->read.format == RAYO_FORMAT_JPEG)
-            snprintf(last_error, sizeof last_error,
-                     "rayo: %s: a JPEG, which the page does not read; save "
-                     "the image as PNG or PBM/PGM/PPM",
-                     name);
+            say_error(rayo_gettext(page_lang,
+                                   "%s: a JPEG, which the page does not "
+                                   "read; save the image as PNG or "
+                                   "PBM/PGM/PPM"),
+                      name);
         web_image_free(im);
         return NULL;
     }
@@ -203,10 +229,10 @@ web_image *web_from_png(const unsigned char *png, size_t png_size,
 {
     web_image *im = new_image();
     rayo_image_info info;
-    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
+    rayo_error err = RAYO_ERROR_INIT(page_lang);
     int color, depth, trns;
     uint32_t x, y;
-    if (web_size_check("the PNG", w, h) != 0)
+    if (web_size_check(rayo_gettext(page_lang, "the PNG"), w, h) != 0)
         return NULL;
     if (im == NULL)
         return NULL;
@@ -271,13 +297,13 @@ WEB_EXPORT("web_rgba") const unsigned char *web_rgba(web_image *im)
     if (im->rgba != NULL)
         return im->rgba;
     /* every image here passed web_size_check: no overflow */
-    if (web_size_check("the picture", i->width, i->height) != 0)
+    if (web_size_check(rayo_gettext(page_lang, "the picture"), i->width, i->height) != 0)
         return NULL;
     im->rgba = malloc((size_t)i->width * i->height * 4 + 1);
     if (im->rgba == NULL) {
-        snprintf(last_error, sizeof last_error,
-                 "rayo: out of memory for the picture's %lux%lu pixels",
-                 (unsigned long)i->width, (unsigned long)i->height);
+        say_error(rayo_gettext(page_lang, "out of memory for the "
+                                          "picture's %lux%lu pixels"),
+                  (unsigned long)i->width, (unsigned long)i->height);
         return NULL;
     }
     for (y = 0; y < i->height; y++) {
@@ -342,16 +368,18 @@ const char *web_compare(const web_image *reference, const web_image *image,
 {
     rayo_compare_options options;
     rayo_output *out = NULL;
-    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
+    rayo_error err = RAYO_ERROR_INIT(page_lang);
     free(compare_text);
     free(compare_diagnosis);
     free(compare_diff.data);
     compare_text = compare_diagnosis = NULL;
     memset(&compare_diff, 0, sizeof compare_diff);
     rayo_error_clear(&err);
-    if (web_size_check("the reference", reference->image.info.width,
+    if (web_size_check(rayo_gettext(page_lang, "the reference"),
+                       reference->image.info.width,
                        reference->image.info.height) != 0 ||
-        web_size_check("the image", image->image.info.width,
+        web_size_check(rayo_gettext(page_lang, "the image"),
+                       image->image.info.width,
                        image->image.info.height) != 0)
         return NULL;
     rayo_compare_options_init(&options);
@@ -529,7 +557,7 @@ web_image *web_render(int scene_id, const double *cam, const double *spheres,
     rayo_camera camera;
     rayo_scene *scene = NULL;
     rayo_render_options options;
-    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
+    rayo_error err = RAYO_ERROR_INIT(page_lang);
     rayo_status s;
     if (im == NULL)
         return NULL;
@@ -537,7 +565,7 @@ web_image *web_render(int scene_id, const double *cam, const double *spheres,
     rayo_render_options_init(&options);
     options.threads = 1;
     s = build_camera(cam, &camera, &err);
-    if (s == RAYO_OK && web_size_check("the render", camera.width,
+    if (s == RAYO_OK && web_size_check(rayo_gettext(page_lang, "the render"), camera.width,
                                        camera.height) != 0) {
         web_image_free(im);
         return NULL;
@@ -572,7 +600,7 @@ int web_ray(const double *cam, const double *spheres, size_t count,
             double px, double py, double *out)
 {
     rayo_camera camera;
-    rayo_error err = RAYO_ERROR_INIT(RAYO_LANG_EN);
+    rayo_error err = RAYO_ERROR_INIT(page_lang);
     rayo_ray ray;
     rayo_vec3 l;
     double nearest = INFINITY;
