@@ -166,7 +166,7 @@ export async function looks(ctx) {
              mark: g('mark').textContent, note: g('ref-note').textContent,
              picture: g('picture').hidden, diff: g('diff-figure').hidden, save: g('save').disabled };
   });
-  const err = rayo(['compare', '--lang', 'en', course(1), 'bad.pbm']).err.trim();
+  const err = rayo(['compare', '--lang', lang, course(1), 'bad.pbm']).err.trim();
   shotsOk = (await shot('5-failed')) && shotsOk;
   ok((await text('error')) === err && Object.values(left).every((v) => v === '' || v === true),
      `${label}: a file that fails ('p1') shows the command's error and nothing of the previous file`,
