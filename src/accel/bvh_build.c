@@ -5,7 +5,8 @@
  * rounded outward, 32 bytes each; the primitives' numbers beside them),
  * which is what every level reads and what the partitions move, between
  * two such arrays: one stream of memory, no indirection.  Where a node
- * is cut is bvh_build_sah.c's; nodes whose centres all coincide, and
+ * is cut is bvh_build_sah.c's (on every thread at once for the
+ * largest nodes: bvh_build_top.c); nodes whose centres all coincide, and
  * nodes deeper than BVH_SAH_DEPTH_LIMIT, are cut in halves instead, so
  * the depth stays below BVH_SAH_DEPTH_LIMIT + 32 and a fixed stack
  * suffices.  Node bounds are the items' float bounds (rounding outward
@@ -117,14 +118,23 @@ int bvh_build_node(builder *b, task *t, size_t local, const span *r)
         double area =
             v4_half_area(v4_load(r->bounds.lo), v4_load(r->bounds.hi));
         binning g;
+        size_t boundary = 0;
+        int top = 0;
         bvh_binning_make(&g, &r->centres, count);
-        if (g.axes > 0 && area > 0.0)
-            bvh_find_split(b, r, &g, area, &best);
+        if (g.axes > 0 && area > 0.0) {
+            top = bvh_top_wanted(b, r) &&
+                  bvh_top_cut(b, r, &g, area, &best, &left.centres,
+                              &right.centres, &boundary);
+            if (!top)
+                bvh_find_split(b, r, &g, area, &best);
+        }
         if (count <= MAX_LEAF && !(best.cost < (double)count))
             return make_leaf(b, t, local, r);
         if (best.axis >= 0) {
             left.end = right.begin =
-                bvh_partition(b, r, &g, &best, &left.centres, &right.centres);
+                top ? boundary
+                    : bvh_partition(b, r, &g, &best, &left.centres,
+                                    &right.centres);
             left.side = right.side = !r->side;
             left.bounds = best.left;
             right.bounds = best.right;
@@ -270,6 +280,7 @@ rayo_status rayo_bvh_build_from(rayo_bvh **result, rayo_bvh_box_fn box,
     }
     memset(&b, 0, sizeof b);
     b.threads = thread_count(threads, count);
+    b.total = count;
     b.box = box;
     b.box_context = context;
     /* count <= UINT32_MAX / 2, so these products fit in size_t only if
