@@ -234,23 +234,18 @@ static void convert_all(builder *b, size_t count, fbox *bounds, fbox *centres)
 {
     convert_job jobs[64];
     unsigned n = b->threads, i;
-    vec4f lo[2], hi[2];
     for (i = 0; i < n; i++) {
         jobs[i].b = b;
         jobs[i].begin = count * i / n;
         jobs[i].end = count * (i + 1) / n;
     }
     thread_run_each(n, convert, jobs, sizeof *jobs);
-    lo[0] = lo[1] = v4_infinity();
-    hi[0] = hi[1] = v4_set1(-INFINITY);
+    fbox_empty(bounds);
+    fbox_empty(centres);
     for (i = 0; i < n; i++) {
-        lo[0] = v4_min(v4_load(jobs[i].bounds.lo), lo[0]);
-        hi[0] = v4_max(v4_load(jobs[i].bounds.hi), hi[0]);
-        lo[1] = v4_min(v4_load(jobs[i].centres.lo), lo[1]);
-        hi[1] = v4_max(v4_load(jobs[i].centres.hi), hi[1]);
+        fbox_grow(bounds, &jobs[i].bounds);
+        fbox_grow(centres, &jobs[i].centres);
     }
-    fbox_set(bounds, lo[0], hi[0]);
-    fbox_set(centres, lo[1], hi[1]);
 }
 
 rayo_status rayo_bvh_build_from(rayo_bvh **result, rayo_bvh_box_fn box,

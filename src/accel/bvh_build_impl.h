@@ -93,6 +93,20 @@ static inline void fbox_set(fbox *b, vec4f lo, vec4f hi)
     v4_store(b->hi, hi);
 }
 
+/* A box holding nothing: the start of a union. */
+static inline void fbox_empty(fbox *b)
+{
+    fbox_set(b, v4_infinity(), v4_set1(-INFINITY));
+}
+
+/* into grown to hold from, which comes after it: on a tie (-0 and +0)
+ * into's bits stay, as in one pass over both in order. */
+static inline void fbox_grow(fbox *into, const fbox *from)
+{
+    fbox_set(into, v4_min(v4_load(from->lo), v4_load(into->lo)),
+             v4_max(v4_load(from->hi), v4_load(into->hi)));
+}
+
 
 /* How one node's centres are sorted into bins along each axis. */
 typedef struct binning {

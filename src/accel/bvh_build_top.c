@@ -70,7 +70,6 @@ int bvh_top_cut(builder *b, const span *r, const binning *g, double area,
     unsigned n = b->threads, i;
     size_t count = r->end - r->begin, left, right;
     top_job *jobs = malloc(n * sizeof *jobs);
-    vec4f lo[2], hi[2];
     if (jobs == NULL)
         return 0;
     for (i = 0; i < n; i++) {
@@ -108,16 +107,12 @@ int bvh_top_cut(builder *b, const span *r, const binning *g, double area,
         right += (jobs[i].end - jobs[i].begin) - mine;
     }
     thread_run_each(n, top_work, jobs, sizeof *jobs);
-    lo[0] = lo[1] = v4_infinity();
-    hi[0] = hi[1] = v4_set1(-INFINITY);
+    fbox_empty(left_c);
+    fbox_empty(right_c);
     for (i = 0; i < n; i++) {
-        lo[0] = v4_min(v4_load(jobs[i].left_c.lo), lo[0]);
-        hi[0] = v4_max(v4_load(jobs[i].left_c.hi), hi[0]);
-        lo[1] = v4_min(v4_load(jobs[i].right_c.lo), lo[1]);
-        hi[1] = v4_max(v4_load(jobs[i].right_c.hi), hi[1]);
+        fbox_grow(left_c, &jobs[i].left_c);
+        fbox_grow(right_c, &jobs[i].right_c);
     }
-    fbox_set(left_c, lo[0], hi[0]);
-    fbox_set(right_c, lo[1], hi[1]);
     *boundary = r->begin + best->left_count;
     free(jobs);
     return 1;
