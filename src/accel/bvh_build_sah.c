@@ -46,7 +46,9 @@ static void bins_of(const binning *g, vec4f centre, int32_t k[4])
     v4_to_int(f, k);
 }
 
-void bvh_bins_clear(bvh_bins *s, size_t bins)
+/* Inline in bvh_find_split, where the bins are its own: they stay in
+ * registers and on its stack, nothing the items could alias. */
+static inline void bins_clear(bvh_bins *s, size_t bins)
 {
     vec4f inf = v4_infinity(), minus_inf = v4_set1(-INFINITY);
     size_t k;
@@ -59,34 +61,32 @@ void bvh_bins_clear(bvh_bins *s, size_t bins)
         }
 }
 
-void bvh_bins_fill(const item *items, size_t begin, size_t end,
-                   const binning *g, bvh_bins *s)
+static inline void bins_fill(const item *items, size_t begin, size_t end,
+                             const binning *g, bvh_bins *s)
 {
-    vec4f lo[3][BINS], hi[3][BINS];
-    size_t count[3][BINS], i, k, bins = g->count;
+    size_t i;
     int a;
-    for (a = 0; a < 3; a++)
-        for (k = 0; k < bins; k++) {
-            lo[a][k] = s->lo[a][k];
-            hi[a][k] = s->hi[a][k];
-            count[a][k] = s->count[a][k];
-        }
     for (i = begin; i < end; i++) {
         vec4f l = v4_load(items[i].lo), h = v4_load(items[i].hi);
         int32_t at[4];
         bins_of(g, v4_add(l, h), at);
         for (a = 0; a < 3; a++) {
-            lo[a][at[a]] = v4_min(l, lo[a][at[a]]);
-            hi[a][at[a]] = v4_max(h, hi[a][at[a]]);
-            count[a][at[a]]++;
+            s->lo[a][at[a]] = v4_min(l, s->lo[a][at[a]]);
+            s->hi[a][at[a]] = v4_max(h, s->hi[a][at[a]]);
+            s->count[a][at[a]]++;
         }
     }
-    for (a = 0; a < 3; a++)
-        for (k = 0; k < bins; k++) {
-            s->lo[a][k] = lo[a][k];
-            s->hi[a][k] = hi[a][k];
-            s->count[a][k] = count[a][k];
-        }
+}
+
+void bvh_bins_clear(bvh_bins *s, size_t bins)
+{
+    bins_clear(s, bins);
+}
+
+void bvh_bins_fill(const item *items, size_t begin, size_t end,
+                   const binning *g, bvh_bins *s)
+{
+    bins_fill(items, begin, end, g, s);
 }
 
 void bvh_bins_merge(bvh_bins *into, const bvh_bins *from, size_t bins)
@@ -156,8 +156,8 @@ void bvh_find_split(const builder *b, const span *r, const binning *g,
                     double area, split *best)
 {
     bvh_bins s;
-    bvh_bins_clear(&s, g->count);
-    bvh_bins_fill(b->items[r->side], r->begin, r->end, g, &s);
+    bins_clear(&s, g->count);
+    bins_fill(b->items[r->side], r->begin, r->end, g, &s);
     bvh_bins_best(&s, g, area, best);
 }
 
