@@ -18,7 +18,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../core/huge_pages.h"
 #include "../core/thread_start.h"
 
 void rayo_box_pad(rayo_box *box)
@@ -289,7 +288,6 @@ rayo_status rayo_bvh_build_from(rayo_bvh **result, rayo_bvh_box_fn box,
      * (build_all) */
     b.items[0] = malloc(2 * count * sizeof *b.items[0]);
     b.items[1] = b.items[0] != NULL ? b.items[0] + count : NULL;
-    rayo_huge_pages(b.items[0], 2 * count * sizeof *b.items[0]);
     b.index[1] = malloc(count * sizeof *b.index[1]);
     b.prims = b.index[0] = bvh->prims = malloc(count * sizeof *bvh->prims);
     b.task_capacity = 64;

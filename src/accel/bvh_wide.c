@@ -27,7 +27,6 @@
 #include "bvh_wide_impl.h"
 #include "simd/bvh_wide_isa.h"
 
-#include "../core/huge_pages.h"
 #include "../core/thread_start.h"
 
 #include <pthread.h>
@@ -459,8 +458,6 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
      * (first writes of pages are what cost here) and clear_others the
      * rest */
     wide->cx = malloc(4 * (prims + BVH_WIDE_LANES) * sizeof *wide->cx);
-    rayo_huge_pages(wide->cx,
-                    4 * (prims + BVH_WIDE_LANES) * sizeof *wide->cx);
     wide->sphere = calloc(prims + BVH_WIDE_LANES, 1);
     position = positions(bvh, prims, &top);
     if (threads > FRONTIER_MAX)
@@ -509,7 +506,6 @@ rayo_status rayo_bvh_widen_threads(rayo_bvh *bvh,
         free(s);
         return RAYO_ERR_NOMEM;
     }
-    rayo_huge_pages(wide->nodes, capacity * sizeof *wide->nodes);
     if (s != NULL) {
         unsigned at = 0;
         (void)widen_top(s, 0, 0, &next, &at);

@@ -12,7 +12,6 @@
 #include <string.h>
 
 #include "../core/decimal.h"
-#include "../core/huge_pages.h"
 #include "mesh_impl.h"
 #include "rayo/limits.h"
 
@@ -69,9 +68,6 @@ rayo_status mesh_reserve(mesh_builder *b, size_t more, const char *name,
         m->normals = normals;
     }
     b->capacity = capacity;
-    rayo_huge_pages(m->corners, capacity * 9 * sizeof *m->corners);
-    if (b->with_normals)
-        rayo_huge_pages(m->normals, capacity * 3 * sizeof *m->normals);
     return RAYO_OK;
 }
 

@@ -15,8 +15,6 @@
 
 #include "rayo/limits.h"
 
-#include "../core/huge_pages.h"
-
 /*
  * Makes room for `wanted` elements in all in the array whose pointer is
  * at array_ptr (a T **, handled through memcpy so that no pointer is
@@ -382,9 +380,6 @@ rayo_status scene_reserve_triangles(rayo_scene *scene, unsigned material,
         status = reserve(&scene->triangles, &scene->triangle_capacity,
                          scene->triangle_count + more,
                          sizeof *scene->triangles, err);
-    if (status == RAYO_OK)
-        rayo_huge_pages(scene->triangles,
-                        scene->triangle_capacity * sizeof *scene->triangles);
     return status;
 }
 
