@@ -101,7 +101,7 @@ LIB := $(BUILD)/librayo.a
 SHLIB := $(BUILD)/librayo.so.$(RAYO_VERSION)
 RAYO := $(BUILD)/rayo
 
-.PHONY: all check run install uninstall clean bench check-sanitize \
+.PHONY: all check run install uninstall clean bench setup-steps check-sanitize \
         check-valgrind unit cli-tests fuzz fuzz-targets
 .DEFAULT_GOAL := all
 
@@ -363,6 +363,14 @@ $(SCAN_MESH): bench/scan/scan_mesh.c
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $< -lm
+
+# Each step of a mesh's setup timed in process (bench/scan/setup_steps.c).
+SETUP_STEPS := $(BUILD)/bench/setup-steps
+setup-steps: $(SETUP_STEPS)
+$(SETUP_STEPS): bench/scan/setup_steps.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 $(BUILD)/bench/scan-%.scene: $(SCAN_MESH)
 	$(call say,GEN,$@)

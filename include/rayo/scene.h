@@ -195,6 +195,13 @@ RAYO_API rayo_status rayo_scene_add_mesh(rayo_scene *scene,
                                          unsigned material, size_t *left_out,
                                          rayo_error *err);
 
+/* The same, placing the triangles on up to `threads` threads (0: one a
+ * CPU); the scene is the same for any number. */
+RAYO_API rayo_status rayo_scene_add_mesh_threads(
+    rayo_scene *scene, const rayo_mesh *mesh,
+    const rayo_mesh_placement *placement, unsigned material,
+    unsigned threads, size_t *left_out, rayo_error *err);
+
 /*
  * Adds a light.  RAYO_ERR_INVALID for an unknown kind, a non-finite
  * vector, a zero direction, or a negative or non-finite colour;

@@ -5,7 +5,8 @@
  * rounded outward, 32 bytes each; the primitives' numbers beside them),
  * which is what every level reads and what the partitions move, between
  * two such arrays: one stream of memory, no indirection.  Where a node
- * is cut is bvh_build_sah.c's; nodes whose centres all coincide, and
+ * is cut is bvh_build_sah.c's (on every thread at once for the
+ * largest nodes: bvh_build_top.c); nodes whose centres all coincide, and
  * nodes deeper than BVH_SAH_DEPTH_LIMIT, are cut in halves instead, so
  * the depth stays below BVH_SAH_DEPTH_LIMIT + 32 and a fixed stack
  * suffices.  Node bounds are the items' float bounds (rounding outward
@@ -117,14 +118,23 @@ int bvh_build_node(builder *b, task *t, size_t local, const span *r)
         double area =
             v4_half_area(v4_load(r->bounds.lo), v4_load(r->bounds.hi));
         binning g;
+        size_t boundary = 0;
+        int top = 0;
         bvh_binning_make(&g, &r->centres, count);
-        if (g.axes > 0 && area > 0.0)
-            bvh_find_split(b, r, &g, area, &best);
+        if (g.axes > 0 && area > 0.0) {
+            top = bvh_top_wanted(b, r) &&
+                  bvh_top_cut(b, r, &g, area, &best, &left.centres,
+                              &right.centres, &boundary);
+            if (!top)
+                bvh_find_split(b, r, &g, area, &best);
+        }
         if (count <= MAX_LEAF && !(best.cost < (double)count))
             return make_leaf(b, t, local, r);
         if (best.axis >= 0) {
             left.end = right.begin =
-                bvh_partition(b, r, &g, &best, &left.centres, &right.centres);
+                top ? boundary
+                    : bvh_partition(b, r, &g, &best, &left.centres,
+                                    &right.centres);
             left.side = right.side = !r->side;
             left.bounds = best.left;
             right.bounds = best.right;
@@ -224,23 +234,18 @@ static void convert_all(builder *b, size_t count, fbox *bounds, fbox *centres)
 {
     convert_job jobs[64];
     unsigned n = b->threads, i;
-    vec4f lo[2], hi[2];
     for (i = 0; i < n; i++) {
         jobs[i].b = b;
         jobs[i].begin = count * i / n;
         jobs[i].end = count * (i + 1) / n;
     }
     thread_run_each(n, convert, jobs, sizeof *jobs);
-    lo[0] = lo[1] = v4_infinity();
-    hi[0] = hi[1] = v4_set1(-INFINITY);
+    fbox_empty(bounds);
+    fbox_empty(centres);
     for (i = 0; i < n; i++) {
-        lo[0] = v4_min(v4_load(jobs[i].bounds.lo), lo[0]);
-        hi[0] = v4_max(v4_load(jobs[i].bounds.hi), hi[0]);
-        lo[1] = v4_min(v4_load(jobs[i].centres.lo), lo[1]);
-        hi[1] = v4_max(v4_load(jobs[i].centres.hi), hi[1]);
+        fbox_grow(bounds, &jobs[i].bounds);
+        fbox_grow(centres, &jobs[i].centres);
     }
-    fbox_set(bounds, lo[0], hi[0]);
-    fbox_set(centres, lo[1], hi[1]);
 }
 
 rayo_status rayo_bvh_build_from(rayo_bvh **result, rayo_bvh_box_fn box,
@@ -270,6 +275,7 @@ rayo_status rayo_bvh_build_from(rayo_bvh **result, rayo_bvh_box_fn box,
     }
     memset(&b, 0, sizeof b);
     b.threads = thread_count(threads, count);
+    b.total = count;
     b.box = box;
     b.box_context = context;
     /* count <= UINT32_MAX / 2, so these products fit in size_t only if

@@ -18,6 +18,9 @@
 
 #define BINS 16
 #define MAX_LEAF 8
+/* Nodes this large, and larger than a thread's share of the whole, are
+ * binned and partitioned by every thread at once (bvh_build_top.c). */
+#define TOP_MIN 4096
 /* Right children this large become tasks for other threads. */
 #define SPAWN_MIN 1024
 /* The nodes a task's array first holds (32 bytes each), at most. */
@@ -71,6 +74,7 @@ typedef struct builder {
     rayo_bvh_box_fn box;        /* where the boxes come from */
     const void *box_context;
     unsigned threads;
+    size_t total;               /* primitives in the whole tree */
     pthread_mutex_t lock;
     pthread_cond_t changed;
     task **tasks;               /* every task, by number */
@@ -87,6 +91,20 @@ static inline void fbox_set(fbox *b, vec4f lo, vec4f hi)
 {
     v4_store(b->lo, lo);
     v4_store(b->hi, hi);
+}
+
+/* A box holding nothing: the start of a union. */
+static inline void fbox_empty(fbox *b)
+{
+    fbox_set(b, v4_infinity(), v4_set1(-INFINITY));
+}
+
+/* into grown to hold from, which comes after it: on a tie (-0 and +0)
+ * into's bits stay, as in one pass over both in order. */
+static inline void fbox_grow(fbox *into, const fbox *from)
+{
+    fbox_set(into, v4_min(v4_load(from->lo), v4_load(into->lo)),
+             v4_max(v4_load(from->hi), v4_load(into->hi)));
 }
 
 
@@ -113,16 +131,56 @@ typedef struct split {
 /* How a node of `items` items with those centre bounds is binned. */
 void bvh_binning_make(binning *g, const fbox *centres, size_t items);
 
+/* Items counted and bounded by bin, along each axis. */
+typedef struct bvh_bins {
+    vec4f lo[3][BINS], hi[3][BINS];
+    size_t count[3][BINS];
+} bvh_bins;
+
+/* Empties the first `bins` bins of each axis. */
+void bvh_bins_clear(bvh_bins *s, size_t bins);
+
+/* Adds items [begin, end) to the bins (the same as adding them one by
+ * one after those already there). */
+void bvh_bins_fill(const item *items, size_t begin, size_t end,
+                   const binning *g, bvh_bins *s);
+
+/* Adds the bins of items that come after into's (bvh_build_top.c). */
+void bvh_bins_merge(bvh_bins *into, const bvh_bins *from, size_t bins);
+
+/* The cheapest split the bins allow; best->axis < 0 when there is none.
+ * area: half the node's surface area. */
+void bvh_bins_best(const bvh_bins *s, const binning *g, double area,
+                   split *best);
+
 /* Bins a node's items along every binned axis at once and finds the
  * cheapest split; best->axis < 0 when there is none.  area: half the
  * node's surface area. */
 void bvh_find_split(const builder *b, const span *r, const binning *g,
                     double area, split *best);
 
+/* Moves items [begin, end) of array `side` to the other array, those
+ * going left from left_at on, the others from right_at on, in order;
+ * the centre bounds of each. */
+void bvh_partition_range(builder *b, int side, size_t begin, size_t end,
+                         const binning *g, const split *s, size_t left_at,
+                         size_t right_at, fbox *left_c, fbox *right_c);
+
 /* Moves the node's items to the other item array, the left ones first,
  * in order; the children's centre bounds; returns the boundary. */
 size_t bvh_partition(builder *b, const span *r, const binning *g,
                      const split *s, fbox *left_c, fbox *right_c);
+
+/* ---- a large node on every thread (bvh_build_top.c) -------------------- */
+
+/* Whether node r is cut by every thread at once. */
+int bvh_top_wanted(const builder *b, const span *r);
+
+/* bvh_find_split and then, when it finds a split, bvh_partition, on
+ * b->threads threads, with the same results bit for bit; *boundary the
+ * partition's.  0 when out of memory (nothing done: cut it alone). */
+int bvh_top_cut(builder *b, const span *r, const binning *g, double area,
+                split *best, fbox *left_c, fbox *right_c, size_t *boundary);
 
 /* Bounds and centre bounds of items [begin, end) of array `side`. */
 void bvh_measure(const builder *b, int side, size_t begin, size_t end,

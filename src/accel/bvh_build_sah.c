@@ -46,47 +46,82 @@ static void bins_of(const binning *g, vec4f centre, int32_t k[4])
     v4_to_int(f, k);
 }
 
-/* Bins a node's items along every binned axis at once and finds the
- * cheapest split; best->axis < 0 when there is none.  area: half the
- * node's surface area. */
-void bvh_find_split(const builder *b, const span *r, const binning *g,
-                    double area, split *best)
+/* Inline in bvh_find_split, where the bins are its own: they stay in
+ * registers and on its stack, nothing the items could alias. */
+static inline void bins_clear(bvh_bins *s, size_t bins)
 {
-    const item *items = b->items[r->side];
-    vec4f lo[3][BINS], hi[3][BINS], right_lo[BINS], right_hi[BINS];
-    size_t count[3][BINS], right_count[BINS];
-    float right_area[BINS];
     vec4f inf = v4_infinity(), minus_inf = v4_set1(-INFINITY);
-    size_t i, k, bins = g->count;
+    size_t k;
     int a;
-    best->axis = -1;
-    best->bin = 0;
-    best->cost = INFINITY;
     for (a = 0; a < 3; a++)
         for (k = 0; k < bins; k++) {
-            lo[a][k] = inf;
-            hi[a][k] = minus_inf;
-            count[a][k] = 0;
+            s->lo[a][k] = inf;
+            s->hi[a][k] = minus_inf;
+            s->count[a][k] = 0;
         }
-    for (i = r->begin; i < r->end; i++) {
+}
+
+static inline void bins_fill(const item *items, size_t begin, size_t end,
+                             const binning *g, bvh_bins *s)
+{
+    size_t i;
+    int a;
+    for (i = begin; i < end; i++) {
         vec4f l = v4_load(items[i].lo), h = v4_load(items[i].hi);
         int32_t at[4];
         bins_of(g, v4_add(l, h), at);
         for (a = 0; a < 3; a++) {
-            lo[a][at[a]] = v4_min(l, lo[a][at[a]]);
-            hi[a][at[a]] = v4_max(h, hi[a][at[a]]);
-            count[a][at[a]]++;
+            s->lo[a][at[a]] = v4_min(l, s->lo[a][at[a]]);
+            s->hi[a][at[a]] = v4_max(h, s->hi[a][at[a]]);
+            s->count[a][at[a]]++;
         }
     }
+}
+
+void bvh_bins_clear(bvh_bins *s, size_t bins)
+{
+    bins_clear(s, bins);
+}
+
+void bvh_bins_fill(const item *items, size_t begin, size_t end,
+                   const binning *g, bvh_bins *s)
+{
+    bins_fill(items, begin, end, g, s);
+}
+
+void bvh_bins_merge(bvh_bins *into, const bvh_bins *from, size_t bins)
+{
+    size_t k;
+    int a;
+    for (a = 0; a < 3; a++)
+        for (k = 0; k < bins; k++) {
+            into->lo[a][k] = v4_min(from->lo[a][k], into->lo[a][k]);
+            into->hi[a][k] = v4_max(from->hi[a][k], into->hi[a][k]);
+            into->count[a][k] += from->count[a][k];
+        }
+}
+
+void bvh_bins_best(const bvh_bins *s, const binning *g, double area,
+                   split *best)
+{
+    vec4f right_lo[BINS], right_hi[BINS];
+    size_t right_count[BINS];
+    float right_area[BINS];
+    vec4f inf = v4_infinity(), minus_inf = v4_set1(-INFINITY);
+    size_t k, bins = g->count;
+    int a;
+    best->axis = -1;
+    best->bin = 0;
+    best->cost = INFINITY;
     for (a = 0; a < 3; a++) {
         vec4f acc_lo = inf, acc_hi = minus_inf;
         size_t n = 0;
         if (!g->binned[a])
             continue;
         for (k = bins; k-- > 1;) {
-            acc_lo = v4_min(lo[a][k], acc_lo);
-            acc_hi = v4_max(hi[a][k], acc_hi);
-            n += count[a][k];
+            acc_lo = v4_min(s->lo[a][k], acc_lo);
+            acc_hi = v4_max(s->hi[a][k], acc_hi);
+            n += s->count[a][k];
             right_lo[k] = acc_lo;
             right_hi[k] = acc_hi;
             right_area[k] = v4_half_area(acc_lo, acc_hi);
@@ -97,9 +132,9 @@ void bvh_find_split(const builder *b, const span *r, const binning *g,
         n = 0;
         for (k = 1; k < bins; k++) {
             double cost;
-            acc_lo = v4_min(lo[a][k - 1], acc_lo);
-            acc_hi = v4_max(hi[a][k - 1], acc_hi);
-            n += count[a][k - 1];
+            acc_lo = v4_min(s->lo[a][k - 1], acc_lo);
+            acc_hi = v4_max(s->hi[a][k - 1], acc_hi);
+            n += s->count[a][k - 1];
             if (n == 0 || right_count[k] == 0)
                 continue;
             cost = 1.0 + ((double)v4_half_area(acc_lo, acc_hi) * (double)n +
@@ -117,25 +152,35 @@ void bvh_find_split(const builder *b, const span *r, const binning *g,
     }
 }
 
+void bvh_find_split(const builder *b, const span *r, const binning *g,
+                    double area, split *best)
+{
+    bvh_bins s;
+    bins_clear(&s, g->count);
+    bins_fill(b->items[r->side], r->begin, r->end, g, &s);
+    bvh_bins_best(&s, g, area, best);
+}
+
 /* Writes the items going left, then the others, to the other item array
  * (in their order: the partition is stable), keeping the centre bounds
- * of each side; returns the boundary.  No branch on the side: which way
- * an item goes is as good as random to a branch predictor. */
-size_t bvh_partition(builder *b, const span *r, const binning *g,
-                     const split *s, fbox *left_c, fbox *right_c)
+ * of each side.  No branch on the side: which way an item goes is as
+ * good as random to a branch predictor. */
+void bvh_partition_range(builder *b, int side, size_t begin, size_t end,
+                         const binning *g, const split *s, size_t left_at,
+                         size_t right_at, fbox *left_c, fbox *right_c)
 {
-    const item *from = b->items[r->side];
-    item *to = b->items[!r->side];
-    const uint32_t *from_index = b->index[r->side];
-    uint32_t *to_index = b->index[!r->side];
+    const item *from = b->items[side];
+    item *to = b->items[!side];
+    const uint32_t *from_index = b->index[side];
+    uint32_t *to_index = b->index[!side];
     vec4f lo[2], hi[2];
     size_t next[2], i;
     int a = s->axis;
     lo[0] = lo[1] = v4_infinity();
     hi[0] = hi[1] = v4_set1(-INFINITY);
-    next[0] = r->begin + s->left_count; /* [0]: right, [1]: left */
-    next[1] = r->begin;
-    for (i = r->begin; i < r->end; i++) {
+    next[0] = right_at; /* [0]: right, [1]: left */
+    next[1] = left_at;
+    for (i = begin; i < end; i++) {
         vec4f l = v4_load(from[i].lo), h = v4_load(from[i].hi);
         vec4f c = v4_add(l, h);
         int32_t at[4];
@@ -152,6 +197,13 @@ size_t bvh_partition(builder *b, const span *r, const binning *g,
     }
     fbox_set(left_c, lo[1], hi[1]);
     fbox_set(right_c, lo[0], hi[0]);
+}
+
+size_t bvh_partition(builder *b, const span *r, const binning *g,
+                     const split *s, fbox *left_c, fbox *right_c)
+{
+    bvh_partition_range(b, r->side, r->begin, r->end, g, s, r->begin,
+                        r->begin + s->left_count, left_c, right_c);
     return r->begin + s->left_count;
 }
 

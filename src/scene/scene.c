@@ -327,7 +327,6 @@ rayo_status rayo_scene_add_triangle_normal(rayo_scene *scene, rayo_vec3 a,
     rayo_status status;
     scene_triangle *t;
     rayo_triangle shape;
-    double length = rayo_vec3_length(normal);
     shape.a = a;
     shape.b = b;
     shape.c = c;
@@ -350,13 +349,57 @@ rayo_status rayo_scene_add_triangle_normal(rayo_scene *scene, rayo_vec3 a,
     if (status != RAYO_OK)
         return status;
     t = &scene->triangles[scene->triangle_count];
-    t->shape = shape;
-    t->normal = length > 0.0 ? rayo_vec3_scale(normal, 1.0 / length)
-                             : rayo_triangle_normal(&shape);
+    scene_triangle_set(t, &shape, normal);
     t->object = (uint32_t)scene->object_count;
     t->material = material;
     end_object(scene, RAYO_OBJECT_TRIANGLE, scene->triangle_count++);
     return RAYO_OK;
+}
+
+void scene_triangle_set(scene_triangle *t, const rayo_triangle *shape,
+                        rayo_vec3 normal)
+{
+    double length = rayo_vec3_length(normal);
+    t->shape = *shape;
+    t->normal = length > 0.0 ? rayo_vec3_scale(normal, 1.0 / length)
+                             : rayo_triangle_normal(shape);
+}
+
+rayo_status scene_reserve_triangles(rayo_scene *scene, unsigned material,
+                                    size_t more, rayo_error *err)
+{
+    rayo_status status;
+    if (more == 0)
+        return RAYO_OK;
+    status = check_object(scene, material, more - 1, err);
+    if (status == RAYO_OK)
+        status = reserve(&scene->objects, &scene->object_capacity,
+                         scene->object_count + more,
+                         sizeof *scene->objects, err);
+    if (status == RAYO_OK)
+        status = reserve(&scene->triangles, &scene->triangle_capacity,
+                         scene->triangle_count + more,
+                         sizeof *scene->triangles, err);
+    return status;
+}
+
+void scene_triangles_added(rayo_scene *scene, size_t added,
+                           unsigned material)
+{
+    size_t i;
+    if (added == 0)
+        return;
+    for (i = 0; i < added; i++) {
+        scene_triangle *t = &scene->triangles[scene->triangle_count + i];
+        scene_object *o = &scene->objects[scene->object_count + i];
+        t->object = (uint32_t)(scene->object_count + i);
+        t->material = material;
+        o->kind = (uint32_t)RAYO_OBJECT_TRIANGLE;
+        o->index = (uint32_t)(scene->triangle_count + i);
+    }
+    scene->triangle_count += added;
+    scene->object_count += added;
+    drop_hierarchy(scene);
 }
 
 static rayo_status check_light(const rayo_light *light, rayo_error *err)

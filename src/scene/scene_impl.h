@@ -60,6 +60,24 @@ struct rayo_scene {
     rayo_bvh *bvh; /* the hierarchy, when prepared and worth one */
 };
 
+/* A triangle's corners and its unit normal: the given one scaled, or
+ * the corners' where it is zero (scene.c). */
+void scene_triangle_set(scene_triangle *t, const rayo_triangle *shape,
+                        rayo_vec3 normal);
+
+/* Room for `more` triangles after the scene's last, and as many objects,
+ * exactly (no doubling); fails as adding them one by one would at the
+ * first (a bad material, RAYO_MAX_OBJECTS) without adding any, or
+ * RAYO_ERR_NOMEM.  (scene.c) */
+rayo_status scene_reserve_triangles(rayo_scene *scene, unsigned material,
+                                    size_t more, rayo_error *err);
+
+/* Makes objects of the `added` triangles already set (scene_triangle_set)
+ * after the scene's last, in room reserved: their object numbers and
+ * material, as adding them one by one would.  (scene.c) */
+void scene_triangles_added(rayo_scene *scene, size_t added,
+                           unsigned material);
+
 /* Up to this many spheres and triangles, testing each beats a tree. */
 #define RAYO_SCENE_BRUTE_MAX 12
 

@@ -115,8 +115,9 @@ rayo_status scene_parse_mesh(parser *p)
     free(path);
     if (status != RAYO_OK)
         return status;
-    if (rayo_scene_add_mesh(p->file->scene, &mesh, &placement, material,
-                            &left_out, &inner) != RAYO_OK)
+    if (rayo_scene_add_mesh_threads(p->file->scene, &mesh, &placement,
+                                    material, p->parts, &left_out,
+                                    &inner) != RAYO_OK)
         status = scene_failed(p, &inner);
     p->file->mesh_triangles += mesh.count - left_out;
     p->file->mesh_left_out += left_out;
