@@ -176,10 +176,17 @@ static rayo_status say_vector(rayo_grade_item *item, const vector_case *v,
         far = sphere_t(a, s, b, c, 1);
         if (want == INFINITY && is_infinito(got))
             return RAYO_OK;
+        if (want == INFINITY && v->a[2] < 0)
+            return grade_fail(item, err, "%s returned %.7g for a ray that "
+                                         "meets the sphere only behind its "
+                                         "origin (t < 0); expected INFINITO "
+                                         "(FLT_MAX)",
+                              call, got);
         if (want == INFINITY)
             return grade_fail(item, err, "%s returned %.7g for a ray that "
-                                         "%s; expected INFINITO (FLT_MAX)",
-                              call, got, v->miss);
+                                         "misses the sphere; expected "
+                                         "INFINITO (FLT_MAX)",
+                              call, got);
         if (is_infinito(got))
             return grade_fail(item, err, "%s returned INFINITO for a ray "
                                          "that meets the sphere at t = %.7g",
