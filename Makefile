@@ -167,7 +167,7 @@ HARNESS_BIN := $(patsubst $(HARNESS_DIR)/%.c,$(BUILD)/harness/%,$(sort $(wildcar
 HARNESS_STUDENT_ej1 := tests/grade/correct/main.c
 HARNESS_STUDENT_ej2 := tests/grade/ej2_correct/main.c
 HARNESS_STUDENT_ej3 := tests/grade/ej3_correct/main.c
-HARNESS_LINK_ej3 := -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
+HARNESS_LINK_ej3 := $(shell sed -n 's/"\([^"]*\)",\{0,1\}/\1/gp' src/grade/functions/ej3_link.def)
 check check-valgrind: $(HARNESS_BIN)
 $(BUILD)/harness/ej1: $(HARNESS_STUDENT_ej1)
 $(BUILD)/harness/ej2: $(HARNESS_STUDENT_ej2)

@@ -40,6 +40,7 @@ LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
     --keyword=grade_say:3 --flag=grade_say:3:c-format \
     --keyword=grade_fail:3 --flag=grade_fail:3:c-format \
     --keyword=grade_warn:3 --flag=grade_warn:3:c-format \
+    --keyword=ej3_wrong_line:3 --flag=ej3_wrong_line:3:c-format \
     --add-comments=TRANSLATORS: --add-location=file --no-wrap --sort-by-file \
     --output="$tmp" $files
 if [ -f "$out" ] &&

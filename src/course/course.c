@@ -35,13 +35,17 @@ static const char *const mistake_names[RAYO_MISTAKE_COUNT] = {
     "ka-kd-swapped",
     "unnormalised-normal",
     "unnormalised-light",
+    "last-sphere",
+    "shadow-behind",
+    "no-clamp",
 };
 
 /*
  * EJ2's sentences; NULL where the mistake does not apply.  FIRST_SPHERE
- * does not: in scene 2 the first sphere of the array a ray meets is
- * always the nearest (the student model's image is the correct one, not
- * a pixel differs), so no image can show it.
+ * applies but is not pictured: in scene 2 the first sphere of the array
+ * a ray meets is always the nearest (the student model's image is the
+ * correct one, not a pixel differs), so only the functions criterion's
+ * own scenes show it.
  */
 static const char *const ej2_texts[RAYO_MISTAKE_COUNT] = {
     [RAYO_MISTAKE_NONE] =
@@ -78,9 +82,23 @@ static const char *const ej2_texts[RAYO_MISTAKE_COUNT] = {
         N_("the shading is wrong in brightness: N = (P - C) / r must be the "
         "unit normal in I = IA + II (L.N), with normal_esfera dividing by "
         "the radius"),
+    [RAYO_MISTAKE_FIRST_SPHERE] =
+        N_("a farther sphere covers a nearer one: the pixel shows the sphere "
+        "with the smallest t that distancia_esfera returns, not the first "
+        "one of the array the ray meets"),
+    [RAYO_MISTAKE_LAST_SPHERE] =
+        N_("a farther sphere covers a nearer one: the pixel shows the sphere "
+        "with the smallest t that distancia_esfera returns, not the last "
+        "one of the array the ray meets"),
+    [RAYO_MISTAKE_SHADOW_BEHIND] =
+        N_("spheres behind the point cast shadows: only a sphere hit at "
+        "t > 0 on the ray from P towards L lies between P and the light"),
+    [RAYO_MISTAKE_NO_CLAMP] =
+        N_("the brightest spots go past 255: values of I above 255 must "
+        "become 255"),
 };
 
-/* EJ3's sentences: every mistake applies. */
+/* EJ3's sentences: every mistake applies but EJ2's own. */
 static const char *const ej3_texts[RAYO_MISTAKE_COUNT] = {
     [RAYO_MISTAKE_NONE] =
         N_("no mistake: each pixel is C = Ia ka + sum delta_i Ii kd (Li.N) at "
@@ -133,6 +151,10 @@ static const char *const ej3_texts[RAYO_MISTAKE_COUNT] = {
     [RAYO_MISTAKE_UNNORMALISED_LIGHT] =
         N_("the point lights are too bright: Li = normalise(posicion - P) "
         "must be a unit vector, both in (Li.N) and in the shadow ray"),
+    [RAYO_MISTAKE_LAST_SPHERE] =
+        N_("a farther sphere covers a nearer one: the pixel shows the sphere "
+        "with the smallest t that esfera_distancia returns, not the last "
+        "one of the array the ray meets"),
 };
 
 /* EJ1's only sentence: no mistake is modelled for the sphere. */
@@ -183,6 +205,23 @@ int rayo_course_mistake_applies(rayo_course_exercise exercise,
     return rayo_course_mistake_text(exercise, mistake) != NULL;
 }
 
+int rayo_course_mistake_pictured(rayo_course_exercise exercise,
+                                 rayo_course_mistake mistake)
+{
+    if (!rayo_course_mistake_applies(exercise, mistake))
+        return 0;
+    switch (mistake) {
+    case RAYO_MISTAKE_LAST_SPHERE:
+    case RAYO_MISTAKE_SHADOW_BEHIND:
+    case RAYO_MISTAKE_NO_CLAMP:
+        return 0;
+    case RAYO_MISTAKE_FIRST_SPHERE:
+        return exercise != RAYO_COURSE_EJ2;
+    default:
+        return 1;
+    }
+}
+
 rayo_status rayo_course_options_check(const rayo_course_options *options,
                                       rayo_error *err)
 {
@@ -208,7 +247,7 @@ rayo_status rayo_course_render(rayo_course_exercise exercise,
         return rayo_error_set(err, RAYO_ERR_INVALID,
                               "course: no exercise number %d",
                               (int)exercise);
-    if (!rayo_course_mistake_applies(exercise, options->mistake)) {
+    if (!rayo_course_mistake_pictured(exercise, options->mistake)) {
         const char *name = rayo_course_mistake_name(options->mistake);
         if (name == NULL)
             return rayo_error_set(err, RAYO_ERR_INVALID,

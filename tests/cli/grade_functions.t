@@ -93,7 +93,7 @@ if registered ej2; then
         is "$result" pass "ej2_correct: the functions pass"
 
         grade ej2 "$STUDENTS/ej2_first_sphere/main.c"
-        says "computar_intensidad on 2 spheres, the far one first: (0, 0, 4) r 1, (0, -0.3, 2) r 0.5, luz = (0.5773503, 0.5773503, -0.5773503), along d = (0.04993762, 0, 0.9987524) returned 172, the intensity of the sphere at (0, 0, 4), the first sphere in the array the ray hits, not the nearest (the sphere at (0, -0.3, 2), 232): keep the smallest t" \
+        says "computar_intensidad on 2 spheres, the far one first: (0, 0, 4) r 1, (0, -0.3, 2) r 0.5, luz = (0.5773503, 0.5773503, -0.5773503), along d = (0.04993762, 0, 0.9987524) returned 172, the intensity of the sphere at (0, 0, 4); expected 232, the intensity of the nearest one, at (0, -0.3, 2): a farther sphere covers a nearer one: the pixel shows the sphere with the smallest t that distancia_esfera returns, not the first one of the array the ray meets" \
             "ej2_first_sphere: the nearest sphere, not the first"
 
         grade ej2 "$STUDENTS/ej2_far_root/main.c"
@@ -154,7 +154,7 @@ if registered ej3; then
             "ej3_write_past_end: the write past the block named"
 
         grade ej3 "$STUDENTS/ej3_first_sphere/main.c"
-        grep -q "the first sphere in the array the ray hits, not the nearest" "$TMP/functions"
+        grep -q "not the first one of the array the ray meets" "$TMP/functions"
         ok $? "ej3_first_sphere: the nearest sphere, not the first"
     else
         ok 1 "tests/grade/ej3_* are there (the corpus is tested)"

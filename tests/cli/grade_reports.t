@@ -61,7 +61,8 @@ case_list() {
         printf '%s en\t--lang en --no-valgrind --exercise %s %s\n' "$dir" "$(exercise "$dir")" "$file"
     done
     # Spanish: the criteria's own lines and the summary.
-    for dir in correct segfault rows_flipped ej2_no_shadows ej2_nan_miss ej3_correct ej3_sphere_moved; do
+    for dir in correct segfault rows_flipped ej2_no_shadows ej2_nan_miss ej3_correct ej3_sphere_moved \
+            ej2_first_sphere ej2_wrapped ej3_no_shadows ej3_ka_kd_swapped; do
         printf 'tests/grade/%s es\t--lang es --no-valgrind --exercise %s tests/grade/%s/main.c\n' "$dir" "$(exercise "$dir")" "$dir"
     done
     # Spanish, every criterion's own lines (grade's catalogue outside

@@ -497,10 +497,10 @@ static void test_ej2(void)
                 "computar_intensidad on a sphere (0, 0, 3) r 1 with a "
                 "sphere (0, -2.5, 2) r 0.5 below it and the light straight "
                 "up, luz = (0, 1, 0), along d = (0, 0.2873479, 0.9578263) "
-                "returned 5; expected 178: the sphere at (0, -2.5, 2) is on "
-                "the other side of the point, away from the light, and "
-                "casts no shadow: only a sphere hit at t > 0 from P towards "
-                "L does");
+                "returned 5; expected 178, as the sphere at (0, -2.5, 2) is "
+                "behind the point, away from the light: spheres behind the "
+                "point cast shadows: only a sphere hit at t > 0 on the ray "
+                "from P towards L lies between P and the light");
     expect_fail(RAYO_COURSE_EJ2, "ej2_no_intensidad.c",
                 "computar_intensidad: not defined; the statement asks for "
                 "int computar_intensidad(const float cs[][3], const float "
@@ -578,8 +578,10 @@ static void test_ej3(void)
     expect_fail_ends(RAYO_COURSE_EJ3, "ej3_normal_unnormalised.c",
                      "computar_intensidad on the course's scene 3, along "
                      "d = (-0.546576",
-                     "returned (0.0955, 0, 0); expected (0.202, 0, 0): as "
-                     "if the normal were P - C, not divided by the radius");
+                     "returned (0.0955, 0, 0); expected (0.202, 0, 0): the "
+                     "shading is wrong in brightness: N = (P - C) / r must "
+                     "be the unit normal in (Li.N), the one "
+                     "esfera_distancia returns");
     expect_fail(RAYO_COURSE_EJ3, "ej3_double_vector.c",
                 "vector_t: its member x is not of the statement's type; the "
                 "statement gives typedef struct { float x, y, z; } "

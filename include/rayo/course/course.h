@@ -56,6 +56,12 @@ typedef enum rayo_course_mistake {
     RAYO_MISTAKE_UNNORMALISED_NORMAL, /* N = P - C, not divided by r */
     RAYO_MISTAKE_UNNORMALISED_LIGHT,  /* EJ3: position - P not
                                        normalised */
+    /* Modelled by the functions criterion only (not pictured): */
+    RAYO_MISTAKE_LAST_SPHERE,       /* the last sphere of the array the
+                                       ray hits, not the nearest */
+    RAYO_MISTAKE_SHADOW_BEHIND,     /* EJ2: a sphere behind P (t < 0 on
+                                       the shadow ray) casts a shadow */
+    RAYO_MISTAKE_NO_CLAMP,          /* EJ2: I above 255 returned as is */
     RAYO_MISTAKE_COUNT
 } rayo_course_mistake;
 
@@ -117,9 +123,15 @@ RAYO_API void rayo_course_options_init(rayo_course_options *options);
 RAYO_API rayo_course_exercise rayo_course_find(const char *name);
 RAYO_API const char *rayo_course_name(rayo_course_exercise exercise);
 
-/* 1 when the mistake can happen in (and is modelled for) exercise. */
+/* 1 when the mistake can happen in exercise (and has its sentence):
+   the functions criterion models every one of them. */
 RAYO_API int rayo_course_mistake_applies(rayo_course_exercise exercise,
                                          rayo_course_mistake mistake);
+
+/* 1 when the mistake applies and the image model renders it (a picture
+   can show it): the ones rayo_course_render and compare try. */
+RAYO_API int rayo_course_mistake_pictured(rayo_course_exercise exercise,
+                                          rayo_course_mistake mistake);
 
 /* A short machine name: "no-shadows", "self-shadow", ... */
 RAYO_API const char *rayo_course_mistake_name(rayo_course_mistake mistake);

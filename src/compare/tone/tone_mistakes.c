@@ -243,8 +243,8 @@ static rayo_status try_mistakes(choice *ch, const tone_image *image,
         /* Nothing beats a candidate that leaves no pixel differing. */
         if (tone_choice_unbeatable(ch))
             break;
-        if (!rayo_course_mistake_applies((rayo_course_exercise)course,
-                                         (rayo_course_mistake)m))
+        if (!rayo_course_mistake_pictured((rayo_course_exercise)course,
+                                          (rayo_course_mistake)m))
             continue;
         s = mistake_render(course, m, image, r, ch, &t, &out, err);
         if (s != RAYO_OK)
@@ -310,8 +310,8 @@ static rayo_status hidden_mistake(const tone_image *image, int course,
         return s;
     for (m = RAYO_MISTAKE_NONE + 1; m < RAYO_MISTAKE_COUNT && best > 0;
          m++) {
-        if (!rayo_course_mistake_applies((rayo_course_exercise)course,
-                                         (rayo_course_mistake)m))
+        if (!rayo_course_mistake_pictured((rayo_course_exercise)course,
+                                          (rayo_course_mistake)m))
             continue;
         if ((s = differing_from(image, course, (rayo_course_mistake)m, r, &d,
                                 err)) != RAYO_OK)

@@ -3,8 +3,9 @@
  * harness's log: each vector case against its expected value, and each
  * computar_intensidad against the statement's formula (IA + II L.N,
  * shadows, the nearest sphere) and against what every modelled mistake
- * gives, so that the mistake that agrees is named.  In double
- * precision on the float-rounded arguments (ej2.c).
+ * gives, so that the mistake that agrees is named with the course's
+ * sentence (rayo_course_mistake_text_lang).  In double precision on the
+ * float-rounded arguments (ej2.c).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -14,26 +15,22 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "rayo/course/course.h"
 #include "ej2.h"
 #include "harness_math.h"
 
-/* The mistakes of computar_intensidad that are modelled. */
-enum {
-    M_NONE,
-    M_FIRST_SPHERE,
-    M_LAST_SPHERE,
-    M_FAR_ROOT,
-    M_NO_SHADOWS,
-    M_BEHIND_SHADOWS,
-    M_NO_LN_TEST,
-    M_LIGHT_REVERSED,
-    M_NO_AMBIENT,
-    M_NO_CLAMP,
-    M_WRAPPED,
-    M_UNNORMALISED_NORMAL,
-    M_SELF_SHADOW,
-    M_COUNT
-};
+/* The course's mistakes of computar_intensidad that ej2_shade models,
+   in the order that breaks a tie between two that agree as well. */
+static const rayo_course_mistake modelled[] = {
+    RAYO_MISTAKE_FIRST_SPHERE,      RAYO_MISTAKE_LAST_SPHERE,
+    RAYO_MISTAKE_FAR_ROOT,          RAYO_MISTAKE_NO_SHADOWS,
+    RAYO_MISTAKE_SHADOW_BEHIND,     RAYO_MISTAKE_NO_LN_TEST,
+    RAYO_MISTAKE_LIGHT_REVERSED,    RAYO_MISTAKE_NO_AMBIENT,
+    RAYO_MISTAKE_NO_CLAMP,          RAYO_MISTAKE_WRAPPED,
+    RAYO_MISTAKE_UNNORMALISED_NORMAL, RAYO_MISTAKE_SELF_SHADOW};
+#define MODELLED (sizeof modelled / sizeof modelled[0])
+#define NO_MODEL RAYO_MISTAKE_COUNT /* no modelled mistake agrees */
+#define NAN_INT (RAYO_MISTAKE_COUNT + 1) /* (int) of a NaN */
 
 /* What the model found, for the messages. */
 typedef struct shading {
@@ -67,11 +64,11 @@ static shading ej2_shade(const ray_case *rc, int m)
     size_t i;
     ej2_ray_args(rc, d, light, c, r);
     for (i = 0; i < s->n; i++) {
-        double t = sphere_t(c[i], r[i], o, d, m == M_FAR_ROOT);
+        double t = sphere_t(c[i], r[i], o, d, m == RAYO_MISTAKE_FAR_ROOT);
         if (t == INFINITY)
             continue;
-        if (m == M_FIRST_SPHERE ? out.sphere == (size_t)-1
-                                : m == M_LAST_SPHERE || t < best) {
+        if (m == RAYO_MISTAKE_FIRST_SPHERE ? out.sphere == (size_t)-1
+                                : m == RAYO_MISTAKE_LAST_SPHERE || t < best) {
             best = t;
             out.sphere = i;
         }
@@ -82,31 +79,31 @@ static shading ej2_shade(const ray_case *rc, int m)
     p[0] = best * d[0];
     p[1] = best * d[1];
     p[2] = best * d[2];
-    n[0] = (p[0] - c[i][0]) / (m == M_UNNORMALISED_NORMAL ? 1 : r[i]);
-    n[1] = (p[1] - c[i][1]) / (m == M_UNNORMALISED_NORMAL ? 1 : r[i]);
-    n[2] = (p[2] - c[i][2]) / (m == M_UNNORMALISED_NORMAL ? 1 : r[i]);
-    if (m == M_LIGHT_REVERSED) {
+    n[0] = (p[0] - c[i][0]) / (m == RAYO_MISTAKE_UNNORMALISED_NORMAL ? 1 : r[i]);
+    n[1] = (p[1] - c[i][1]) / (m == RAYO_MISTAKE_UNNORMALISED_NORMAL ? 1 : r[i]);
+    n[2] = (p[2] - c[i][2]) / (m == RAYO_MISTAKE_UNNORMALISED_NORMAL ? 1 : r[i]);
+    if (m == RAYO_MISTAKE_LIGHT_REVERSED) {
         light[0] = -light[0];
         light[1] = -light[1];
         light[2] = -light[2];
     }
     out.ln = dot(light, n);
-    amb = m == M_NO_AMBIENT ? 0 : IA;
+    amb = m == RAYO_MISTAKE_NO_AMBIENT ? 0 : IA;
     out.value = amb;
-    if (out.ln <= 0 && m != M_NO_LN_TEST)
+    if (out.ln <= 0 && m != RAYO_MISTAKE_NO_LN_TEST)
         return out;
-    if (m == M_SELF_SHADOW)
+    if (m == RAYO_MISTAKE_SELF_SHADOW)
         return out;
-    for (i = 0; i < s->n && m != M_NO_SHADOWS; i++)
+    for (i = 0; i < s->n && m != RAYO_MISTAKE_NO_SHADOWS; i++)
         if (i != out.sphere &&
-            occludes(c[i], r[i], p, light, m == M_BEHIND_SHADOWS)) {
+            occludes(c[i], r[i], p, light, m == RAYO_MISTAKE_SHADOW_BEHIND)) {
             out.occluder = i;
             return out;
         }
     value = trunc(amb + II * out.ln);
-    if (m == M_WRAPPED)
+    if (m == RAYO_MISTAKE_WRAPPED)
         value = fmod(value, 256);
-    else if (m != M_NO_CLAMP && value > 255)
+    else if (m != RAYO_MISTAKE_NO_CLAMP && value > 255)
         value = 255;
     out.value = value;
     return out;
@@ -179,10 +176,17 @@ static rayo_status say_vector(rayo_grade_item *item, const vector_case *v,
         far = sphere_t(a, s, b, c, 1);
         if (want == INFINITY && is_infinito(got))
             return RAYO_OK;
+        if (want == INFINITY && v->a[2] < 0)
+            return grade_fail(item, err, "%s returned %.7g for a ray that "
+                                         "meets the sphere only behind its "
+                                         "origin (t < 0); expected INFINITO "
+                                         "(FLT_MAX)",
+                              call, got);
         if (want == INFINITY)
             return grade_fail(item, err, "%s returned %.7g for a ray that "
-                                         "%s; expected INFINITO (FLT_MAX)",
-                              call, got, v->miss);
+                                         "misses the sphere; expected "
+                                         "INFINITO (FLT_MAX)",
+                              call, got);
         if (is_infinito(got))
             return grade_fail(item, err, "%s returned INFINITO for a ray "
                                          "that meets the sphere at t = %.7g",
@@ -200,11 +204,13 @@ static rayo_status say_vector(rayo_grade_item *item, const vector_case *v,
                                          "%.7g: when beta - sqrt(delta) <= 0 "
                                          "the answer is beta + sqrt(delta)",
                               call, got, want);
-        return grade_fail(item, err, "%s returned %.7g; expected %.7g%s",
-                          call, got, want,
-                          dot(b, b) > 0 ? " (the ray starts at o, not at "
-                                          "the origin of coordinates)"
-                                        : "");
+        if (dot(b, b) > 0)
+            return grade_fail(item, err, "%s returned %.7g; expected %.7g "
+                                         "(the ray starts at o, not at the "
+                                         "origin of coordinates)",
+                              call, got, want);
+        return grade_fail(item, err, "%s returned %.7g; expected %.7g", call,
+                          got, want);
     default:
         break;
     }
@@ -257,135 +263,112 @@ static int vector_case_right(const vector_case *v, const double *got)
     }
 }
 
+/* The centre of sphere i, as a vector "(x, y, z)". */
 static const char *sphere_text(const ray_case *rc, size_t i, char *out,
                                size_t room)
 {
     scene whole;
     const scene *s = ej2_scene_of(rc->scene, &whole);
-    snprintf(out, room, "the sphere at (%g, %g, %g)", s->c[i][0],
-             s->c[i][1], s->c[i][2]);
+    snprintf(out, room, "(%g, %g, %g)", s->c[i][0], s->c[i][1], s->c[i][2]);
     return out;
 }
 
-/* One wrong computar_intensidad: the mistake that agrees, named. */
 /* How well each modelled mistake agrees with the results: 2 for each
    case within 1, 3 when exact. */
 static void mistake_scores(const double *got, unsigned *score)
 {
-    unsigned c;
-    int k;
-    for (k = 0; k < M_COUNT; k++)
-        score[k] = 0;
+    unsigned c, i;
+    for (i = 0; i < NO_MODEL; i++)
+        score[i] = 0;
     for (c = 0; c < ej2_ray_case_count; c++)
-        for (k = M_NONE + 1; k < M_COUNT; k++) {
-            double m = ej2_shade(&ej2_ray_cases[c], k).value;
+        for (i = 0; i < MODELLED; i++) {
+            double m = ej2_shade(&ej2_ray_cases[c], modelled[i]).value;
             if (fabs(got[c] - m) <= 1)
-                score[k] += 2 + (fabs(got[c] - m) < 0.5);
+                score[modelled[i]] += 2 + (fabs(got[c] - m) < 0.5);
         }
 }
 
 /* The mistake that gives got for this case (and not the right value)
-   and agrees best with the results overall; M_COUNT when none does. */
+   and agrees best with the results overall; NO_MODEL when none does. */
 static int ray_mistake(const ray_case *rc, double got,
                        const unsigned *score)
 {
-    double want = ej2_shade(rc, M_NONE).value;
-    int k, best = M_COUNT;
-    for (k = M_NONE + 1; k < M_COUNT; k++) {
+    double want = ej2_shade(rc, RAYO_MISTAKE_NONE).value;
+    int best = NO_MODEL;
+    unsigned i;
+    for (i = 0; i < MODELLED; i++) {
+        int k = modelled[i];
         double m = ej2_shade(rc, k).value;
         if (fabs(m - want) > 1 && fabs(got - m) <= 1 &&
-            (best == M_COUNT || score[k] > score[best]))
+            (best == NO_MODEL || score[k] > score[best]))
             best = k;
     }
     return best;
 }
 
+/* The facts of one wrong computar_intensidad, then the course's
+   sentence for mistake k. */
 static rayo_status say_ray(rayo_grade_item *item, const ray_case *rc,
                            const char *call, double got, int k,
                            rayo_error *err)
 {
-    shading want = ej2_shade(rc, M_NONE), m;
+    shading want = ej2_shade(rc, RAYO_MISTAKE_NONE), m;
+    const char *why;
     char x[96], y[96];
-    if (k < M_COUNT) {
-        m = ej2_shade(rc, k);
-        switch (k) {
-        case M_FIRST_SPHERE:
-        case M_LAST_SPHERE:
-            return grade_fail(item, err, "%s returned %g, the intensity of "
-                                         "%s, the %s sphere in the array the "
-                                         "ray hits, not the nearest (%s, "
-                                         "%g): keep the smallest t",
-                              call, got,
-                              sphere_text(rc, m.sphere, x, sizeof x),
-                              k == M_FIRST_SPHERE ? "first" : "last",
-                              sphere_text(rc, want.sphere, y, sizeof y),
-                              want.value);
-        case M_FAR_ROOT:
-            return grade_fail(item, err, "%s returned %g, the intensity at "
-                                         "the far side of %s; expected %g: "
-                                         "the ray meets it first at t = "
-                                         "beta - sqrt(delta)",
-                              call, got,
-                              sphere_text(rc, want.sphere, x, sizeof x),
-                              want.value);
-        case M_NO_SHADOWS:
-            return grade_fail(item, err, "%s returned %g; expected %g: %s "
-                                         "lies between the point and the "
-                                         "light, so only the ambient IA "
-                                         "counts",
-                              call, got, want.value,
-                              sphere_text(rc, want.occluder, x, sizeof x));
-        case M_BEHIND_SHADOWS:
-            return grade_fail(item, err, "%s returned %g; expected %g: %s "
-                                         "is on the other side of the point, "
-                                         "away from the light, and casts no "
-                                         "shadow: only a sphere hit at t > 0 "
-                                         "from P towards L does",
-                              call, got, want.value,
-                              sphere_text(rc, m.occluder, x, sizeof x));
-        case M_NO_LN_TEST:
-            return grade_fail(item, err, "%s returned %g; expected %g: here "
-                                         "L.N = %.3g < 0, the point faces "
-                                         "away from the light and gets only "
-                                         "the ambient IA",
-                              call, got, want.value, want.ln);
-        case M_LIGHT_REVERSED:
-            return grade_fail(item, err, "%s returned %g; expected %g: as "
-                                         "if the light came from -luz; luz "
-                                         "is the direction towards the "
-                                         "light (L.N = %.3g here)",
-                              call, got, want.value, want.ln);
-        case M_NO_AMBIENT:
-            return grade_fail(item, err, "%s returned %g; expected %g: the "
-                                         "ambient IA = 5 is missing "
-                                         "(I = IA + II (L.N))",
-                              call, got, want.value);
-        case M_WRAPPED:
-            return grade_fail(item, err, "%s returned %g, which is %g "
-                                         "wrapped around 256; expected 255: "
-                                         "values above 255 return 255",
-                              call, got, ej2_shade(rc, M_NO_CLAMP).value);
-        case M_NO_CLAMP:
-            return grade_fail(item, err, "%s returned %g; expected 255: "
-                                         "IA + II (L.N) = %g here, and "
-                                         "values above 255 return 255",
-                              call, got, ej2_shade(rc, M_NO_CLAMP).value);
-        case M_UNNORMALISED_NORMAL:
-            return grade_fail(item, err, "%s returned %g; expected %g: as "
-                                         "if the normal were P - C, not "
-                                         "divided by the radius",
-                              call, got, want.value);
-        default:
-            return grade_fail(item, err, "%s returned %g; expected %g: a "
-                                         "shadow where no other sphere "
-                                         "blocks the light; does the shadow "
-                                         "test skip the sphere the point is "
-                                         "on?",
-                              call, got, want.value);
-        }
+    if (k >= NO_MODEL)
+        return grade_fail(item, err, "%s returned %g; expected %g", call, got,
+                          want.value);
+    m = ej2_shade(rc, k);
+    why = rayo_course_mistake_text_lang(RAYO_COURSE_EJ2,
+                                        (rayo_course_mistake)k,
+                                        rayo_error_lang(err));
+    switch (k) {
+    case RAYO_MISTAKE_FIRST_SPHERE:
+    case RAYO_MISTAKE_LAST_SPHERE:
+        return grade_fail(item, err, "%s returned %g, the intensity of the "
+                                     "sphere at %s; expected %g, the "
+                                     "intensity of the nearest one, at %s: "
+                                     "%s",
+                          call, got, sphere_text(rc, m.sphere, x, sizeof x),
+                          want.value,
+                          sphere_text(rc, want.sphere, y, sizeof y), why);
+    case RAYO_MISTAKE_FAR_ROOT:
+        return grade_fail(item, err, "%s returned %g, the intensity at the "
+                                     "far side of the sphere at %s; "
+                                     "expected %g: %s",
+                          call, got,
+                          sphere_text(rc, want.sphere, x, sizeof x),
+                          want.value, why);
+    case RAYO_MISTAKE_NO_SHADOWS:
+        return grade_fail(item, err, "%s returned %g; expected %g, as the "
+                                     "sphere at %s lies between the point "
+                                     "and the light: %s",
+                          call, got, want.value,
+                          sphere_text(rc, want.occluder, x, sizeof x), why);
+    case RAYO_MISTAKE_SHADOW_BEHIND:
+        return grade_fail(item, err, "%s returned %g; expected %g, as the "
+                                     "sphere at %s is behind the point, away "
+                                     "from the light: %s",
+                          call, got, want.value,
+                          sphere_text(rc, m.occluder, x, sizeof x), why);
+    case RAYO_MISTAKE_NO_LN_TEST:
+    case RAYO_MISTAKE_LIGHT_REVERSED:
+        return grade_fail(item, err, "%s returned %g; expected %g, with "
+                                     "L.N = %.3g here: %s",
+                          call, got, want.value, want.ln, why);
+    case RAYO_MISTAKE_WRAPPED:
+        return grade_fail(item, err, "%s returned %g, which is %g wrapped "
+                                     "around 256; expected 255: %s",
+                          call, got,
+                          ej2_shade(rc, RAYO_MISTAKE_NO_CLAMP).value, why);
+    case RAYO_MISTAKE_NO_CLAMP:
+        return grade_fail(item, err, "%s returned %g, which is IA + II (L.N) "
+                                     "here; expected 255: %s",
+                          call, got, why);
+    default:
+        return grade_fail(item, err, "%s returned %g; expected %g: %s", call,
+                          got, want.value, why);
     }
-    return grade_fail(item, err, "%s returned %g; expected %g", call, got,
-                      want.value);
 }
 
 /* ---- judging ---- */
@@ -458,7 +441,7 @@ rayo_status ej2_judge(grade_context *ctx, unsigned i, const char *log,
     }
     if (i == F_INTENSIDAD) {
         double got[ej2_ray_case_count];
-        unsigned score[M_COUNT];
+        unsigned score[NO_MODEL];
         int mistake;
         for (k = 0; k < ej2_ray_case_count; k++)
             if (harness_result(log, ej2_functions[i].name, k, &got[k], 1) != 1)
@@ -467,12 +450,12 @@ rayo_status ej2_judge(grade_context *ctx, unsigned i, const char *log,
         for (k = 0; k < ej2_ray_case_count; k++) {
             const ray_case *rc = &ej2_ray_cases[k];
             cases++;
-            if (fabs(got[k] - ej2_shade(rc, M_NONE).value) <= 1)
+            if (fabs(got[k] - ej2_shade(rc, RAYO_MISTAKE_NONE).value) <= 1)
                 continue;
             wrong++;
             /* One line per mistake recognised; the same one again
                counted. */
-            mistake = got[k] == HARNESS_INT_MIN ? M_COUNT + 1
+            mistake = got[k] == HARNESS_INT_MIN ? NAN_INT
                                                 : ray_mistake(rc, got[k],
                                                               score);
             if (said & (1u << mistake) || wrong > SAID_PER_FUNCTION + 2) {
@@ -481,7 +464,7 @@ rayo_status ej2_judge(grade_context *ctx, unsigned i, const char *log,
             }
             said |= 1u << mistake;
             ej2_describe_ray_case(k, call, sizeof call);
-            if (mistake == M_COUNT + 1)
+            if (mistake == NAN_INT)
                 status = grade_fail(item, err, "%s returned -2147483648, "
                                                "what a NaN (not a number) "
                                                "or a value past the int "

@@ -315,8 +315,10 @@ static void describe(const char *name, unsigned k, char *out, size_t room)
     }
 }
 
+/* The link words, shared with the Makefile's HARNESS_LINK_ej3. */
 static const char *const wrap_words[] = {
-    "-Wl,--wrap=malloc", "-Wl,--wrap=calloc", "-Wl,--wrap=realloc"};
+#include "ej3_link.def"
+};
 
 /* What valgrind's frames in these functions mean. */
 static const functions_owner owners[] = {

@@ -11,6 +11,7 @@
 
 #include <stddef.h>
 
+#include "rayo/course/course.h"
 #include "harness.h"
 #include "table.h"
 
@@ -75,24 +76,11 @@ typedef struct ray_case {
     double d[3]; /* normalised here */
 } ray_case;
 
-enum {
-    M_NONE,
-    M_FIRST_SPHERE,
-    M_LAST_SPHERE,
-    M_FAR_ROOT,
-    M_NO_SHADOWS,
-    M_BEYOND_LIGHT,
-    M_NO_LN_TEST,
-    M_LIGHT_REVERSED,
-    M_NO_AMBIENT,
-    M_AMBIENT_NOT_ABSORBED,
-    M_KA_KD_SWAPPED,
-    M_POINT_AS_DIRECTIONAL,
-    M_UNNORMALISED_LIGHT,
-    M_UNNORMALISED_NORMAL,
-    M_SELF_SHADOW,
-    M_COUNT
-};
+/* ej3_shade's m: one of the course's mistakes (rayo_course_mistake),
+   or the reading of the statement in which a sphere beyond a point
+   light casts a shadow, which is accepted and named (not a mistake). */
+#define EJ3_BEYOND_LIGHT RAYO_MISTAKE_COUNT
+#define EJ3_NO_MODEL (RAYO_MISTAKE_COUNT + 1) /* none agrees */
 
 typedef struct shading {
     double c[3];
@@ -133,7 +121,8 @@ int ej3_blocks(const sphere *s, const double *p, const double *l,
 shading ej3_shade(const ray_case *rc, int m);
 int ej3_same_colour(const double *got, const double *want);
 
-/* ej3_judge.c and ej3_rays.c. */
+/* ej3_judge.c and ej3_rays.c; ej3_wrong_line's format is a catalog
+   message (an xgettext keyword), looked up in err's language. */
 rayo_status ej3_wrong_line(judging *j, rayo_error *err, const char *format,
                            ...) GRADE_PRINTF(3, 4);
 rayo_status ej3_judge_rays(judging *j, rayo_error *err);

@@ -14,6 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "rayo/lang.h"
+
 #include "ej3.h"
 #include "harness_math.h"
 
@@ -38,7 +40,7 @@ rayo_status ej3_wrong_line(judging *j, rayo_error *err,
         return RAYO_OK;
     }
     va_start(args, format);
-    vsnprintf(line, sizeof line, format, args);
+    rayo_lang_vformat(rayo_error_lang(err), line, sizeof line, format, args);
     va_end(args);
     return grade_fail(j->item, err, "%s", line);
 }
@@ -149,13 +151,16 @@ static rayo_status judge_value(judging *j, unsigned k, rayo_error *err)
         if (want[0] == INFINITY) {
             if (is_infinito(got[0]))
                 return RAYO_OK;
+            if (a[2] < 0)
+                return ej3_wrong_line(j, err,
+                                      "%s returned %.7g for a ray that meets "
+                                      "the sphere only behind its origin "
+                                      "(t < 0); expected INFINITO (FLT_MAX)",
+                                      call, got[0]);
             return ej3_wrong_line(j, err,
-                                  "%s returned %.7g for a ray that %s; "
-                                      "expected INFINITO (FLT_MAX)",
-                              call, got[0],
-                              a[2] < 0 ? "meets the sphere only behind "
-                                         "its origin (t < 0)"
-                                       : "misses the sphere");
+                                  "%s returned %.7g for a ray that misses "
+                                  "the sphere; expected INFINITO (FLT_MAX)",
+                                  call, got[0]);
         }
         if (is_infinito(got[0]))
             return ej3_wrong_line(j, err,
@@ -453,9 +458,12 @@ rayo_status ej3_judge(grade_context *ctx, unsigned f, const char *log,
     if (status == RAYO_ERR_CANCELLED)
         return RAYO_OK;
     if (status == RAYO_OK && j.wrong == 0)
-        status = grade_say(j.item, err, "%s: right on %u known input%s",
-                           ej3_functions[f].name, j.cases,
-                           j.cases == 1 ? "" : "s");
+        status = grade_say(j.item, err,
+                           rayo_ngettext(rayo_error_lang(err),
+                                         "%s: right on %u known input",
+                                         "%s: right on %u known inputs",
+                                         j.cases),
+                           ej3_functions[f].name, j.cases);
     else if (status == RAYO_OK && j.unsaid > 0)
         status = grade_fail(j.item, err, "%s: wrong on %u more of its %u "
                                          "known inputs",

@@ -3,7 +3,8 @@
  * precision on the float-rounded arguments its harness passes: a
  * case's arguments, a ray's scene (the course's scene 3 from the
  * course module), and computar_intensidad's colour as the statement's
- * formulas give it and as each modelled mistake (ej3.h's M_) gives it.
+ * formulas give it and as each modelled mistake (the course's
+ * rayo_course_mistake) gives it.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -119,11 +120,11 @@ shading ej3_shade(const ray_case *rc, int m)
     out.sphere = out.occluder = (size_t)-1;
     ej3_ray_scene(rc, &s, d);
     for (i = 0; i < s.spheres; i++) {
-        double t = sphere_t(s.s[i].c, s.s[i].r, o, d, m == M_FAR_ROOT);
+        double t = sphere_t(s.s[i].c, s.s[i].r, o, d, m == RAYO_MISTAKE_FAR_ROOT);
         if (t == INFINITY)
             continue;
-        if (m == M_FIRST_SPHERE ? out.sphere == (size_t)-1
-                                : m == M_LAST_SPHERE || t < best) {
+        if (m == RAYO_MISTAKE_FIRST_SPHERE ? out.sphere == (size_t)-1
+                                : m == RAYO_MISTAKE_LAST_SPHERE || t < best) {
             best = t;
             out.sphere = i;
         }
@@ -134,12 +135,12 @@ shading ej3_shade(const ray_case *rc, int m)
     for (j = 0; j < 3; j++) {
         p[j] = best * d[j];
         n[j] = (p[j] - s.s[i].c[j]) /
-               (m == M_UNNORMALISED_NORMAL ? 1 : s.s[i].r);
+               (m == RAYO_MISTAKE_UNNORMALISED_NORMAL ? 1 : s.s[i].r);
     }
-    ka = m == M_KA_KD_SWAPPED ? s.s[i].kd : s.s[i].ka;
-    kd = m == M_KA_KD_SWAPPED ? s.s[i].ka : s.s[i].kd;
+    ka = m == RAYO_MISTAKE_KA_KD_SWAPPED ? s.s[i].kd : s.s[i].ka;
+    kd = m == RAYO_MISTAKE_KA_KD_SWAPPED ? s.s[i].ka : s.s[i].kd;
     for (j = 0; j < 3; j++)
-        c[j] = m == M_NO_AMBIENT || m == M_AMBIENT_NOT_ABSORBED
+        c[j] = m == RAYO_MISTAKE_NO_AMBIENT || m == RAYO_MISTAKE_AMBIENT_NOT_ABSORBED
                    ? 0
                    : s.ambient[j] * ka;
     for (j = 0; j < s.lights; j++) {
@@ -147,28 +148,28 @@ shading ej3_shade(const ray_case *rc, int m)
         double l[3], shadow_l[3], limit = INFINITY, ln;
         size_t k;
         int shadowed = 0;
-        if (lamp->point && m == M_POINT_AS_DIRECTIONAL) {
+        if (lamp->point && m == RAYO_MISTAKE_POINT_AS_DIRECTIONAL) {
             unit(lamp->v, l);
         } else if (lamp->point) {
             ej3_sub(lamp->v, p, l);
             limit = sqrt(dot(l, l));
-            if (m != M_UNNORMALISED_LIGHT)
+            if (m != RAYO_MISTAKE_UNNORMALISED_LIGHT)
                 unit(l, l);
         } else {
             memcpy(l, lamp->v, sizeof l);
         }
-        if (m == M_LIGHT_REVERSED)
+        if (m == RAYO_MISTAKE_LIGHT_REVERSED)
             for (k = 0; k < 3; k++)
                 l[k] = -l[k];
         unit(l, shadow_l);
-        if (m == M_BEYOND_LIGHT || m == M_POINT_AS_DIRECTIONAL)
+        if (m == EJ3_BEYOND_LIGHT || m == RAYO_MISTAKE_POINT_AS_DIRECTIONAL)
             limit = INFINITY;
         ln = dot(l, n);
-        if (ln <= 0 && m != M_NO_LN_TEST)
+        if (ln <= 0 && m != RAYO_MISTAKE_NO_LN_TEST)
             continue;
-        if (m == M_SELF_SHADOW)
+        if (m == RAYO_MISTAKE_SELF_SHADOW)
             continue;
-        for (k = 0; k < s.spheres && m != M_NO_SHADOWS && !shadowed; k++)
+        for (k = 0; k < s.spheres && m != RAYO_MISTAKE_NO_SHADOWS && !shadowed; k++)
             if (k != i && ej3_blocks(&s.s[k], p, shadow_l, limit)) {
                 shadowed = 1;
                 out.occluder = k;
@@ -180,7 +181,7 @@ shading ej3_shade(const ray_case *rc, int m)
     }
     for (j = 0; j < 3; j++) {
         out.c[j] = c[j] * s.s[i].color[j];
-        if (m == M_AMBIENT_NOT_ABSORBED)
+        if (m == RAYO_MISTAKE_AMBIENT_NOT_ABSORBED)
             out.c[j] += s.ambient[j] * ka;
     }
     return out;

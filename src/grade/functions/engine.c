@@ -15,19 +15,47 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "rayo/lang.h"
+
 #include "harness.h"
 #include "table.h"
 
+/* The words of a translated format between its first conversion (the
+   function's name) and the next one: ": right on " in English. */
+static size_t between(const char *format, const char **words)
+{
+    const char *start = strstr(format, "%s"), *end;
+    if (start == NULL)
+        return 0;
+    start += 2;
+    end = strchr(start, '%');
+    *words = start;
+    return end != NULL ? (size_t)(end - start) : 0;
+}
+
 /* A line that reports a function right ("norma: right on 4 known
    inputs", "esfera_destruir: called on what esfera_crear returned"),
-   not a finding: "NAME: " and then one of those. */
-static int says_right(const char *line)
+   in the language of the report, not a finding: "NAME" and then the
+   words of one of those formats; *cases receives the count of the
+   first (0 for the second). */
+static int says_right(rayo_lang lang, const char *line, unsigned *cases)
 {
-    const char *colon = strstr(line, ": ");
+    const char *colon = strstr(line, ": "), *words;
+    size_t n;
     if (colon == NULL || strchr(line, ' ') <= colon)
         return 0;
-    return strncmp(colon, ": right on ", 11) == 0 ||
-           strncmp(colon, ": called on what ", 17) == 0;
+    n = between(rayo_gettext(lang, "%s: right on %u known inputs"), &words);
+    if (n > 0 && strncmp(colon, words, n) == 0) {
+        if (cases != NULL)
+            *cases = (unsigned)strtoul(colon + n, NULL, 10);
+        return 1;
+    }
+    n = between(rayo_gettext(lang, "%s: called on what %s returned "
+                                   "(valgrind checks what it frees)"),
+                &words);
+    if (cases != NULL)
+        *cases = 0;
+    return n > 0 && strncmp(colon, words, n) == 0;
 }
 
 /* The lines that say a function was right become one, the last:
@@ -35,23 +63,24 @@ static int says_right(const char *line)
    esfera_destruir (called on what esfera_crear returned)", so that the
    findings and notes come first and a long list of passing functions
    takes one line.  Left as they are when memory runs out. */
-static void sum_up(rayo_grade_item *item)
+static void sum_up(rayo_lang lang, rayo_grade_item *item)
 {
     harness_text t = {NULL, 0, 0, 0};
     size_t i, n = 0, right = 0;
     for (i = 0; i < item->line_count; i++)
-        right += says_right(item->lines[i]) != 0;
+        right += says_right(lang, item->lines[i], NULL) != 0;
     if (right == 0)
         return;
-    harness_append(&t, "right on all their known inputs: ");
+    harness_append(&t, "%s",
+                   rayo_gettext(lang, "right on all their known inputs: "));
     for (i = 0; i < item->line_count; i++) {
         const char *line = item->lines[i], *colon = strstr(line, ": ");
         unsigned cases;
-        if (!says_right(line))
+        if (!says_right(lang, line, &cases))
             continue;
         harness_append(&t, "%s%.*s", t.data[t.length - 2] == ':' ? "" : ", ",
                        (int)(colon - line), line);
-        if (sscanf(colon, ": right on %u", &cases) == 1) {
+        if (cases > 0) {
             harness_append(&t, " (%u)", cases);
         } else {
             const char *what = colon + 2;
@@ -69,7 +98,7 @@ static void sum_up(rayo_grade_item *item)
         return;
     }
     for (i = 0; i < item->line_count; i++) {
-        if (says_right(item->lines[i]))
+        if (says_right(lang, item->lines[i], NULL))
             free(item->lines[i]);
         else
             item->lines[n++] = item->lines[i];
@@ -79,7 +108,7 @@ static void sum_up(rayo_grade_item *item)
 }
 
 /* Stable: findings first, then the functions that were right. */
-static void findings_first(rayo_grade_item *item)
+static void findings_first(rayo_lang lang, rayo_grade_item *item)
 {
     size_t i, n = 0, r;
     char **right;
@@ -90,7 +119,7 @@ static void findings_first(rayo_grade_item *item)
         return; /* the order is a courtesy, not worth failing for */
     r = 0;
     for (i = 0; i < item->line_count; i++) {
-        if (says_right(item->lines[i]))
+        if (says_right(lang, item->lines[i], NULL))
             right[r++] = item->lines[i];
         else
             item->lines[n++] = item->lines[i];
@@ -260,8 +289,8 @@ rayo_status grade_step_functions(grade_context *ctx, rayo_error *err)
     if (status == RAYO_OK && log != NULL)
         status = harness_judge_ending(ctx, log, &outcome, ex->describe, err);
     if (status == RAYO_OK) {
-        findings_first(item);
-        sum_up(item);
+        findings_first(rayo_error_lang(err), item);
+        sum_up(rayo_error_lang(err), item);
     }
     free(log);
     free(reasons);

@@ -24,6 +24,8 @@
 #include <sys/random.h>
 #endif
 
+#include "rayo/lang.h"
+
 #include "harness.h"
 
 #define LOG_LIMIT (1u << 20)
@@ -222,13 +224,19 @@ rayo_status harness_run(grade_context *ctx, const char *calls, char **log,
         outcome->status == 0)
         outcome->status = HARNESS_EXITED_EARLY;
     if (status == RAYO_OK && forged > 0)
-        status = grade_fail(item, err, "the program wrote into the grader's "
-                                       "channel: %u line%s posing as the "
-                                       "harness's results (the first: "
-                                       "\"%s\"); a function's results come "
-                                       "from what it returns, never from "
-                                       "what it prints",
-                            forged, forged == 1 ? "" : "s", first);
+        status = grade_fail(
+            item, err,
+            rayo_ngettext(rayo_error_lang(err),
+                          "the program wrote into the grader's channel: %u "
+                          "line posing as the harness's results (the "
+                          "first: \"%s\"); a function's results come from "
+                          "what it returns, never from what it prints",
+                          "the program wrote into the grader's channel: %u "
+                          "lines posing as the harness's results (the "
+                          "first: \"%s\"); a function's results come from "
+                          "what it returns, never from what it prints",
+                          forged),
+            forged, first);
     grade_captured_free(&got);
     free(argv[0]);
     return status;
