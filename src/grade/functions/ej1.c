@@ -183,8 +183,10 @@ static rayo_status judge_function(grade_context *ctx,
     return status;
 }
 
-static void describe(const char *name, unsigned c, char *out, size_t room)
+static void describe(const char *name, unsigned c, rayo_lang lang,
+                     char *out, size_t room)
 {
+    (void)lang; /* a call of C, the same in every language */
     size_t i;
     for (i = 0; i < FUNCTION_COUNT; i++)
         if (strcmp(functions[i].name, name) == 0 &&

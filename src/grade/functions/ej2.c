@@ -20,8 +20,12 @@
 
 #include "rayo/course/course_scene.h"
 #include "ej2.h"
+#include "rayo/lang.h"
 #include "harness_math.h"
 #include "harness_sources.h"
+
+/* Marks a message for xgettext where it is data; looked up where used. */
+#define N_(text) text
 
 
 
@@ -82,35 +86,35 @@ const size_t ej2_vector_case_count =
 
 
 const scene ej2_scenes[] = {
-    {"the course's scene 2", 0, {{0, 0, 0}}, {0}, {0, 0, 0}},
+    {N_("the course's scene 2"), 0, {{0, 0, 0}}, {0}, {0, 0, 0}},
     /* Reversed order: the far sphere first. */
-    {"2 spheres, the far one first: (0, 0, 4) r 1, (0, -0.3, 2) r 0.5",
+    {N_("2 spheres, the far one first: (0, 0, 4) r 1, (0, -0.3, 2) r 0.5"),
      2,
      {{0, 0, 4}, {0, -0.3, 2}},
      {1, 0.5},
      {1, 1, -1}},
     /* The same two in the other order. */
-    {"2 spheres, the near one first: (0, -0.3, 2) r 0.5, (0, 0, 4) r 1",
+    {N_("2 spheres, the near one first: (0, -0.3, 2) r 0.5, (0, 0, 4) r 1"),
      2,
      {{0, -0.3, 2}, {0, 0, 4}},
      {0.5, 1},
      {1, 1, -1}},
     /* A sphere between the point and the light. */
-    {"a sphere (0, 0, 3) r 1 with a sphere (0, 2.5, 2) r 0.5 above it "
-     "and the light straight up",
+    {N_("a sphere (0, 0, 3) r 1 with a sphere (0, 2.5, 2) r 0.5 above it "
+     "and the light straight up"),
      2,
      {{0, 0, 3}, {0, 2.5, 2}},
      {1, 0.5},
      {0, 1, 0}},
     /* A sphere on the other side of the point, away from the light. */
-    {"a sphere (0, 0, 3) r 1 with a sphere (0, -2.5, 2) r 0.5 below it "
-     "and the light straight up",
+    {N_("a sphere (0, 0, 3) r 1 with a sphere (0, -2.5, 2) r 0.5 below it "
+     "and the light straight up"),
      2,
      {{0, 0, 3}, {0, -2.5, 2}},
      {1, 0.5},
      {0, 1, 0}},
     /* The light behind the camera, straight at the point: L.N = 1. */
-    {"a sphere (0, 0, 3) r 1 with the light towards the camera (0, 0, -1)",
+    {N_("a sphere (0, 0, 3) r 1 with the light towards the camera (0, 0, -1)"),
      1,
      {{0, 0, 3}},
      {1},
@@ -268,22 +272,25 @@ void ej2_describe_vector_case(unsigned k, char *out, size_t room)
     }
 }
 
-void ej2_describe_ray_case(unsigned k, char *out, size_t room)
+void ej2_describe_ray_case(unsigned k, rayo_lang lang, char *out,
+                           size_t room)
 {
     double d[3], light[3], c[MAX_SPHERES][3], r[MAX_SPHERES];
     char x[64], y[64];
     ej2_ray_args(&ej2_ray_cases[k], d, light, c, r);
-    snprintf(out, room, "computar_intensidad on %s, luz = %s, along d = %s",
-             ej2_scenes[ej2_ray_cases[k].scene].what, vec_text(light, x,
-                                                               sizeof x),
-             vec_text(d, y, sizeof y));
+    snprintf(out, room,
+             rayo_gettext(lang,
+                          "computar_intensidad on %s, luz = %s, along d = %s"),
+             rayo_gettext(lang, ej2_scenes[ej2_ray_cases[k].scene].what),
+             vec_text(light, x, sizeof x), vec_text(d, y, sizeof y));
 }
 
-static void describe(const char *name, unsigned k, char *out, size_t room)
+static void describe(const char *name, unsigned k, rayo_lang lang,
+                     char *out, size_t room)
 {
     if (strcmp(name, "computar_intensidad") == 0) {
         if (k < ej2_ray_case_count)
-            ej2_describe_ray_case(k, out, room);
+            ej2_describe_ray_case(k, lang, out, room);
         return;
     }
     if (k < ej2_vector_case_count &&

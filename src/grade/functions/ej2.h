@@ -70,7 +70,8 @@ const scene *ej2_scene_of(unsigned index, scene *whole);
 void ej2_ray_args(const ray_case *rc, double *d, double *light,
                   double c[][3], double *r);
 void ej2_describe_vector_case(unsigned k, char *out, size_t room);
-void ej2_describe_ray_case(unsigned k, char *out, size_t room);
+void ej2_describe_ray_case(unsigned k, rayo_lang lang, char *out,
+                           size_t room);
 
 /* ej2_judge.c: judges function f from the log. */
 rayo_status ej2_judge(grade_context *ctx, unsigned i, const char *log,

@@ -463,7 +463,7 @@ rayo_status ej2_judge(grade_context *ctx, unsigned i, const char *log,
                 continue;
             }
             said |= 1u << mistake;
-            ej2_describe_ray_case(k, call, sizeof call);
+            ej2_describe_ray_case(k, rayo_error_lang(err), call, sizeof call);
             if (mistake == NAN_INT)
                 status = grade_fail(item, err, "%s returned -2147483648, "
                                                "what a NaN (not a number) "

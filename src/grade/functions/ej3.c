@@ -21,8 +21,12 @@
 #include <string.h>
 
 #include "ej3.h"
+#include "rayo/lang.h"
 #include "harness_math.h"
 #include "harness_sources.h"
+
+/* Marks a message for xgettext where it is data; looked up where used. */
+#define N_(text) text
 
 /* ---- the statement's functions ---- */
 
@@ -131,44 +135,44 @@ const size_t ej3_value_case_count =
    ej3_scene_of. */
 
 const scene ej3_scenes[] = {
-    {"the course's scene 3", 0, 0, {{{0, 0, 0}, 0, {0, 0, 0}, 0, 0}},
+    {N_("the course's scene 3"), 0, 0, {{{0, 0, 0}, 0, {0, 0, 0}, 0, 0}},
      {{{0, 0, 0}, {0, 0, 0}, 0}}, {0, 0, 0}},
-    {"a red sphere (0, 0, 3) r 1 first in the array, a white one "
-     "(0, 0, 1) r 0.2 second, a directional light towards the camera",
+    {N_("a red sphere (0, 0, 3) r 1 first in the array, a white one "
+     "(0, 0, 1) r 0.2 second, a directional light towards the camera"),
      2,
      1,
      {{{0, 0, 3}, 1, {1, 0, 0}, 1, 1}, {{0, 0, 1}, 0.2, WHITE, 1, 1}},
      {{{0, 0, -1}, {0.5, 0.5, 0.5}, 0}},
      {0.1, 0.1, 0.1}},
-    {"a white sphere (0, 0, 1) r 0.2 first in the array, a red one "
-     "(0, 0, 3) r 1 second, a directional light towards the camera",
+    {N_("a white sphere (0, 0, 1) r 0.2 first in the array, a red one "
+     "(0, 0, 3) r 1 second, a directional light towards the camera"),
      2,
      1,
      {{{0, 0, 1}, 0.2, WHITE, 1, 1}, {{0, 0, 3}, 1, {1, 0, 0}, 1, 1}},
      {{{0, 0, -1}, {0.5, 0.5, 0.5}, 0}},
      {0.1, 0.1, 0.1}},
-    {"a sphere (0, 0, 3) r 1, a point light at (0, 0, 1) and a sphere "
-     "(0, 0, -2) r 0.5 beyond the light",
+    {N_("a sphere (0, 0, 3) r 1, a point light at (0, 0, 1) and a sphere "
+     "(0, 0, -2) r 0.5 beyond the light"),
      2,
      1,
      {{{0, 0, 3}, 1, WHITE, 1, 1}, {{0, 0, -2}, 0.5, WHITE, 1, 1}},
      {{{0, 0, 1}, {0.5, 0.5, 0.5}, 1}},
      {0.1, 0.1, 0.1}},
-    {"a sphere (0, 0, 3) r 1, a point light at (0, 3, 2) and a sphere "
-     "(0, 1.87, 2.13) r 0.3 between them",
+    {N_("a sphere (0, 0, 3) r 1, a point light at (0, 3, 2) and a sphere "
+     "(0, 1.87, 2.13) r 0.3 between them"),
      2,
      1,
      {{{0, 0, 3}, 1, WHITE, 1, 1}, {{0, 1.87, 2.13}, 0.3, WHITE, 1, 1}},
      {{{0, 3, 2}, {0.5, 0.5, 0.5}, 1}},
      {0.1, 0.1, 0.1}},
-    {"a sphere (0, 0, 3) r 1 of colour (1, 0.5, 0.25), ka 0.5, kd 0.8, a "
-     "light straight up and a point light below at (0, -5, 2)",
+    {N_("a sphere (0, 0, 3) r 1 of colour (1, 0.5, 0.25), ka 0.5, kd 0.8, a "
+     "light straight up and a point light below at (0, -5, 2)"),
      1,
      2,
      {{{0, 0, 3}, 1, {1, 0.5, 0.25}, 0.5, 0.8}},
      {{{0, 1, 0}, {0.4, 0.4, 0.4}, 0}, {{0, -5, 2}, {0.6, 0.3, 0}, 1}},
      {0.1, 0.2, 0.3}},
-    {"a sphere (0, 0, 3) r 1 and a point light at (0, 4, 0)",
+    {N_("a sphere (0, 0, 3) r 1 and a point light at (0, 4, 0)"),
      1,
      1,
      {{{0, 0, 3}, 1, WHITE, 1, 1}},
@@ -243,7 +247,8 @@ static void write_calls(harness_text *t, const int *usable)
 
 /* ---- what the student reads ---- */
 
-void ej3_describe_value_case(unsigned k, char *out, size_t room)
+void ej3_describe_value_case(unsigned k, rayo_lang lang, char *out,
+                             size_t room)
 {
     const value_case *v = &ej3_value_cases[k];
     const char *name = ej3_functions[v->function].name;
@@ -272,8 +277,9 @@ void ej3_describe_value_case(unsigned k, char *out, size_t room)
                  s != 0 ? "true" : "false");
         break;
     case F_DISTANCIA:
-        snprintf(out, room, "esfera_distancia(a sphere at %s r %.7g, %s, "
-                            "%s, &punto, &normal)",
+        snprintf(out, room,
+                 rayo_gettext(lang, "esfera_distancia(a sphere at %s r %.7g, "
+                                    "%s, %s, &punto, &normal)"),
                  x, s, y, z);
         break;
     default:
@@ -282,22 +288,25 @@ void ej3_describe_value_case(unsigned k, char *out, size_t room)
     }
 }
 
-void ej3_describe_ray_case(unsigned k, char *out, size_t room)
+void ej3_describe_ray_case(unsigned k, rayo_lang lang, char *out,
+                           size_t room)
 {
     scene s;
     double d[3];
     char x[64];
     ej3_ray_scene(&ej3_ray_cases[k], &s, d);
-    snprintf(out, room, "computar_intensidad on %s, along d = %s",
-             ej3_scenes[ej3_ray_cases[k].scene].what, vec_text(d, x,
-                                                               sizeof x));
+    snprintf(out, room,
+             rayo_gettext(lang, "computar_intensidad on %s, along d = %s"),
+             rayo_gettext(lang, ej3_scenes[ej3_ray_cases[k].scene].what),
+             vec_text(d, x, sizeof x));
 }
 
-static void describe(const char *name, unsigned k, char *out, size_t room)
+static void describe(const char *name, unsigned k, rayo_lang lang,
+                     char *out, size_t room)
 {
     if (strcmp(name, "computar_intensidad") == 0) {
         if (k < ej3_ray_case_count)
-            ej3_describe_ray_case(k, out, room);
+            ej3_describe_ray_case(k, lang, out, room);
     } else if (strcmp(name, "arreglo_agregar") == 0) {
         snprintf(out, room, k == 0 ? "arreglo_agregar on an empty array "
                                      "{NULL, 0}, three times"
@@ -311,7 +320,7 @@ static void describe(const char *name, unsigned k, char *out, size_t room)
     } else if (k < ej3_value_case_count &&
                strcmp(name,
                       ej3_functions[ej3_value_cases[k].function].name) == 0) {
-        ej3_describe_value_case(k, out, room);
+        ej3_describe_value_case(k, lang, out, room);
     }
 }
 

@@ -107,8 +107,10 @@ extern const size_t ej3_value_case_count;
 extern const scene ej3_scenes[]; /* 0: the course's scene 3 */
 extern const ray_case ej3_ray_cases[];
 extern const size_t ej3_ray_case_count;
-void ej3_describe_value_case(unsigned k, char *out, size_t room);
-void ej3_describe_ray_case(unsigned k, char *out, size_t room);
+void ej3_describe_value_case(unsigned k, rayo_lang lang, char *out,
+                             size_t room);
+void ej3_describe_ray_case(unsigned k, rayo_lang lang, char *out,
+                           size_t room);
 
 /* ej3_model.c: arithmetic in double on float-rounded inputs. */
 void ej3_sub(const double *a, const double *b, double *out);

@@ -72,7 +72,7 @@ static rayo_status judge_value(judging *j, unsigned k, rayo_error *err)
     int count;
     unsigned i;
     ej3_value_args(v, a, b, c, &s);
-    ej3_describe_value_case(k, call, sizeof call);
+    ej3_describe_value_case(k, rayo_error_lang(err), call, sizeof call);
     count = harness_result(j->log, name, k, got, 10);
     if (count < 0)
         return RAYO_ERR_CANCELLED; /* it ended before: said elsewhere */
@@ -224,7 +224,7 @@ static rayo_status judge_imprimir(judging *j, unsigned k, rayo_error *err)
     int want[3], got[3], used = 0;
     unsigned i;
     ej3_value_args(v, a, b, c, &s);
-    ej3_describe_value_case(k, call, sizeof call);
+    ej3_describe_value_case(k, rayo_error_lang(err), call, sizeof call);
     if (harness_result(j->log, "color_imprimir", k, &dummy, 1) < 0)
         return RAYO_ERR_CANCELLED;
     j->cases++;
@@ -307,7 +307,7 @@ static rayo_status judge_crear(judging *j, unsigned k, rayo_error *err)
     int count, fields = is_sphere ? 9 : 7;
     unsigned i;
     ej3_value_args(v, a, b, c, &s);
-    ej3_describe_value_case(k, call, sizeof call);
+    ej3_describe_value_case(k, rayo_error_lang(err), call, sizeof call);
     if (!harness_result_text(j->log, name, k, text, sizeof text))
         return RAYO_ERR_CANCELLED;
     j->cases++;

@@ -88,7 +88,7 @@ static rayo_status say_ray(judging *j, unsigned c, const double *got,
     shading want = ej3_shade(rc, RAYO_MISTAKE_NONE), m;
     const char *why;
     char call[512], g[64], w[64], x[64], xc[64], y[64], yc[64];
-    ej3_describe_ray_case(c, call, sizeof call);
+    ej3_describe_ray_case(c, rayo_error_lang(err), call, sizeof call);
     colour_text(got, g, sizeof g);
     colour_text(want.c, w, sizeof w);
     if (k >= EJ3_BEYOND_LIGHT)
@@ -149,7 +149,7 @@ rayo_status ej3_judge_rays(judging *j, rayo_error *err)
                 continue;
             }
             said |= 1u << (NAN_SAID);
-            ej3_describe_ray_case(c, call, sizeof call);
+            ej3_describe_ray_case(c, rayo_error_lang(err), call, sizeof call);
             harness_not_finite(call, got[c], 3, HARNESS_NAN_SHADING, NULL,
                                line, sizeof line);
             status = ej3_wrong_line(j, err, "%s", line);

@@ -500,7 +500,7 @@ rayo_status harness_judge_ending(grade_context *ctx, const char *log,
         p++;
     }
     if (last != NULL && sscanf(last, "call %63s %u", name, &c) == 2)
-        describe(name, c, call, sizeof call);
+        describe(name, c, rayo_error_lang(err), call, sizeof call);
     if (outcome->ending == GRADE_TIMED_OUT)
         return grade_fail(item, err, "%s did not return within %g seconds",
                           call, ctx->options->timeout);

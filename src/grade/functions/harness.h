@@ -103,9 +103,9 @@ int harness_result(const char *log, const char *name, unsigned k,
 int harness_result_text(const char *log, const char *name, unsigned k,
                         char *out, size_t room);
 
-/* What a call looks like to a student: "norma(0.5, 0.5, 0.5)". */
-typedef void (*harness_describe)(const char *name, unsigned k, char *out,
-                                 size_t room);
+/* What a call looks like to a student, in lang: "norma(0.5, 0.5, 0.5)". */
+typedef void (*harness_describe)(const char *name, unsigned k, rayo_lang lang,
+                                 char *out, size_t room);
 
 /* When the harness did not end with exit status 0: one reason naming the
    last call announced (described by describe) and how it ended. */
