@@ -14,7 +14,8 @@
 # up in the error's language (include/rayo/status.h), and the reasons
 # grade's roster gives leave_out(b, name, "...") and the phrases the
 # image readers put after "expected" (found_error, rayo_source_end_error),
-# translated where they are put in.  References name
+# the scene file's value names (scene_need_*) and the ASCII STL reader's
+# phrases (stl_expected, stl_numbers), translated where they are put in.  References name
 # the file without a line number, so that the template changes only when
 # a message does, not when code moves.  Sources are
 # listed in C's byte order so the template does not depend on the
@@ -34,6 +35,11 @@ LC_ALL=C xgettext --language=C --from-code=UTF-8 --package-name=rayo \
     --keyword=scene_lexer_fail:4 --flag=scene_lexer_fail:4:c-format \
     --keyword=roster_leave_out:3 --keyword=pnm_found_error:4 \
     --keyword=rayo_source_end_error:2 \
+    --keyword=scene_need_word:3 --keyword=scene_need_number:2 \
+    --keyword=scene_need_vector:2 --keyword=scene_need_direction:2 \
+    --keyword=scene_need_ranged:2 --keyword=scene_need_count:2 \
+    --keyword=scene_need_color:2 \
+    --keyword=stl_expected:2 --keyword=stl_numbers:4 \
     --keyword=cmp_put:2 --flag=cmp_put:2:c-format \
     --keyword=cmp_putn:3,4 --flag=cmp_putn:3:c-format \
     --flag=cmp_putn:4:c-format \

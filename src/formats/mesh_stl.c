@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "mesh_impl.h"
+#include "rayo/lang.h"
 #include "rayo/limits.h"
 
 static float float_at(const unsigned char *p)
@@ -127,7 +128,8 @@ rayo_status rayo_mesh_read_stl_binary(rayo_source *src,
             if (got != sizeof record) {
                 char what[64];
                 snprintf(what, sizeof what,
-                         "the rest of triangle %llu of %lu",
+                         rayo_gettext(rayo_error_lang(err),
+                                      "the rest of triangle %llu of %lu"),
                          (unsigned long long)i + 1, (unsigned long)count);
                 return rayo_source_end_error(src, what, err);
             }
@@ -158,8 +160,10 @@ static int next(stl_words *w)
     return w->length > 0;
 }
 
-static rayo_status expected(const stl_words *w, const char *what,
-                            rayo_error *err)
+/* what is the phrase expected, English (marked with this function's
+ * keyword in scripts/update_pot.sh), put in in the error's language. */
+static rayo_status stl_expected(const stl_words *w, const char *what,
+                                rayo_error *err)
 {
     if (w->length == 0) {
         if (w->t->src->read_errno != 0)
@@ -167,11 +171,13 @@ static rayo_status expected(const stl_words *w, const char *what,
         return rayo_error_set(err, RAYO_ERR_FORMAT,
                               "%s:%llu: found the end of the file; expected "
                               "%s",
-                              w->name, (unsigned long long)w->line, what);
+                              w->name, (unsigned long long)w->line,
+                              rayo_gettext(rayo_error_lang(err), what));
     }
     return rayo_error_set(err, RAYO_ERR_FORMAT,
                           "%s:%llu: found '%.40s'; expected %s", w->name,
-                          (unsigned long long)w->line, w->word, what);
+                          (unsigned long long)w->line, w->word,
+                          rayo_gettext(rayo_error_lang(err), what));
 }
 
 static rayo_status keyword(stl_words *w, const char *word, rayo_error *err)
@@ -180,16 +186,16 @@ static rayo_status keyword(stl_words *w, const char *word, rayo_error *err)
     if (next(w) && strcmp(w->word, word) == 0)
         return RAYO_OK;
     snprintf(what, sizeof what, "'%s'", word);
-    return expected(w, what, err);
+    return stl_expected(w, what, err);
 }
 
-static rayo_status numbers(stl_words *w, float *to, int count,
-                           const char *what, rayo_error *err)
+static rayo_status stl_numbers(stl_words *w, float *to, int count,
+                               const char *what, rayo_error *err)
 {
     int k;
     for (k = 0; k < count; k++)
         if (!next(w) || !mesh_number(w->word, &to[k]))
-            return expected(w, what, err);
+            return stl_expected(w, what, err);
     return RAYO_OK;
 }
 
@@ -214,14 +220,15 @@ rayo_status rayo_mesh_read_stl_ascii(mesh_text *t, mesh_builder *b,
         float corners[9], normal[3];
         int k;
         if (!next(&w))
-            return expected(&w, "'facet' or 'endsolid'", err);
+            return stl_expected(&w, "'facet' or 'endsolid'", err);
         if (strcmp(w.word, "endsolid") == 0)
             return RAYO_OK;
         if (strcmp(w.word, "facet") != 0)
-            return expected(&w, "'facet' or 'endsolid'", err);
+            return stl_expected(&w, "'facet' or 'endsolid'", err);
         status = keyword(&w, "normal", err);
         if (status == RAYO_OK)
-            status = numbers(&w, normal, 3, "a normal's three numbers", err);
+            status =
+                stl_numbers(&w, normal, 3, "a normal's three numbers", err);
         if (status == RAYO_OK)
             status = keyword(&w, "outer", err);
         if (status == RAYO_OK)
@@ -229,8 +236,8 @@ rayo_status rayo_mesh_read_stl_ascii(mesh_text *t, mesh_builder *b,
         for (k = 0; k < 3 && status == RAYO_OK; k++) {
             status = keyword(&w, "vertex", err);
             if (status == RAYO_OK)
-                status = numbers(&w, corners + 3 * k, 3,
-                                 "a vertex's three finite numbers", err);
+                status = stl_numbers(&w, corners + 3 * k, 3,
+                                     "a vertex's three finite numbers", err);
         }
         if (status == RAYO_OK)
             status = keyword(&w, "endloop", err);

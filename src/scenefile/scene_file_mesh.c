@@ -38,8 +38,6 @@ static char *mesh_path(const parser *p, const scene_word *word)
 static rayo_status mesh_options(parser *p, rayo_mesh_placement *placement,
                                 unsigned *material)
 {
-    static const char options[] = "scale, rotate, translate, normals, "
-                                  "material or the end of the 'mesh' line";
     scene_word word;
     char text[WORD_SHOW + 32];
     rayo_status status = RAYO_OK;
@@ -74,16 +72,17 @@ static rayo_status mesh_options(parser *p, rayo_mesh_placement *placement,
                 return scene_lexer_fail(
                     &p->lx, word.column, RAYO_ERR_FORMAT,
                     "%s; expected file or computed",
-                    scene_found(&word, 1, text, sizeof text));
+                    scene_found(p, &word, 1, text, sizeof text));
         } else if (scene_word_is(&word, "material")) {
             /* object_material reads the keyword again. */
             p->lx.pos = (size_t)(word.text - p->lx.text);
             return scene_object_material(p, "mesh", material);
         } else {
-            return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
-                                    "%s; expected %s",
-                                    scene_found(&word, 1, text, sizeof text),
-                                    options);
+            return scene_lexer_fail(
+                &p->lx, word.column, RAYO_ERR_FORMAT,
+                "%s; expected scale, rotate, translate, normals, material or "
+                "the end of the 'mesh' line",
+                scene_found(p, &word, 1, text, sizeof text));
         }
     }
     return status;

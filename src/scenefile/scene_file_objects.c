@@ -37,7 +37,7 @@ rayo_status scene_parse_light(parser *p)
         return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
                                 "%s; expected the kind of light "
                                 "(directional or point)",
-                                scene_found(&word, 1, text, sizeof text));
+                                scene_found(p, &word, 1, text, sizeof text));
     }
     if (status != RAYO_OK)
         return status;
@@ -47,7 +47,8 @@ rayo_status scene_parse_light(parser *p)
             return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
                                     "%s; expected 'color' or the end of the "
                                     "'light' line",
-                                    scene_found(&word, 1, text, sizeof text));
+                                    scene_found(p, &word, 1, text,
+                                                sizeof text));
         status = scene_need_color(p, "the light's colour",
                                   RAYO_SCENE_MAX_NUMBER, &light.color);
         if (status != RAYO_OK)
@@ -182,7 +183,7 @@ static rayo_status material_field(parser *p, rayo_material *m,
     return scene_lexer_fail(&p->lx, key->column, RAYO_ERR_FORMAT,
                             "%s; expected color, ka, kd, ks, shininess, "
                             "reflect or the end of the 'material' line",
-                            scene_found(key, 1, text, sizeof text));
+                            scene_found(p, key, 1, text, sizeof text));
 }
 
 rayo_status scene_parse_material(parser *p)
@@ -201,7 +202,7 @@ rayo_status scene_parse_material(parser *p)
                                 "%s; expected a material name (a letter or "
                                 "'_', then letters, digits, '_', '-' or "
                                 "'.'; at most %u bytes)",
-                                scene_found(&name, 1, text, sizeof text),
+                                scene_found(p, &name, 1, text, sizeof text),
                                 RAYO_SCENE_MAX_NAME);
     known = scene_find_name(p, name.text, name.length);
     if (known != NULL)
@@ -242,7 +243,7 @@ rayo_status scene_object_material(parser *p, const char *statement,
         return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
                                 "%s; expected 'material' or the end of the "
                                 "'%s' line",
-                                scene_found(&word, 1, text, sizeof text),
+                                scene_found(p, &word, 1, text, sizeof text),
                                 statement);
     status = scene_need_word(p, &word, "a material name");
     if (status != RAYO_OK)

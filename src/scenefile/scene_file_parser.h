@@ -59,9 +59,10 @@ typedef struct parser {
 /* The word in quotes, printable, for messages. */
 const char *scene_quoted(const scene_word *word, char *buffer, size_t size);
 
-/* "found 'word'" (have) or "found the end of the line" into buffer. */
-const char *scene_found(const scene_word *word, int have, char *buffer,
-                        size_t size);
+/* "found 'word'" (have) or "found the end of the line" into buffer, in
+ * the error's language. */
+const char *scene_found(const parser *p, const scene_word *word, int have,
+                        char *buffer, size_t size);
 
 /* Reads a word that must be there; what names the value expected. */
 rayo_status scene_need_word(parser *p, scene_word *word, const char *what);

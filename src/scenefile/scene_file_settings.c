@@ -72,7 +72,7 @@ static rayo_status camera_field(parser *p, rayo_camera_spec *spec,
                                 "%s; expected size, width, height, fov, "
                                 "origin, look-at, up or the end of the "
                                 "'camera' line",
-                                scene_found(key, 1, text, sizeof text));
+                                scene_found(p, key, 1, text, sizeof text));
     }
 }
 
@@ -131,7 +131,8 @@ static rayo_status tp1_readings(parser *p, rayo_tp1_reading *reading)
                                     "%s; expected tinted-reflections, "
                                     "shadows-to-light, epsilon or the end "
                                     "of the 'shade' line",
-                                    scene_found(&word, 1, text, sizeof text));
+                                    scene_found(p, &word, 1, text,
+                                                sizeof text));
         }
     }
     return RAYO_OK;
@@ -158,7 +159,7 @@ rayo_status scene_parse_shade(parser *p)
                                 "%s; expected a shading mode: hit, "
                                 "course-gray, course-color, phong or "
                                 "course-tp1",
-                                scene_found(&word, 1, text, sizeof text));
+                                scene_found(p, &word, 1, text, sizeof text));
     p->file->shade_given = 1;
     if (p->file->shade == RAYO_SHADE_COURSE_TP1)
         return tp1_readings(p, &p->file->tp1);

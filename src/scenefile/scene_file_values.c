@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "../core/decimal.h"
+#include "rayo/lang.h"
 
 /* The word in quotes, printable, for messages. */
 const char *scene_quoted(const scene_word *word, char *buffer, size_t size)
@@ -26,15 +27,33 @@ const char *scene_quoted(const scene_word *word, char *buffer, size_t size)
     return buffer;
 }
 
-/* "found 'word'" or "found the end of the line" into buffer. */
-const char *scene_found(const scene_word *word, int have, char *buffer,
-                        size_t size)
+/*
+ * A phrase of the caller's (what a value stands for, marked with the
+ * helpers' keywords in scripts/update_pot.sh) in the error's language.
+ */
+static const char *scene_phrase(const parser *p, const char *what)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format_arg(2)))
+#endif
+    ;
+static const char *scene_phrase(const parser *p, const char *what)
 {
+    return rayo_gettext(rayo_error_lang(p->lx.err), what);
+}
+
+/* "found 'word'" or "found the end of the line" into buffer, in the
+ * error's language. */
+const char *scene_found(const parser *p, const scene_word *word, int have,
+                        char *buffer, size_t size)
+{
+    rayo_lang lang = rayo_error_lang(p->lx.err);
     char q[WORD_SHOW + 4];
     if (!have)
-        snprintf(buffer, size, "found the end of the line");
+        snprintf(buffer, size, "%s",
+                 rayo_gettext(lang, "found the end of the line"));
     else
-        snprintf(buffer, size, "found %s", scene_quoted(word, q, sizeof q));
+        snprintf(buffer, size, rayo_gettext(lang, "found %s"),
+                 scene_quoted(word, q, sizeof q));
     return buffer;
 }
 
@@ -46,7 +65,8 @@ rayo_status scene_need_word(parser *p, scene_word *word, const char *what)
     if (scene_lexer_word(&p->lx, word))
         return RAYO_OK;
     return scene_lexer_fail(&p->lx, column, RAYO_ERR_FORMAT, "%s; expected %s",
-                            scene_found(word, 0, text, sizeof text), what);
+                            scene_found(p, word, 0, text, sizeof text),
+                            scene_phrase(p, what));
 }
 
 static int word_to_double(const scene_word *word, double *value)
@@ -65,12 +85,17 @@ typedef struct number_name {
     char axis; /* 'x', 'y', 'z', or 0 */
 } number_name;
 
-static const char *number_name_text(const number_name *name, char *buffer,
+static const char *number_name_text(const parser *p,
+                                    const number_name *name, char *buffer,
                                     size_t size)
 {
+    rayo_lang lang = rayo_error_lang(p->lx.err);
     if (name->axis == 0)
-        return name->what;
-    snprintf(buffer, size, "the %c of %s", name->axis, name->what);
+        return scene_phrase(p, name->what);
+    /* TRANSLATORS: %c is the axis (x, y or z), %s what the vector stands
+       for ("the sphere's centre"); "%2$s, coordenada %1$c" may reorder. */
+    snprintf(buffer, size, rayo_gettext(lang, "the %c of %s"), name->axis,
+             scene_phrase(p, name->what));
     return buffer;
 }
 
@@ -81,10 +106,12 @@ static rayo_status read_number(parser *p, const number_name *name,
     char text[WORD_SHOW + 32], label[160], what[128];
     size_t at = scene_lexer_column(&p->lx);
     if (!scene_lexer_word(&p->lx, &word)) {
-        snprintf(label, sizeof label, "%s (a number)",
-                 number_name_text(name, what, sizeof what));
+        rayo_lang lang = rayo_error_lang(p->lx.err);
+        /* TRANSLATORS: %s is what the number stands for. */
+        snprintf(label, sizeof label, rayo_gettext(lang, "%s (a number)"),
+                 number_name_text(p, name, what, sizeof what));
         return scene_lexer_fail(&p->lx, at, RAYO_ERR_FORMAT, "%s; expected %s",
-                                scene_found(&word, 0, text, sizeof text),
+                                scene_found(p, &word, 0, text, sizeof text),
                                 label);
     }
     if (column != NULL)
@@ -92,14 +119,14 @@ static rayo_status read_number(parser *p, const number_name *name,
     if (!word_to_double(&word, value))
         return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
                                 "%s; expected %s (a finite decimal number)",
-                                scene_found(&word, 1, text, sizeof text),
-                                number_name_text(name, what, sizeof what));
+                                scene_found(p, &word, 1, text, sizeof text),
+                                number_name_text(p, name, what, sizeof what));
     if (fabs(*value) > RAYO_SCENE_MAX_NUMBER)
         return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_LIMIT,
                                 "%s is out of range; expected %s between "
                                 "-1e12 and 1e12",
                                 scene_quoted(&word, text, sizeof text),
-                                number_name_text(name, what, sizeof what));
+                                number_name_text(p, name, what, sizeof what));
     return RAYO_OK;
 }
 
@@ -144,7 +171,7 @@ rayo_status scene_need_direction(parser *p, const char *what, rayo_vec3 *v)
         return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
                                 "%s 0 0 0 has zero length; expected a "
                                 "non-zero vector",
-                                what);
+                                scene_phrase(p, what));
     return RAYO_OK;
 }
 
@@ -161,11 +188,11 @@ rayo_status scene_need_ranged(parser *p, const char *what, double min,
             return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
                                     "%s %g is not accepted; expected a "
                                     "number >= %g",
-                                    what, *value, min);
+                                    scene_phrase(p, what), *value, min);
         return scene_lexer_fail(&p->lx, column, RAYO_ERR_INVALID,
                                 "%s %g is not accepted; expected a number "
                                 "from %g to %g",
-                                what, *value, min, max);
+                                scene_phrase(p, what), *value, min, max);
     }
     return RAYO_OK;
 }
@@ -183,11 +210,11 @@ rayo_status scene_need_count(parser *p, const char *what, unsigned long min,
         return scene_lexer_fail(&p->lx, column, RAYO_ERR_FORMAT,
                                 "%s %g is not a whole number; expected %lu "
                                 "to %lu",
-                                what, v, min, max);
+                                scene_phrase(p, what), v, min, max);
     if (v < (double)min || v > (double)max)
         return scene_lexer_fail(&p->lx, column, RAYO_ERR_LIMIT,
                                 "%s %g is out of range; expected %lu to %lu",
-                                what, v, min, max);
+                                scene_phrase(p, what), v, min, max);
     *value = (unsigned long)v;
     return RAYO_OK;
 }
@@ -234,7 +261,7 @@ rayo_status scene_need_end(parser *p, const char *statement,
         return RAYO_OK;
     return scene_lexer_fail(&p->lx, word.column, RAYO_ERR_FORMAT,
                             "%s; expected %s%sthe end of the '%s' line",
-                            scene_found(&word, 1, text, sizeof text),
+                            scene_found(p, &word, 1, text, sizeof text),
                             options ? options : "", options ? " or " : "",
                             statement);
 }

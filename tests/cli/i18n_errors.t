@@ -2,7 +2,8 @@
 # i18n_errors.t - the library's error messages in the command's language
 # (docs/i18n.md): a malformed image (no image at all, a PBM with a bad
 # pixel, one cut short, the phrase after "expected" translated too), a
-# bad scene file, an output name whose format cannot be told, an
+# bad scene file (what a value stands for and what was found translated
+# too, an ASCII STL's phrases as well), an output name whose format cannot be told, an
 # unreadable file and a bad --fov give Spanish under --lang es and
 # LANG=es_AR.UTF-8 (with no Spanish locale generated), English under
 # --lang en and LANG=C; always one line on stderr, nothing on stdout,
@@ -16,6 +17,12 @@ printf 'hola\n' >magic.pbm
 printf 'P1\n3 2\n1 0 1\n0 x 1\n' >pixel.pbm
 printf 'P1\n2 2\n1 0\n' >short.pbm
 printf 'camera fov 200.5\nsphere 0 0 -3 1\n' >fov.scene
+printf 'light point 0 0 0 color -1\n' >light.scene
+printf 'camera size abc 3\n' >size.scene
+printf 'sphere 0 0 q 1\n' >centre.scene
+printf 'sphere 0 0\n' >short.scene
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 a\n' >bad.stl
+printf 'mesh bad.stl\n' >mesh.scene
 
 # one NAME STATUS LINE ARGS...: rayo ARGS gives exit status STATUS,
 # nothing on stdout and LINE alone on stderr.
@@ -64,6 +71,28 @@ both "a scene file's field of view" 2 \
     "rayo: fov.scene:1:12: no se acepta el campo de visión 200,5; se esperaban grados estrictamente entre 0 y 180" \
     "rayo: fov.scene:1:12: field of view 200.5 is not accepted; expected degrees strictly between 0 and 180" \
     render fov.scene -o out.pbm
+# What a scene's value stands for, and what was found, are translated
+# too; a vector's axis follows the Spanish phrase.
+both "a scene's negative colour" 2 \
+    "rayo: light.scene:1:25: no se acepta el color de la luz -1; se esperaba un número >= 0" \
+    "rayo: light.scene:1:25: the light's colour -1 is not accepted; expected a number >= 0" \
+    render light.scene -o out.pbm
+both "a scene's word for a width" 2 \
+    "rayo: size.scene:1:13: se encontró 'abc'; se esperaba el ancho de la imagen (un número decimal finito)" \
+    "rayo: size.scene:1:13: found 'abc'; expected the image width (a finite decimal number)" \
+    render size.scene -o out.pbm
+both "a scene's word for a vector's axis" 2 \
+    "rayo: centre.scene:1:12: se encontró 'q'; se esperaba el centro de la esfera, coordenada z (un número decimal finito)" \
+    "rayo: centre.scene:1:12: found 'q'; expected the z of the sphere's centre (a finite decimal number)" \
+    render centre.scene -o out.pbm
+both "a scene's line cut short" 2 \
+    "rayo: short.scene:1:11: se encontró el final de la línea; se esperaba el centro de la esfera, coordenada z (un número)" \
+    "rayo: short.scene:1:11: found the end of the line; expected the z of the sphere's centre (a number)" \
+    render short.scene -o out.pbm
+both "an ASCII STL's letter for a coordinate" 2 \
+    "rayo: mesh.scene:1:6: ./bad.stl:4: se encontró 'a'; se esperaba los tres números finitos de un vértice" \
+    "rayo: mesh.scene:1:6: ./bad.stl:4: found 'a'; expected a vertex's three finite numbers" \
+    render mesh.scene -o out.pbm
 [ ! -e out.pbm ]
 ok $? "no image is written for a bad scene file"
 both "an output whose format cannot be told" 2 \
