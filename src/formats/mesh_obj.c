@@ -35,12 +35,11 @@ typedef struct obj_reader {
     char *line;
 } obj_reader;
 
-static rayo_status at_line(const obj_reader *r, rayo_error *err,
-                           const char *found, const char *expected)
+/* The line being read, for messages ("NAME:LINE: found ..."), each
+ * message a whole sentence so that it is translated whole. */
+static unsigned long long line_of(const obj_reader *r)
 {
-    return rayo_error_set(err, RAYO_ERR_FORMAT,
-                          "%s:%llu: found %s; expected %s", r->name,
-                          (unsigned long long)r->t->line, found, expected);
+    return (unsigned long long)r->t->line;
 }
 
 static rayo_status add_vertex(obj_reader *r, char *rest, rayo_error *err)
@@ -49,17 +48,22 @@ static rayo_status add_vertex(obj_reader *r, char *rest, rayo_error *err)
     char *word, *save = NULL;
     int k;
     for (k = 0; k < 3; k++) {
-        char found[72];
         word = strtok_r(k == 0 ? rest : NULL, " \t", &save);
-        if (word == NULL || !mesh_number(word, &v[k])) {
-            if (word == NULL)
-                snprintf(found, sizeof found, "%d number%s", k,
-                         k == 1 ? "" : "s");
-            else
-                snprintf(found, sizeof found, "'%.40s'", word);
-            return at_line(r, err, found,
-                           "a vertex's x, y and z as finite numbers");
-        }
+        if (word != NULL && !mesh_number(word, &v[k]))
+            return rayo_error_set(err, RAYO_ERR_FORMAT,
+                                  "%s:%llu: found '%.40s'; expected a "
+                                  "vertex's x, y and z as finite numbers",
+                                  r->name, line_of(r), word);
+        if (word == NULL && k == 1)
+            return rayo_error_set(err, RAYO_ERR_FORMAT,
+                                  "%s:%llu: found 1 number; expected a "
+                                  "vertex's x, y and z as finite numbers",
+                                  r->name, line_of(r));
+        if (word == NULL)
+            return rayo_error_set(err, RAYO_ERR_FORMAT,
+                                  "%s:%llu: found %d numbers; expected a "
+                                  "vertex's x, y and z as finite numbers",
+                                  r->name, line_of(r), k);
     }
     if (r->vertex_count == r->vertex_capacity) {
         size_t capacity = r->vertex_capacity < 1024 ? 1024
@@ -84,12 +88,11 @@ static rayo_status corner_vertex(const obj_reader *r, const char *word,
 {
     char *end;
     long long index = strtoll(word, &end, 10);
-    char found[96];
-    if (end == word || (*end != '\0' && *end != '/')) {
-        snprintf(found, sizeof found, "the corner '%.40s'", word);
-        return at_line(r, err, found,
-                       "a vertex index (N, N/T, N//M or N/T/M)");
-    }
+    if (end == word || (*end != '\0' && *end != '/'))
+        return rayo_error_set(err, RAYO_ERR_FORMAT,
+                              "%s:%llu: found the corner '%.40s'; expected "
+                              "a vertex index (N, N/T, N//M or N/T/M)",
+                              r->name, line_of(r), word);
     if (index < 0) {
         /* The magnitude without negating (LLONG_MIN has none). */
         unsigned long long back = 0ull - (unsigned long long)index;
@@ -102,15 +105,12 @@ static rayo_status corner_vertex(const obj_reader *r, const char *word,
         *vertex = (size_t)index - 1;
         return RAYO_OK;
     }
-    snprintf(found, sizeof found, "the vertex index %lld", index);
-    {
-        char range[96];
-        snprintf(range, sizeof range,
-                 "1 to %llu or -1 to -%llu (the vertices so far)",
-                 (unsigned long long)r->vertex_count,
-                 (unsigned long long)r->vertex_count);
-        return at_line(r, err, found, range);
-    }
+    return rayo_error_set(err, RAYO_ERR_FORMAT,
+                          "%s:%llu: found the vertex index %lld; expected 1 "
+                          "to %llu or -1 to -%llu (the vertices so far)",
+                          r->name, line_of(r), index,
+                          (unsigned long long)r->vertex_count,
+                          (unsigned long long)r->vertex_count);
 }
 
 static rayo_status add_face(obj_reader *r, char *rest, rayo_error *err)
@@ -138,12 +138,16 @@ static rayo_status add_face(obj_reader *r, char *rest, rayo_error *err)
         }
         previous = corner;
     }
-    if (n < 3) {
-        char found[40];
-        snprintf(found, sizeof found, "a face of %lu corner%s",
-                 (unsigned long)n, n == 1 ? "" : "s");
-        return at_line(r, err, found, "at least 3");
-    }
+    if (n == 1)
+        return rayo_error_set(err, RAYO_ERR_FORMAT,
+                              "%s:%llu: found a face of 1 corner; expected "
+                              "at least 3",
+                              r->name, line_of(r));
+    if (n < 3)
+        return rayo_error_set(err, RAYO_ERR_FORMAT,
+                              "%s:%llu: found a face of %lu corners; "
+                              "expected at least 3",
+                              r->name, line_of(r), (unsigned long)n);
     if (n > 3)
         r->report->polygons++;
     return RAYO_OK;
@@ -159,12 +163,11 @@ static rayo_status read_lines(obj_reader *r, rayo_error *err)
             return r->t->src->read_errno != 0
                        ? rayo_source_end_error(r->t->src, "a line", err)
                        : RAYO_OK;
-        if (got < 0) {
-            char expected[48];
-            snprintf(expected, sizeof expected, "lines of at most %d bytes",
-                     OBJ_LINE_MAX - 1);
-            return at_line(r, err, "a longer line", expected);
-        }
+        if (got < 0)
+            return rayo_error_set(err, RAYO_ERR_FORMAT,
+                                  "%s:%llu: found a longer line; expected "
+                                  "lines of at most %d bytes",
+                                  r->name, line_of(r), OBJ_LINE_MAX - 1);
         for (p = r->line; *p == ' ' || *p == '\t'; p++)
             ;
         if (*p == '\0' || *p == '#')

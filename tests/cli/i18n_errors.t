@@ -3,10 +3,10 @@
 # (docs/i18n.md): a malformed image (no image at all, a PBM with a bad
 # pixel, one cut short, the phrase after "expected" translated too), a
 # bad scene file (what a value stands for and what was found translated
-# too, an ASCII STL's phrases as well), an output name whose format cannot be told, an
-# unreadable file and a bad --fov give Spanish under --lang es and
-# LANG=es_AR.UTF-8 (with no Spanish locale generated), English under
-# --lang en and LANG=C; always one line on stderr, nothing on stdout,
+# too, a mesh reader's messages as well), an output name whose format
+# cannot be told, an unreadable file and a bad --fov give Spanish under
+# --lang es and LANG=es_AR.UTF-8 (with no Spanish locale generated),
+# English under --lang en and LANG=C; always one line on stderr, nothing on stdout,
 # and the same exit status in both languages.
 # Numbers in a Spanish message have a decimal comma; the system's reason
 # for an unreadable file (strerror) stays the system's.
@@ -23,6 +23,8 @@ printf 'sphere 0 0 q 1\n' >centre.scene
 printf 'sphere 0 0\n' >short.scene
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 a\n' >bad.stl
 printf 'mesh bad.stl\n' >mesh.scene
+printf 'v 0 0 0\nf 1 q 1\n' >bad.obj
+printf 'mesh bad.obj\n' >obj.scene
 
 # one NAME STATUS LINE ARGS...: rayo ARGS gives exit status STATUS,
 # nothing on stdout and LINE alone on stderr.
@@ -93,6 +95,10 @@ both "an ASCII STL's letter for a coordinate" 2 \
     "rayo: mesh.scene:1:6: ./bad.stl:4: se encontró 'a'; se esperaba los tres números finitos de un vértice" \
     "rayo: mesh.scene:1:6: ./bad.stl:4: found 'a'; expected a vertex's three finite numbers" \
     render mesh.scene -o out.pbm
+both "an OBJ face's corner that is no index" 2 \
+    "rayo: obj.scene:1:6: ./bad.obj:2: se encontró la esquina 'q'; se esperaba un índice de vértice (N, N/T, N//M o N/T/M)" \
+    "rayo: obj.scene:1:6: ./bad.obj:2: found the corner 'q'; expected a vertex index (N, N/T, N//M or N/T/M)" \
+    render obj.scene -o out.pbm
 [ ! -e out.pbm ]
 ok $? "no image is written for a bad scene file"
 both "an output whose format cannot be told" 2 \
