@@ -115,18 +115,20 @@ void cli_grade_print_text(FILE *out, const rayo_grade_report *r)
                      rayo_grade_criterion_name(c));
         }
     }
-    /* The PASS and FAIL tokens stay as they are in every language. */
+    /* The PASS and FAIL tokens stay as they are in every language.  The
+       verb agrees with the criteria that failed or passed ("falló 1 de 6
+       criterios"); the noun with all of them, always more than one. */
     if (failed > 0) {
         fputs("\nFAIL: ", out);
         fprintf(out,
-                _n("%zu of %d criterion failed (%s)",
-                   "%zu of %d criteria failed (%s)", RAYO_GRADE_CRITERIA),
+                _n("%zu of %d criteria failed (%s)",
+                   "%zu of %d criteria failed (%s)", failed),
                 failed, RAYO_GRADE_CRITERIA, failed_names);
     } else {
         fputs("\nPASS: ", out);
         fprintf(out,
-                _n("%zu of %d criterion passed", "%zu of %d criteria passed",
-                   RAYO_GRADE_CRITERIA),
+                _n("%zu of %d criteria passed", "%zu of %d criteria passed",
+                   RAYO_GRADE_CRITERIA - skipped),
                 RAYO_GRADE_CRITERIA - skipped, RAYO_GRADE_CRITERIA);
     }
     if (skipped > 0)

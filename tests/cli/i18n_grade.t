@@ -18,6 +18,10 @@ sed -e 's|for (x = -ANCHO / 2; x < ANCHO / 2; x++)|for (x = -ANCHO / 2 - 1; x < 
 sed -e 's|for (x = -ANCHO / 2; x < ANCHO / 2; x++)|for (x = -ANCHO / 2 + 2; x < ANCHO / 2 + 2; x++)|' \
     -e 's|for (y = -ALTO / 2; y < ALTO / 2; y++)|for (y = -ALTO / 2 + 1; y < ALTO / 2 + 1; y++)|' \
     "$src" >both.c
+sed -e 's|for (y = -ALTO / 2; y < ALTO / 2; y++)|for (y = -ALTO / 2; y < ALTO / 2 - 1; y++)|' \
+    "$src" >short1.c
+sed -e 's|for (y = -ALTO / 2; y < ALTO / 2; y++)|for (y = -ALTO / 2; y < ALTO / 2 - 2; y++)|' \
+    "$src" >short2.c
 
 # line NAME TEXT: a line of $TMP/out is TEXT exactly.
 line() {
@@ -67,6 +71,22 @@ line "moved both ways, --lang en: the same sentence in English" \
 grade right.c --lang en
 line "moved right, --lang en: a decimal point" \
     "image      FAIL     inconsistent with the reference: 498 pixels differ (0.16%), 0 of them more than 2 pixels from the sphere's outline"
+
+# The output criterion's count, a whole sentence with plural phrases;
+# the summary's verb agrees with the one criterion that failed.
+grade short1.c --lang es
+line "one row short, --lang es: the count in Spanish, singular" \
+    "output     FAIL     el encabezado promete 640x480 = 307200 píxeles pero la salida tiene 306560: 640 de menos, falta exactamente 1 fila"
+line "one row short, --lang es: one criterion failed, singular verb" \
+    "FAIL: falló 1 de 6 criterios (output), 1 salteado, 1 advertencia"
+grade short2.c --lang es
+line "two rows short, --lang es: the count in Spanish, plural" \
+    "output     FAIL     el encabezado promete 640x480 = 307200 píxeles pero la salida tiene 305920: 1280 de menos, faltan exactamente 2 filas"
+grade short1.c --lang en
+line "one row short, --lang en: the count in English as before" \
+    "output     FAIL     the header promises 640x480 = 307200 pixels but the output has 306560: 640 fewer, exactly 1 row missing"
+line "one row short, --lang en: the summary as before" \
+    "FAIL: 1 of 6 criteria failed (output), 1 skipped, 1 warning"
 
 # CSV: the header is the same in both languages, the reasons are not.
 grade right.c --lang en --csv -

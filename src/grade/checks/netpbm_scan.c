@@ -102,12 +102,12 @@ const char *netpbm_format_name(const unsigned char *m)
     if (m[0] != 'P' && m[0] != 'p')
         return NULL;
     switch (m[1]) {
-    case '1': return "plain PBM (black and white)";
-    case '2': return "plain PGM (gray)";
-    case '3': return "plain PPM (colour)";
-    case '4': return "raw PBM (binary)";
-    case '5': return "raw PGM (gray, binary)";
-    case '6': return "raw PPM (colour, binary)";
+    case '1': return N_("plain PBM (black and white)");
+    case '2': return N_("plain PGM (gray)");
+    case '3': return N_("plain PPM (colour)");
+    case '4': return N_("raw PBM (binary)");
+    case '5': return N_("raw PGM (gray, binary)");
+    case '6': return N_("raw PPM (colour, binary)");
     }
     return NULL;
 }
@@ -115,9 +115,11 @@ const char *netpbm_format_name(const unsigned char *m)
 void netpbm_refuse_other(netpbm_scan *s, const netpbm_kind *kind)
 {
     const unsigned char *m = s->data + s->pos;
-    NETPBM_FAIL(s, "the magic number is '%c%c', %s; the exercise asks for "
-                   "plain %s, 'P%c'",
-                m[0], m[1], netpbm_format_name(m), kind->name, kind->magic);
+    NETPBM_FAIL(s, N_("the magic number is '%c%c', %s; the exercise asks for "
+                   "plain %s, 'P%c'"),
+                m[0], m[1],
+                rayo_gettext(rayo_error_lang(s->err), netpbm_format_name(m)),
+                kind->name, kind->magic);
 }
 
 netpbm_magic netpbm_check_magic(netpbm_scan *s, const netpbm_kind *kind)
@@ -130,10 +132,15 @@ netpbm_magic netpbm_check_magic(netpbm_scan *s, const netpbm_kind *kind)
         start++;
     if (start > 0 && start + 1 < s->size &&
         (s->data[start] == 'P' || s->data[start] == 'p'))
-        NETPBM_FAIL(s, "the output begins with %zu whitespace character%s "
-                       "before the magic number; a %s file must begin "
-                       "with 'P%c' itself",
-                    start, start == 1 ? "" : "s", kind->name, kind->magic);
+        NETPBM_FAIL(s, rayo_ngettext(rayo_error_lang(s->err),
+                                     "the output begins with %zu whitespace "
+                                     "character before the magic number; a "
+                                     "%s file must begin with 'P%c' itself",
+                                     "the output begins with %zu whitespace "
+                                     "characters before the magic number; a "
+                                     "%s file must begin with 'P%c' itself",
+                                     start),
+                    start, kind->name, kind->magic);
     else
         start = 0;
     s->pos = start;
@@ -168,8 +175,46 @@ netpbm_magic netpbm_check_magic(netpbm_scan *s, const netpbm_kind *kind)
     return NETPBM_MAGIC_WANTED;
 }
 
-int netpbm_expect_number(netpbm_scan *s, const char *what,
-                         const char *after, unsigned long *value)
+/* What the header says when its number `field` is missing: the output
+   ends (ended) or something else stands there. */
+static void say_missing(netpbm_scan *s, netpbm_field field, int magic,
+                        int ended, unsigned long line, unsigned long column,
+                        const char *seen)
+{
+    switch (field) {
+    case NETPBM_FIELD_WIDTH:
+        if (ended)
+            NETPBM_FAIL(s, N_("the output ends before the width (expected "
+                           "after 'P%c')"),
+                        magic);
+        else
+            NETPBM_FAIL(s, N_("expected the width after 'P%c' at line %lu, "
+                           "column %lu; found '%s'"),
+                        magic, line, column, seen);
+        break;
+    case NETPBM_FIELD_HEIGHT:
+        if (ended)
+            NETPBM_FAIL(s, N_("the output ends before the height (expected "
+                           "after the width)"));
+        else
+            NETPBM_FAIL(s, N_("expected the height after the width at line "
+                           "%lu, column %lu; found '%s'"),
+                        line, column, seen);
+        break;
+    case NETPBM_FIELD_MAXVAL:
+        if (ended)
+            NETPBM_FAIL(s, N_("the output ends before the maximum value "
+                           "(255) (expected after the height)"));
+        else
+            NETPBM_FAIL(s, N_("expected the maximum value (255) after the "
+                           "height at line %lu, column %lu; found '%s'"),
+                        line, column, seen);
+        break;
+    }
+}
+
+int netpbm_expect_number(netpbm_scan *s, netpbm_field field, int magic,
+                         unsigned long *value)
 {
     unsigned long line, column;
     char seen[80];
@@ -178,13 +223,7 @@ int netpbm_expect_number(netpbm_scan *s, const char *what,
         return 1;
     netpbm_where(s, s->pos, &line, &column);
     netpbm_excerpt(s, s->pos, 16, seen, sizeof seen);
-    if (s->pos >= s->size)
-        NETPBM_FAIL(s, "the output ends before the %s (expected after %s)",
-                    what, after);
-    else
-        NETPBM_FAIL(s, "expected the %s after %s at line %lu, column %lu; "
-                       "found '%s'",
-                    what, after, line, column, seen);
+    say_missing(s, field, magic, s->pos >= s->size, line, column, seen);
     return 0;
 }
 
@@ -192,9 +231,7 @@ int netpbm_check_dimensions(netpbm_scan *s, const netpbm_kind *kind,
                             uint32_t want_w, uint32_t want_h,
                             unsigned long *w, unsigned long *h)
 {
-    char after_magic[8];
-    snprintf(after_magic, sizeof after_magic, "'P%c'", kind->magic);
-    if (!netpbm_expect_number(s, "width", after_magic, w))
+    if (!netpbm_expect_number(s, NETPBM_FIELD_WIDTH, kind->magic, w))
         return 0;
     if ((netpbm_peek(s) == 'x' || netpbm_peek(s) == 'X') &&
         s->pos + 1 < s->size && netpbm_is_digit(s->data[s->pos + 1])) {
@@ -204,7 +241,7 @@ int netpbm_check_dimensions(netpbm_scan *s, const netpbm_kind *kind,
         NETPBM_FAIL(s, N_("the dimensions are written '%lu%c%lu'; Netpbm needs "
                        "two numbers separated by whitespace: '%lu %lu'"),
                     *w, separator, *h, *w, *h);
-    } else if (!netpbm_expect_number(s, "height", "the width", h)) {
+    } else if (!netpbm_expect_number(s, NETPBM_FIELD_HEIGHT, kind->magic, h)) {
         return 0;
     }
     if (*w == 0 || *h == 0 || *w > RAYO_MAX_DIMENSION ||
@@ -227,62 +264,94 @@ int netpbm_check_dimensions(netpbm_scan *s, const netpbm_kind *kind,
     return 1;
 }
 
-/* "exactly 1 row missing", "2 rows and 3 pixels", "less than one row". */
-static void describe_rows(char *out, size_t room, unsigned long long pixels,
-                          unsigned long w, int more)
+/* "exactly 1 row missing", "2 rows and 3 pixels", "less than one row",
+   in lang. */
+static void describe_rows(rayo_lang lang, char *out, size_t room,
+                          unsigned long long pixels, unsigned long w,
+                          int more)
 {
     unsigned long long rows = pixels / w, rest = pixels % w;
+    char part[64];
     if (rows == 0)
-        snprintf(out, room, "less than one row");
+        snprintf(out, room, "%s", rayo_gettext(lang, "less than one row"));
+    else if (rest == 0 && more)
+        snprintf(out, room,
+                 rayo_ngettext(lang, "exactly %llu row too many",
+                               "exactly %llu rows too many",
+                               (unsigned long)rows),
+                 rows);
     else if (rest == 0)
-        snprintf(out, room, "exactly %llu row%s %s", rows,
-                 rows == 1 ? "" : "s", more ? "too many" : "missing");
-    else
-        snprintf(out, room, "%llu row%s and %llu pixel%s", rows,
-                 rows == 1 ? "" : "s", rest, rest == 1 ? "" : "s");
+        snprintf(out, room,
+                 rayo_ngettext(lang, "exactly %llu row missing",
+                               "exactly %llu rows missing",
+                               (unsigned long)rows),
+                 rows);
+    else {
+        snprintf(part, sizeof part,
+                 rayo_ngettext(lang, "%llu pixel", "%llu pixels",
+                               (unsigned long)rest),
+                 rest);
+        snprintf(out, room,
+                 rayo_ngettext(lang, "%llu row and %s", "%llu rows and %s",
+                               (unsigned long)rows),
+                 rows, part);
+    }
 }
 
 void netpbm_say_count(netpbm_scan *s, const netpbm_kind *kind,
                       unsigned long w, unsigned long h,
                       unsigned long long samples)
 {
+    rayo_lang lang = rayo_error_lang(s->err);
     unsigned channels = kind->channels;
     unsigned long long pixels = (unsigned long long)w * h;
     unsigned long long want = pixels * channels;
     unsigned long long diff = samples > want ? samples - want
                                              : want - samples;
     unsigned long long whole = diff / channels, part = diff % channels;
-    const char *way = samples > want ? "more" : "fewer";
-    char rows_text[160];
+    char rows_text[160], way[64], whole_text[64], part_text[64];
     if (diff == 0)
         return;
-    describe_rows(rows_text, sizeof rows_text, whole, w, samples > want);
-    if (kind->magic == '1')
-        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels but the "
-                       "output has %llu: %llu %s, %s",
-                    w, h, pixels, samples, diff, way, rows_text);
-    else if (channels == 1)
-        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels but the "
-                       "output has %llu numbers: %llu %s, %s",
-                    w, h, pixels, samples, diff, way, rows_text);
-    else if (part == 0)
-        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels of %u "
-                       "numbers (R G B), %llu in all, but the output has "
-                       "%llu: %llu %s, %llu pixel%s, %s",
-                    w, h, pixels, channels, want, samples, diff, way, whole,
-                    whole == 1 ? "" : "s", rows_text);
-    else if (whole == 0)
-        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels of %u "
-                       "numbers (R G B), %llu in all, but the output has "
-                       "%llu: %llu %s, less than one pixel",
-                    w, h, pixels, channels, want, samples, diff, way);
+    describe_rows(lang, rows_text, sizeof rows_text, whole, w,
+                  samples > want);
+    if (samples > want)
+        snprintf(way, sizeof way, rayo_gettext(lang, "%llu more"), diff);
     else
-        NETPBM_FAIL(s, "the header promises %lux%lu = %llu pixels of %u "
+        snprintf(way, sizeof way, rayo_gettext(lang, "%llu fewer"), diff);
+    snprintf(whole_text, sizeof whole_text,
+             rayo_ngettext(lang, "%llu pixel", "%llu pixels",
+                           (unsigned long)whole),
+             whole);
+    snprintf(part_text, sizeof part_text,
+             rayo_ngettext(lang, "%llu number", "%llu numbers",
+                           (unsigned long)part),
+             part);
+    if (kind->magic == '1')
+        NETPBM_FAIL(s, N_("the header promises %lux%lu = %llu pixels but the "
+                       "output has %llu: %s, %s"),
+                    w, h, pixels, samples, way, rows_text);
+    else if (channels == 1)
+        NETPBM_FAIL(s, N_("the header promises %lux%lu = %llu pixels but the "
+                       "output has %llu numbers: %s, %s"),
+                    w, h, pixels, samples, way, rows_text);
+    else if (part == 0)
+        NETPBM_FAIL(s, N_("the header promises %lux%lu = %llu pixels of %u "
                        "numbers (R G B), %llu in all, but the output has "
-                       "%llu: %llu %s, not a whole number of pixels (%llu "
-                       "pixel%s and %llu number%s)",
-                    w, h, pixels, channels, want, samples, diff, way, whole,
-                    whole == 1 ? "" : "s", part, part == 1 ? "" : "s");
+                       "%llu: %s, %s, %s"),
+                    w, h, pixels, channels, want, samples, way, whole_text,
+                    rows_text);
+    else if (whole == 0)
+        NETPBM_FAIL(s, N_("the header promises %lux%lu = %llu pixels of %u "
+                       "numbers (R G B), %llu in all, but the output has "
+                       "%llu: %s, less than one pixel"),
+                    w, h, pixels, channels, want, samples, way);
+    else
+        NETPBM_FAIL(s, N_("the header promises %lux%lu = %llu pixels of %u "
+                       "numbers (R G B), %llu in all, but the output has "
+                       "%llu: %s, not a whole number of pixels (%s and "
+                       "%s)"),
+                    w, h, pixels, channels, want, samples, way, whole_text,
+                    part_text);
 }
 
 void netpbm_note_line_lengths(netpbm_scan *s)
@@ -305,12 +374,21 @@ void netpbm_note_line_lengths(netpbm_scan *s)
         }
     }
     if (long_lines > 0)
-        NETPBM_SAY(s, "note: %lu line%s longer than %d characters (the "
-                      "longest, line %lu, has %zu); Netpbm's format page "
-                      "asks for at most %d, but the statement lets the "
-                      "pixels be laid out freely and readers accept longer "
-                      "lines",
-                   long_lines, long_lines == 1 ? " is" : "s are",
-                   NETPBM_LINE_LIMIT, longest_line, longest,
+        NETPBM_SAY(s,
+                   rayo_ngettext(rayo_error_lang(s->err),
+                                 "note: %lu line is longer than %d "
+                                 "characters (the longest, line %lu, has "
+                                 "%zu); Netpbm's format page asks for at "
+                                 "most %d, but the statement lets the "
+                                 "pixels be laid out freely and readers "
+                                 "accept longer lines",
+                                 "note: %lu lines are longer than %d "
+                                 "characters (the longest, line %lu, has "
+                                 "%zu); Netpbm's format page asks for at "
+                                 "most %d, but the statement lets the "
+                                 "pixels be laid out freely and readers "
+                                 "accept longer lines",
+                                 long_lines),
+                   long_lines, NETPBM_LINE_LIMIT, longest_line, longest,
                    NETPBM_LINE_LIMIT);
 }

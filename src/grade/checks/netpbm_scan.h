@@ -110,9 +110,17 @@ netpbm_magic netpbm_check_magic(netpbm_scan *s, const netpbm_kind *kind);
 /* "the magic number is 'P5', raw PGM ...; the exercise asks for ...". */
 void netpbm_refuse_other(netpbm_scan *s, const netpbm_kind *kind);
 
-/* Expects a number after header space; says what is there instead. */
-int netpbm_expect_number(netpbm_scan *s, const char *what,
-                         const char *after, unsigned long *value);
+/* The header's numbers, each named in a whole sentence of its own. */
+typedef enum netpbm_field {
+    NETPBM_FIELD_WIDTH,  /* after the magic number 'P<magic>' */
+    NETPBM_FIELD_HEIGHT, /* after the width */
+    NETPBM_FIELD_MAXVAL  /* after the height */
+} netpbm_field;
+
+/* Expects a number after header space; says what is there instead.
+   magic is the kind's, for the width's sentence. */
+int netpbm_expect_number(netpbm_scan *s, netpbm_field field, int magic,
+                         unsigned long *value);
 
 /* Width and height, checked against the exercise's; 1 when both could
    be read and an image of that size can be made. */

@@ -14,6 +14,7 @@
 #include "rayo/pbm_check.h"
 
 #include "netpbm_scan.h"
+#include "rayo/lang.h"
 
 typedef struct raster_tally {
     unsigned long long pixels, bad, comments;
@@ -55,9 +56,16 @@ static void check_raster_tally(netpbm_scan *s, const raster_tally *t)
     if (t->bad > 0) {
         netpbm_where(s, t->first_bad, &line, &column);
         netpbm_excerpt(s, t->first_bad, 16, seen, sizeof seen);
-        NETPBM_FAIL(s, "%llu character%s in the pixels other than 0, 1 and "
-                       "whitespace; the first at line %lu, column %lu: '%s'",
-                    t->bad, t->bad == 1 ? "" : "s", line, column, seen);
+        NETPBM_FAIL(s,
+                    rayo_ngettext(rayo_error_lang(s->err),
+                                  "%llu character in the pixels other than "
+                                  "0, 1 and whitespace; the first at line "
+                                  "%lu, column %lu: '%s'",
+                                  "%llu characters in the pixels other than "
+                                  "0, 1 and whitespace; the first at line "
+                                  "%lu, column %lu: '%s'",
+                                  (unsigned long)t->bad),
+                    t->bad, line, column, seen);
     }
     if (t->comments > 0) {
         netpbm_where(s, t->first_comment, &line, &column);

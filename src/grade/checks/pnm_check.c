@@ -19,6 +19,7 @@
 #include "rayo/pbm_check.h"
 
 #include "netpbm_scan.h"
+#include "rayo/lang.h"
 
 #define STATEMENT_MAXVAL 255ul
 
@@ -48,10 +49,10 @@ typedef struct sample {
 static const char *header_name(int magic)
 {
     switch (magic) {
-    case '2': return "plain PGM, gray";
-    case '3': return "plain PPM, colour";
-    case '5': return "raw, binary PGM";
-    case '6': return "raw, binary PPM";
+    case '2': return N_("plain PGM, gray");
+    case '3': return N_("plain PPM, colour");
+    case '5': return N_("raw, binary PGM");
+    case '6': return N_("raw, binary PPM");
     }
     return "";
 }
@@ -103,27 +104,37 @@ static int text_raster(const netpbm_scan *s, unsigned long *w,
 static int relabel(netpbm_scan *s, const netpbm_kind *kind)
 {
     const unsigned char *m = s->data + s->pos;
+    rayo_lang lang = rayo_error_lang(s->err);
     int other = kind->magic == '2' ? '3' : '2';
     unsigned long w, h;
     unsigned long long numbers;
     if (s->size - s->pos < 2 || !text_raster(s, &w, &h, &numbers))
         return 0;
     if (m[1] == kind->magic + 3) {
-        NETPBM_FAIL(s, "the header says %c%c (%s) but the samples are "
+        NETPBM_FAIL(s, N_("the header says %c%c (%s) but the samples are "
                        "written as text: a text %s is P%c; the comparison "
-                       "reads the numbers as P%c",
-                    m[0], m[1], header_name(m[1]), kind->name, kind->magic,
+                       "reads the numbers as P%c"),
+                    m[0], m[1], rayo_gettext(lang, header_name(m[1])), kind->name, kind->magic,
                     kind->magic);
     } else if ((m[1] == other || m[1] == other + 3) &&
                numbers == (unsigned long long)w * h * kind->channels) {
-        NETPBM_FAIL(s, "the header says %c%c (%s) but the output has %u "
-                       "number%s per pixel, written as text (%lux%lu "
-                       "pixels, %llu numbers): a text %s image is a %s, "
-                       "P%c; the comparison reads the numbers as P%c",
-                    m[0], m[1], header_name(m[1]), kind->channels,
-                    kind->channels == 1 ? "" : "s", w, h, numbers,
-                    kind->channels == 1 ? "gray" : "colour", kind->name,
-                    kind->magic, kind->magic);
+        if (kind->channels == 1)
+            NETPBM_FAIL(s, N_("the header says %c%c (%s) but the output has "
+                           "1 number per pixel, written as text (%lux%lu "
+                           "pixels, %llu numbers): a text gray image is a "
+                           "%s, P%c; the comparison reads the numbers as "
+                           "P%c"),
+                        m[0], m[1], rayo_gettext(lang, header_name(m[1])), w,
+                        h, numbers, kind->name, kind->magic, kind->magic);
+        else
+            NETPBM_FAIL(s, N_("the header says %c%c (%s) but the output has "
+                           "%u numbers per pixel, written as text (%lux%lu "
+                           "pixels, %llu numbers): a text colour image is a "
+                           "%s, P%c; the comparison reads the numbers as "
+                           "P%c"),
+                        m[0], m[1], rayo_gettext(lang, header_name(m[1])),
+                        kind->channels, w, h, numbers, kind->name,
+                        kind->magic, kind->magic);
     } else {
         return 0;
     }
@@ -228,19 +239,25 @@ static void describe(const netpbm_scan *s, const netpbm_kind *kind,
                      unsigned long w, unsigned long h,
                      const sample_note *n, char *out, size_t room)
 {
+    rayo_lang lang = rayo_error_lang(s->err);
     unsigned long line, column;
     unsigned long long pixel = n->index / kind->channels;
     netpbm_where(s, n->offset, &line, &column);
     if (pixel >= (unsigned long long)w * h)
-        snprintf(out, room, "line %lu, column %lu (after the last pixel)",
+        snprintf(out, room,
+                 rayo_gettext(lang, "line %lu, column %lu (after the last "
+                                    "pixel)"),
                  line, column);
     else if (kind->channels == 3)
-        snprintf(out, room, "line %lu, column %lu (pixel (%llu, %llu), "
-                            "channel %c)",
+        snprintf(out, room,
+                 rayo_gettext(lang, "line %lu, column %lu (pixel (%llu, "
+                                    "%llu), channel %c)"),
                  line, column, pixel % w, pixel / w,
                  "RGB"[n->index % 3]);
     else
-        snprintf(out, room, "line %lu, column %lu (pixel (%llu, %llu))",
+        snprintf(out, room,
+                 rayo_gettext(lang, "line %lu, column %lu (pixel (%llu, "
+                                    "%llu))"),
                  line, column, pixel % w, pixel / w);
 }
 
@@ -248,65 +265,133 @@ static void say_wrong_numbers(netpbm_scan *s, const netpbm_kind *kind,
                               unsigned long w, unsigned long h,
                               const sample_tally *t)
 {
+    rayo_lang lang = rayo_error_lang(s->err);
     char at[160], seen[80];
     const sample_note *n = &t->above;
     if (n->count > 0) {
         describe(s, kind, w, h, n, at, sizeof at);
         netpbm_excerpt(s, n->offset, n->length, seen, sizeof seen);
         if (kind->channels == 3 && t->largest == STATEMENT_MAXVAL + 1)
-            NETPBM_FAIL(s, "%llu number%s 256, none above; the first at "
-                           "%s: 0..1 scaled by 256 instead of 255 (a full "
-                           "channel, 1, prints as 255); the comparison "
-                           "takes %s as 255",
-                        n->count, n->count == 1 ? " is" : "s are", at,
-                        n->count == 1 ? "it" : "them");
+            NETPBM_FAIL(s,
+                        rayo_ngettext(lang,
+                                      "%llu number is 256, none above; the "
+                                      "first at %s: 0..1 scaled by 256 "
+                                      "instead of 255 (a full channel, 1, "
+                                      "prints as 255); the comparison takes "
+                                      "it as 255",
+                                      "%llu numbers are 256, none above; the "
+                                      "first at %s: 0..1 scaled by 256 "
+                                      "instead of 255 (a full channel, 1, "
+                                      "prints as 255); the comparison takes "
+                                      "them as 255",
+                                      (unsigned long)n->count),
+                        n->count, at);
+        else if (kind->channels == 3)
+            NETPBM_FAIL(s,
+                        rayo_ngettext(lang,
+                                      "%llu number above 255; the first, "
+                                      "'%s', at %s: values above 255 are not "
+                                      "clamped (the statement: each channel "
+                                      "above 1 becomes 1, printed as 255); "
+                                      "the comparison takes it as 255",
+                                      "%llu numbers above 255; the first, "
+                                      "'%s', at %s: values above 255 are not "
+                                      "clamped (the statement: each channel "
+                                      "above 1 becomes 1, printed as 255); "
+                                      "the comparison takes them as 255",
+                                      (unsigned long)n->count),
+                        n->count, seen, at);
         else
-            NETPBM_FAIL(s, "%llu number%s above 255; the first, '%s', at "
-                           "%s: values above 255 are not clamped (the "
-                           "statement: %s); the comparison takes %s as 255",
-                        n->count, n->count == 1 ? "" : "s", seen, at,
-                        kind->channels == 3
-                            ? "each channel above 1 becomes 1, printed as "
-                              "255"
-                            : "values above 255 become 255",
-                        n->count == 1 ? "it" : "them");
+            NETPBM_FAIL(s,
+                        rayo_ngettext(lang,
+                                      "%llu number above 255; the first, "
+                                      "'%s', at %s: values above 255 are not "
+                                      "clamped (the statement: values above "
+                                      "255 become 255); the comparison takes "
+                                      "it as 255",
+                                      "%llu numbers above 255; the first, "
+                                      "'%s', at %s: values above 255 are not "
+                                      "clamped (the statement: values above "
+                                      "255 become 255); the comparison takes "
+                                      "them as 255",
+                                      (unsigned long)n->count),
+                        n->count, seen, at);
     }
     n = &t->negative;
     if (n->count > 0) {
         describe(s, kind, w, h, n, at, sizeof at);
         netpbm_excerpt(s, n->offset, n->length, seen, sizeof seen);
-        NETPBM_FAIL(s, "%llu negative number%s; the first, '%s', at %s: a "
-                       "negative intensity: the diffuse term is added where "
-                       "L.N < 0 (the statement adds it only when L.N > 0); "
-                       "the comparison takes %s as 0",
-                    n->count, n->count == 1 ? "" : "s", seen, at,
-                    n->count == 1 ? "it" : "them");
+        NETPBM_FAIL(s,
+                    rayo_ngettext(lang,
+                                  "%llu negative number; the first, '%s', at "
+                                  "%s: a negative intensity: the diffuse "
+                                  "term is added where L.N < 0 (the "
+                                  "statement adds it only when L.N > 0); the "
+                                  "comparison takes it as 0",
+                                  "%llu negative numbers; the first, '%s', "
+                                  "at %s: a negative intensity: the diffuse "
+                                  "term is added where L.N < 0 (the "
+                                  "statement adds it only when L.N > 0); the "
+                                  "comparison takes them as 0",
+                                  (unsigned long)n->count),
+                    n->count, seen, at);
     }
     n = &t->int_min;
     if (n->count > 0) {
         describe(s, kind, w, h, n, at, sizeof at);
-        NETPBM_FAIL(s, "%llu number%s -2147483648, the first at %s: that is "
-                       "what a NaN (not a number) or a value past the int "
-                       "range becomes through (int), not an intensity; look "
-                       "for 0/0, the square root of a negative "
-                       "discriminant or a normal of length 0; the "
-                       "comparison takes %s as 0",
-                    n->count, n->count == 1 ? " is" : "s are", at,
-                    n->count == 1 ? "it" : "them");
+        NETPBM_FAIL(s,
+                    rayo_ngettext(lang,
+                                  "%llu number is -2147483648, the first at "
+                                  "%s: that is what a NaN (not a number) or "
+                                  "a value past the int range becomes "
+                                  "through (int), not an intensity; look for "
+                                  "0/0, the square root of a negative "
+                                  "discriminant or a normal of length 0; the "
+                                  "comparison takes it as 0",
+                                  "%llu numbers are -2147483648, the first "
+                                  "at %s: that is what a NaN (not a number) "
+                                  "or a value past the int range becomes "
+                                  "through (int), not an intensity; look for "
+                                  "0/0, the square root of a negative "
+                                  "discriminant or a normal of length 0; the "
+                                  "comparison takes them as 0",
+                                  (unsigned long)n->count),
+                    n->count, at);
     }
     n = &t->fraction;
     if (n->count > 0) {
         describe(s, kind, w, h, n, at, sizeof at);
         netpbm_excerpt(s, n->offset, n->length, seen, sizeof seen);
-        NETPBM_FAIL(s, "%llu number%s with a decimal point; the first, "
-                       "'%s', at %s: printed with %%f instead of %%d? The "
-                       "comparison takes %s whole part%s",
-                    n->count, n->count == 1 ? "" : "s", seen, at,
-                    n->count == 1 ? "its" : "their",
-                    kind->channels == 3 && !t->over_one
-                        ? "; every number is between 0 and 1: the "
-                          "channels were not scaled to 0..255"
-                        : "");
+        if (kind->channels == 3 && !t->over_one)
+            NETPBM_FAIL(s,
+                        rayo_ngettext(lang,
+                                      "%llu number with a decimal point; the "
+                                      "first, '%s', at %s: printed with %%f "
+                                      "instead of %%d? The comparison takes "
+                                      "its whole part; every number is "
+                                      "between 0 and 1: the channels were "
+                                      "not scaled to 0..255",
+                                      "%llu numbers with a decimal point; the "
+                                      "first, '%s', at %s: printed with %%f "
+                                      "instead of %%d? The comparison takes "
+                                      "their whole part; every number is "
+                                      "between 0 and 1: the channels were "
+                                      "not scaled to 0..255",
+                                      (unsigned long)n->count),
+                        n->count, seen, at);
+        else
+            NETPBM_FAIL(s,
+                        rayo_ngettext(lang,
+                                      "%llu number with a decimal point; the "
+                                      "first, '%s', at %s: printed with %%f "
+                                      "instead of %%d? The comparison takes "
+                                      "its whole part",
+                                      "%llu numbers with a decimal point; the "
+                                      "first, '%s', at %s: printed with %%f "
+                                      "instead of %%d? The comparison takes "
+                                      "their whole part",
+                                      (unsigned long)n->count),
+                        n->count, seen, at);
     }
 }
 
@@ -319,17 +404,29 @@ static void say_tally(netpbm_scan *s, const netpbm_kind *kind,
     if (t->bad > 0) {
         netpbm_where(s, t->first_bad, &line, &column);
         netpbm_excerpt(s, t->first_bad, 16, seen, sizeof seen);
-        NETPBM_FAIL(s, "%llu character%s among the numbers other than "
-                       "digits and whitespace; the first at line %lu, "
-                       "column %lu: '%s'",
-                    t->bad, t->bad == 1 ? "" : "s", line, column, seen);
+        NETPBM_FAIL(s,
+                    rayo_ngettext(rayo_error_lang(s->err),
+                                  "%llu character among the numbers other "
+                                  "than digits and whitespace; the first at "
+                                  "line %lu, column %lu: '%s'",
+                                  "%llu characters among the numbers other "
+                                  "than digits and whitespace; the first at "
+                                  "line %lu, column %lu: '%s'",
+                                  (unsigned long)t->bad),
+                    t->bad, line, column, seen);
     }
     if (t->comments > 0) {
         netpbm_where(s, t->first_comment, &line, &column);
-        NETPBM_FAIL(s, "%llu '#' comment%s among the numbers (the first at "
-                       "line %lu); Netpbm allows comments only in the "
-                       "header",
-                    t->comments, t->comments == 1 ? "" : "s", line);
+        NETPBM_FAIL(s,
+                    rayo_ngettext(rayo_error_lang(s->err),
+                                  "%llu '#' comment among the numbers (the "
+                                  "first at line %lu); Netpbm allows "
+                                  "comments only in the header",
+                                  "%llu '#' comments among the numbers (the "
+                                  "first at line %lu); Netpbm allows "
+                                  "comments only in the header",
+                                  (unsigned long)t->comments),
+                    t->comments, line);
     }
     say_wrong_numbers(s, kind, w, h, t);
     netpbm_say_count(s, kind, w, h, t->samples);
@@ -349,7 +446,7 @@ static int check_maxval_and_raster(netpbm_scan *s, const netpbm_kind *kind,
     size_t at;
     netpbm_skip_header_space(s);
     at = s->pos;
-    if (!netpbm_expect_number(s, "maximum value (255)", "the height",
+    if (!netpbm_expect_number(s, NETPBM_FIELD_MAXVAL, kind->magic,
                               &maxval))
         return 0;
     if (s->pos < s->size && !netpbm_is_space(netpbm_peek(s)))
