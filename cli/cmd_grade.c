@@ -111,7 +111,7 @@ static void print_help(void)
           "  -h, --help             this help\n\n"
           "exercises:\n"));
     for (i = 0; i < count; i++)
-        printf("  %-8s %s\n", exercises[i].name, exercises[i].title);
+        printf("  %-8s %s\n", exercises[i].name, _(exercises[i].title));
     printf(_("\nThe report's first line says how the submission was isolated "
              "(docs/grading.md\nsays what the sandbox stops and what it does "
              "not).\n\n"

@@ -86,7 +86,8 @@ typedef enum rayo_grade_sandbox_mode {
 /* What an exercise asks for.  The registry is constant data. */
 typedef struct rayo_grade_exercise {
     const char *name;        /* "ej1" */
-    const char *title;       /* "Ejercicio obligatorio 1: the sphere" */
+    const char *title;       /* "Ejercicio obligatorio 1: the sphere",
+                                English: a catalogue message */
     uint32_t width, height;  /* the image the program must write */
     char magic;              /* its plain Netpbm format: '1' PBM, '2' PGM,
                                 '3' PPM */

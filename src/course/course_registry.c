@@ -13,26 +13,27 @@
 
 #include "course_impl.h"
 
-/* Marks what a picture shows for xgettext (scripts/update_pot.sh): the
-   compare report's note looks it up in its language. */
+/* Marks text for xgettext (scripts/update_pot.sh): what a picture shows
+   (the compare report's note looks it up in its language) and each
+   exercise's title (grade --help's list). */
 #define N_(text) text
 
 static const rayo_course_info registry[RAYO_COURSE_EXERCISES] = {
     {RAYO_COURSE_EJ1, "ej1", 1,
-     "Ejercicio obligatorio 1: the sphere, plain PBM 640x480",
+     N_("Ejercicio obligatorio 1: the sphere, plain PBM 640x480"),
      N_("black and white sphere"), RAYO_COURSE_BILEVEL, RAYO_COURSE_WIDTH,
      RAYO_COURSE_HEIGHT, '1', RAYO_SHADE_HIT,
      &course_scene_data[RAYO_COURSE_EJ1], 0, 1,
      "referencia-catedra-ej1.png"},
     {RAYO_COURSE_EJ2, "ej2", 2,
-     "Ejercicio obligatorio 2: light and shadows in gray, plain PGM "
-     "640x480",
+     N_("Ejercicio obligatorio 2: light and shadows in gray, plain PGM "
+        "640x480"),
      N_("gray scene"), RAYO_COURSE_GRAY, RAYO_COURSE_WIDTH, RAYO_COURSE_HEIGHT,
      '2', RAYO_SHADE_COURSE_GRAY, &course_scene_data[RAYO_COURSE_EJ2], 1, 1,
      "referencia-catedra-ej2.png"},
     {RAYO_COURSE_EJ3, "ej3", 3,
-     "Ejercicio obligatorio 3: colour, structs and dynamic memory, plain "
-     "PPM 640x480",
+     N_("Ejercicio obligatorio 3: colour, structs and dynamic memory, "
+        "plain PPM 640x480"),
      N_("colour scene"), RAYO_COURSE_COLOUR, RAYO_COURSE_WIDTH,
      RAYO_COURSE_HEIGHT, '3', RAYO_SHADE_COURSE_COLOR,
      &course_scene_data[RAYO_COURSE_EJ3], 1, 0,

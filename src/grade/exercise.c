@@ -46,10 +46,15 @@ typedef char registry_fits[RAYO_COURSE_EXERCISES <=
                                ? 1
                                : -1];
 
+/* Marks a title for xgettext; the command looks it up. */
+#define N_(text) text
+
 /* The exercises beyond the course's scenes: whole programs with no
    reference image, checked by what their statement fixes. */
 static const rayo_grade_exercise programs[] = {
-    {"tp1", "Trabajo practico 1: the whole ray tracer, a folder with a Makefile",
+    {"tp1",
+     N_("Trabajo práctico 1: the whole ray tracer, a folder with a "
+        "Makefile"),
      161, 121, '3', RAYO_COURSE_EXERCISES, NULL, "20212_tp1"}};
 #define PROGRAMS (sizeof programs / sizeof programs[0])
 
