@@ -19,9 +19,10 @@
 # looks for the signal only between bands.  A render still running then
 # is killed and the test fails.
 #
-# rayo is started through python3, which resets SIGINT to its default
-# first: a background job of a script starts with SIGINT ignored, and
-# ignored signals are meant to stay ignored.
+# rayo is started through python3, which resets every signal tried here
+# to its default first: a background job of a script starts with SIGINT
+# ignored, a test run under nohup with SIGHUP ignored, and ignored
+# signals are meant to stay ignored.
 . "$(dirname "$0")/lib.sh"
 
 leftovers() { find "$1" -name '.*.??????' | wc -l | tr -d ' '; }
@@ -53,7 +54,8 @@ start() {
         set -- "$RAYO" "$@"
     fi
     python3 -c 'import os, signal, sys
-for s in (signal.SIGINT, signal.SIGQUIT):
+for s in (signal.SIGINT, signal.SIGQUIT, signal.SIGHUP, signal.SIGTERM,
+          signal.SIGALRM, signal.SIGUSR1, signal.SIGUSR2, signal.SIGXCPU):
     signal.signal(s, signal.SIG_DFL)
 os.execvp(sys.argv[1], sys.argv[1:])' "$@" &
     rayo_pid=$!
