@@ -61,6 +61,12 @@ size_t scene_mesh_place_all(rayo_scene *scene, const mesh_frame *f,
     size_t count = f->mesh->count, added = 0;
     unsigned n = threads, i;
     range_job one, *jobs = &one;
+    /* An empty mesh reserved nothing: the arrays may be NULL, and even
+       NULL + 0 is undefined. */
+    if (count == 0) {
+        *stop = 0;
+        return 0;
+    }
     if (n > THREAD_RUN_MAX)
         n = THREAD_RUN_MAX;
     if (n > count / RANGE_MIN)
