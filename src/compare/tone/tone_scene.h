@@ -116,6 +116,14 @@ int tone_scene_surface(const scene_work *w, int b, uint32_t i, uint32_t j,
                        double *at, double *n);
 int tone_scene_solve3(double a[3][3], const double *y, double *x);
 
+/* tone_scene_lamps.c: the channel lamp l alone lights into *channel, 1
+   when it is a point light of one channel (scene 3's red, green and
+   blue), 0 otherwise; and whether the colour model's lights can be read
+   at all (a colour image, no changed ambient found: else the rest of the
+   model is not the statement's). */
+int tone_scene_lamp_channel(const scene_work *w, size_t l, unsigned *channel);
+int tone_scene_lamps_readable(const scene_work *w);
+
 /* tone_scene_lamps.c (the colour model): a point light placed
    elsewhere, read from the channel it alone lights; 1 when named. */
 int tone_scene_lamp_position(scene_work *w);

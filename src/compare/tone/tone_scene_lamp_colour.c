@@ -109,24 +109,12 @@ static int lamp_colour(scene_work *w, size_t lamp, unsigned c)
 
 int tone_scene_lamp_colours(scene_work *w)
 {
-    size_t l, named = 0, i;
-    unsigned c;
-    if (w->gray || w->n != 3)
+    size_t l, named = 0;
+    if (!tone_scene_lamps_readable(w))
         return 0;
-    for (i = 0; i < w->r->tone.findings; i++)
-        if (w->r->tone.finding[i].kind == RAYO_FINDING_AMBIENT)
-            return 0; /* the rest of the model is not the statement's */
     for (l = 0; l < w->data->lamp_count; l++) {
-        const rayo_course_lamp *lamp = &w->data->lamps[l];
-        unsigned lit = 0, only = 0;
-        if (!lamp->point)
-            continue;
-        for (c = 0; c < 3; c++)
-            if (lamp->color[c] > 0) {
-                lit++;
-                only = c;
-            }
-        if (lit == 1)
+        unsigned only = 0;
+        if (tone_scene_lamp_channel(w, l, &only))
             named += (size_t)lamp_colour(w, l, only);
     }
     return named > 0;

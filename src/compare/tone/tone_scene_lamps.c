@@ -151,31 +151,45 @@ static int lamp_place(scene_work *w, size_t lamp, unsigned c)
     return 1;
 }
 
-int tone_scene_lamp_position(scene_work *w)
+int tone_scene_lamp_channel(const scene_work *w, size_t l, unsigned *channel)
 {
-    size_t l, named = 0;
-    unsigned c, i;
+    const rayo_course_lamp *lamp = &w->data->lamps[l];
+    unsigned c, lit = 0;
+    if (!lamp->point)
+        return 0;
+    for (c = 0; c < 3; c++)
+        if (lamp->color[c] > 0) {
+            lit++;
+            *channel = c;
+        }
+    return lit == 1;
+}
+
+int tone_scene_lamps_readable(const scene_work *w)
+{
+    size_t i;
     if (w->gray || w->n != 3)
         return 0;
     for (i = 0; i < w->r->tone.findings; i++)
         if (w->r->tone.finding[i].kind == RAYO_FINDING_AMBIENT)
-            return 0; /* the rest of the model is not the statement's */
+            return 0;
+    return 1;
+}
+
+int tone_scene_lamp_position(scene_work *w)
+{
+    size_t l, named = 0, i;
+    if (!tone_scene_lamps_readable(w))
+        return 0;
     for (l = 0; l < w->data->lamp_count; l++) {
-        const rayo_course_lamp *lamp = &w->data->lamps[l];
-        unsigned lit = 0, only = 0;
-        if (!lamp->point)
-            continue;
-        for (c = 0; c < 3; c++)
-            if (lamp->color[c] > 0) {
-                lit++;
-                only = c;
-            }
+        unsigned only = 0;
+        int explained = 0;
         for (i = 0; i < w->r->tone.findings; i++)
             if ((w->r->tone.finding[i].kind == RAYO_FINDING_LAMP_COLOUR ||
                  w->r->tone.finding[i].kind == RAYO_FINDING_LAMP_MISSING) &&
                 w->r->tone.finding[i].box[0] == (int32_t)l)
-                lit = 0; /* its colour explains it */
-        if (lit == 1)
+                explained = 1; /* its colour explains it */
+        if (!explained && tone_scene_lamp_channel(w, l, &only))
             named += (size_t)lamp_place(w, l, only);
     }
     return named > 0;
