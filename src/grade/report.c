@@ -24,8 +24,8 @@
 /* The most bytes of one quoted line (a compiler message, the program's
    standard error). */
 #define QUOTE_BYTES 300
-/* A line is formatted into this much room first; a longer one (a quoted
-   line of megabytes) is cut by add_line. */
+/* A line is formatted into this much room first, then kept at its
+   length; a longer one (a quoted line of megabytes) is cut by add_line. */
 #define FORMAT_BYTES 4096
 
 /* Where to cut text of length n to at most room bytes without splitting
@@ -68,11 +68,14 @@ static rayo_status vsay(rayo_grade_item *item, rayo_error *err,
 static rayo_status vsay(rayo_grade_item *item, rayo_error *err,
                         const char *format, va_list args)
 {
-    char *line = malloc(FORMAT_BYTES);
+    char text[FORMAT_BYTES], *line;
+    size_t n;
+    rayo_lang_vformat(rayo_error_lang(err), text, sizeof text, format, args);
+    n = strlen(text);
+    line = malloc(n + 1);
     if (line == NULL)
         return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
-    rayo_lang_vformat(rayo_error_lang(err), line, FORMAT_BYTES, format,
-                      args);
+    memcpy(line, text, n + 1);
     return add_line(item, line, err);
 }
 
