@@ -271,6 +271,10 @@ typedef struct grade_context {
                            the sandbox binds it instead of a fresh tmpfs */
     char *const *args;  /* the program's arguments under valgrind (at
                            most GRADE_ARGS), or NULL for none */
+    /* The functions the functions criterion found right, in the order
+       judged, for its one summing-up line (functions/engine.c). */
+    struct functions_right *right;
+    size_t right_count;
 } grade_context;
 
 /* run/uid.c: the uid the sandboxed runs of ctx take (0: the grader's

@@ -478,8 +478,8 @@ rayo_status ej2_judge(grade_context *ctx, unsigned i, const char *log,
         }
     }
     if (wrong == 0)
-        status = grade_say(item, err, "%s: right on %u known inputs",
-                           ej2_functions[i].name, cases);
+        status = functions_right(ctx, ej2_functions[i].name, cases, NULL,
+                                 err);
     else if (unsaid > 0)
         status = grade_fail(item, err, "%s: wrong on %u more of its %u "
                                        "known inputs",

@@ -437,9 +437,8 @@ rayo_status ej3_judge(grade_context *ctx, unsigned f, const char *log,
                 break;
         if (k == ej3_value_case_count)
             return RAYO_OK;
-        return grade_say(j.item, err, "%s: called on what %s returned "
-                                      "(valgrind checks what it frees)",
-                         ej3_functions[f].name, ej3_functions[maker].name);
+        return functions_right(ctx, ej3_functions[f].name, 0,
+                               ej3_functions[maker].name, err);
     }
     if (f == F_AGREGAR)
         status = judge_agregar(&j, err);
@@ -458,12 +457,8 @@ rayo_status ej3_judge(grade_context *ctx, unsigned f, const char *log,
     if (status == RAYO_ERR_CANCELLED)
         return RAYO_OK;
     if (status == RAYO_OK && j.wrong == 0)
-        status = grade_say(j.item, err,
-                           rayo_ngettext(rayo_error_lang(err),
-                                         "%s: right on %u known input",
-                                         "%s: right on %u known inputs",
-                                         j.cases),
-                           ej3_functions[f].name, j.cases);
+        status = functions_right(ctx, ej3_functions[f].name, j.cases, NULL,
+                                 err);
     else if (status == RAYO_OK && j.unsaid > 0)
         status = grade_fail(j.item, err, "%s: wrong on %u more of its %u "
                                          "known inputs",

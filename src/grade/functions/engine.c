@@ -7,9 +7,8 @@
  * ej3.c): probe the signatures, build the exercise's harness around
  * the student's objects, write it its calls, run it under the
  * program's limits, judge each function from its log, say how the run
- * ended.  When the criterion fails, the lines that say what is wrong
- * come before those of the functions that were right, so the report's
- * first line is a finding.
+ * ended.  The functions that were right are summed up in one line after
+ * the findings, so the report's first line is a finding.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,112 +19,58 @@
 #include "harness.h"
 #include "table.h"
 
-/* The words of a translated format between its first conversion (the
-   function's name) and the next one: ": right on " in English. */
-static size_t between(const char *format, const char **words)
+struct functions_right {
+    const char *name, *maker; /* the table's names: static */
+    unsigned cases;
+};
+
+rayo_status functions_right(grade_context *ctx, const char *name,
+                            unsigned cases, const char *maker,
+                            rayo_error *err)
 {
-    const char *start = strstr(format, "%s"), *end;
-    if (start == NULL)
-        return 0;
-    start += 2;
-    end = strchr(start, '%');
-    *words = start;
-    return end != NULL ? (size_t)(end - start) : 0;
+    struct functions_right *grown =
+        realloc(ctx->right, (ctx->right_count + 1) * sizeof *grown);
+    if (grown == NULL)
+        return rayo_error_set(err, RAYO_ERR_NOMEM, "grade: out of memory");
+    ctx->right = grown;
+    grown[ctx->right_count].name = name;
+    grown[ctx->right_count].maker = maker;
+    grown[ctx->right_count].cases = cases;
+    ctx->right_count++;
+    return RAYO_OK;
 }
 
-/* A line that reports a function right ("norma: right on 4 known
-   inputs", "esfera_destruir: called on what esfera_crear returned"),
-   in the language of the report, not a finding: "NAME" and then the
-   words of one of those formats; *cases receives the count of the
-   first (0 for the second). */
-static int says_right(rayo_lang lang, const char *line, unsigned *cases)
+/* The functions that were right, in one line after the findings and
+   notes: "right on all their known inputs: norma (4), resta (2), ...,
+   esfera_destruir (called on what esfera_crear returned)", so that a
+   long list of passing functions takes one line. */
+static rayo_status sum_up(grade_context *ctx, rayo_grade_item *item,
+                          rayo_error *err)
 {
-    const char *colon = strstr(line, ": "), *words;
-    size_t n;
-    if (colon == NULL || strchr(line, ' ') <= colon)
-        return 0;
-    n = between(rayo_gettext(lang, "%s: right on %u known inputs"), &words);
-    if (n > 0 && strncmp(colon, words, n) == 0) {
-        if (cases != NULL)
-            *cases = (unsigned)strtoul(colon + n, NULL, 10);
-        return 1;
-    }
-    n = between(rayo_gettext(lang, "%s: called on what %s returned "
-                                   "(valgrind checks what it frees)"),
-                &words);
-    if (cases != NULL)
-        *cases = 0;
-    return n > 0 && strncmp(colon, words, n) == 0;
-}
-
-/* The lines that say a function was right become one, the last:
-   "right on all their known inputs: norma (4), resta (2), ...,
-   esfera_destruir (called on what esfera_crear returned)", so that the
-   findings and notes come first and a long list of passing functions
-   takes one line.  Left as they are when memory runs out. */
-static void sum_up(rayo_lang lang, rayo_grade_item *item)
-{
+    rayo_lang lang = rayo_error_lang(err);
     harness_text t = {NULL, 0, 0, 0};
-    size_t i, n = 0, right = 0;
-    for (i = 0; i < item->line_count; i++)
-        right += says_right(lang, item->lines[i], NULL) != 0;
-    if (right == 0)
-        return;
+    size_t i;
+    rayo_status status;
+    if (ctx->right_count == 0)
+        return RAYO_OK;
     harness_append(&t, "%s",
                    rayo_gettext(lang, "right on all their known inputs: "));
-    for (i = 0; i < item->line_count; i++) {
-        const char *line = item->lines[i], *colon = strstr(line, ": ");
-        unsigned cases;
-        if (!says_right(lang, line, &cases))
-            continue;
-        harness_append(&t, "%s%.*s", t.data[t.length - 2] == ':' ? "" : ", ",
-                       (int)(colon - line), line);
-        if (cases > 0) {
-            harness_append(&t, " (%u)", cases);
-        } else {
-            const char *what = colon + 2;
-            harness_append(&t, " (%.*s)", (int)strcspn(what, "("),
-                           what);
-            /* "called on what X returned " less its trailing space */
-            if (t.length > 2 && t.data[t.length - 2] == ' ') {
-                t.data[t.length - 2] = ')';
-                t.data[--t.length] = '\0';
-            }
-        }
-    }
-    if (t.failed) {
-        free(t.data);
-        return;
-    }
-    for (i = 0; i < item->line_count; i++) {
-        if (says_right(lang, item->lines[i], NULL))
-            free(item->lines[i]);
+    for (i = 0; i < ctx->right_count; i++) {
+        const struct functions_right *r = &ctx->right[i];
+        if (i > 0)
+            harness_append(&t, ", ");
+        if (r->maker != NULL)
+            harness_append(&t, rayo_gettext(lang, "%s (called on what %s "
+                                                  "returned)"),
+                           r->name, r->maker);
         else
-            item->lines[n++] = item->lines[i];
+            harness_append(&t, "%s (%u)", r->name, r->cases);
     }
-    item->lines[n++] = t.data;
-    item->line_count = n;
-}
-
-/* Stable: findings first, then the functions that were right. */
-static void findings_first(rayo_lang lang, rayo_grade_item *item)
-{
-    size_t i, n = 0, r;
-    char **right;
-    if (item->result != RAYO_GRADE_FAIL || item->line_count < 2)
-        return;
-    right = malloc(item->line_count * sizeof *right);
-    if (right == NULL)
-        return; /* the order is a courtesy, not worth failing for */
-    r = 0;
-    for (i = 0; i < item->line_count; i++) {
-        if (says_right(lang, item->lines[i], NULL))
-            right[r++] = item->lines[i];
-        else
-            item->lines[n++] = item->lines[i];
-    }
-    memcpy(item->lines + n, right, r * sizeof *right);
-    free(right);
+    status = t.failed ? rayo_error_set(err, RAYO_ERR_NOMEM,
+                                       "grade: out of memory")
+                      : grade_say(item, err, "%s", t.data);
+    free(t.data);
+    return status;
 }
 
 const functions_exercise *functions_exercise_of(int course)
@@ -288,10 +233,11 @@ rayo_status grade_step_functions(grade_context *ctx, rayo_error *err)
     }
     if (status == RAYO_OK && log != NULL)
         status = harness_judge_ending(ctx, log, &outcome, ex->describe, err);
-    if (status == RAYO_OK) {
-        findings_first(rayo_error_lang(err), item);
-        sum_up(rayo_error_lang(err), item);
-    }
+    if (status == RAYO_OK)
+        status = sum_up(ctx, item, err);
+    free(ctx->right);
+    ctx->right = NULL;
+    ctx->right_count = 0;
     free(log);
     free(reasons);
     return status;

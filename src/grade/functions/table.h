@@ -70,6 +70,14 @@ const functions_owner *functions_owner_at(size_t k);
 /* The table of an exercise (ej1's for RAYO_COURSE_EXERCISES). */
 const functions_exercise *functions_exercise_of(int course);
 
+/* engine.c: function name was right on all its cases known inputs, or
+   (maker not NULL) was called on what maker returned and valgrind checks
+   the rest.  Not a line of its own: the criterion sums them up in one,
+   after its findings.  RAYO_ERR_NOMEM when memory runs out. */
+rayo_status functions_right(grade_context *ctx, const char *name,
+                            unsigned cases, const char *maker,
+                            rayo_error *err);
+
 /* The records an exercise's harness is given for the usable functions:
    "u" and "m" for each, then its calls; NULL when memory runs out. */
 char *functions_calls(const functions_exercise *ex, const int *usable);
